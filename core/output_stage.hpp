@@ -1,0 +1,36 @@
+#pragma once
+// All-or-nothing outputs. Files are written into a hidden staging folder inside the output
+// directory and renamed into place by commit(); if commit() is never reached (an error, a
+// solver that did not converge) the destructor removes the staging folder, so a failed run
+// leaves nothing that could be mistaken for a result.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace magfem {
+
+class OutputStage {
+public:
+  explicit OutputStage(std::filesystem::path out_dir);
+  ~OutputStage();
+  OutputStage(const OutputStage&) = delete;
+  OutputStage& operator=(const OutputStage&) = delete;
+
+  // Path to write `name` to (inside the staging folder). Remembers the name for commit().
+  std::filesystem::path path_for(const std::string& name);
+  // Writes a text file in one go.
+  void write_text(const std::string& name, const std::string& text);
+  // Moves every staged file into the output directory (replacing older ones).
+  void commit();
+
+  const std::filesystem::path& out_dir() const { return out_dir_; }
+
+private:
+  std::filesystem::path out_dir_;
+  std::filesystem::path staging_;
+  std::vector<std::string> names_;
+  bool committed_ = false;
+  bool created_out_dir_ = false;
+};
+
+} // namespace magfem

@@ -1,0 +1,44 @@
+#pragma once
+// Single-valued, monotone B-H curve of a soft magnetic material (anhysteretic).
+//
+// Built from a table (H in A/m, B in T), starting at (0, 0) (inserted if absent).
+// Interpolation is monotone (no overshoot between points) with a derivative consistent with
+// the interpolant; beyond the last point the curve continues with slope mu0 (the material is
+// saturated and behaves like vacuum on top of its saturation polarization).
+// Both directions are provided because the 2D A-formulation needs H(B) and the 3D scalar
+// potential formulation needs B(H).
+#include <string>
+#include <vector>
+
+namespace magfem {
+
+class BhCurve {
+public:
+  // Throws std::invalid_argument with a message naming the first bad row (0-based index into
+  // the given vectors) when the table is not usable: sizes differ, fewer than 2 points,
+  // H or B not strictly increasing, negative values, or a slope below mu0 at the end
+  // (non-physical: dB/dH >= mu0 must hold for a ferromagnet). Callers that read the table
+  // from a file turn this into an InputError with file, line and field.
+  BhCurve(std::vector<double> h_Apm, std::vector<double> b_T);
+
+  double b_of_h(double h) const;    // h >= 0
+  double dbdh(double h) const;
+  double h_of_b(double b) const;    // b >= 0
+  double dhdb(double b) const;
+
+  // Reluctivity form used by B-formulations: nu(b2) = h(b)/b, b = sqrt(b2), and its
+  // derivative with respect to b2 (finite as b -> 0).
+  void nu_of_b2(double b2, double& nu, double& dnu_db2) const;
+  // Permeability form used by H-formulations: mu(h2) = b(h)/h and d mu / d(h2).
+  void mu_of_h2(double h2, double& mu, double& dmu_dh2) const;
+
+  const std::vector<double>& h_table() const { return h_; }
+  const std::vector<double>& b_table() const { return b_; }
+
+private:
+  std::vector<double> h_, b_;
+  // Implementation detail (e.g. monotone cubic slopes); see bh_curve.cpp.
+  std::vector<double> slope_b_; // dB/dH at the table points
+};
+
+} // namespace magfem

@@ -1,0 +1,38 @@
+#pragma once
+// A magnetic material as a constitutive law, independent of the element type.
+//
+// Magnets are linear with remanence: B = mu0 mu_r H + B_r m_hat. The remanence is a *source*
+// (the solver adds it per element, because its direction depends on the region's
+// magnetization pattern); the law below only describes the reversible part, so for a magnet
+// reluctivity() returns 1/(mu0 mu_r) and permeability() mu0 mu_r.
+//
+// Isotropic laws only: H = nu(|B|^2) B (B-formulations, 2D A_z) and B = mu(|H|^2) H
+// (H-formulations, 3D scalar potential). Newton tangents follow from the derivative with
+// respect to the squared magnitude: dH/dB = nu I + 2 nu' B B^T.
+#include <memory>
+#include <string>
+
+#include "materials/bh_curve.hpp"
+
+namespace magfem {
+
+enum class MaterialKind { linear, magnet, soft };
+
+struct Material {
+  std::string name;
+  MaterialKind kind = MaterialKind::linear;
+  double mu_r = 1.0;  // relative permeability (recoil permeability for magnets)
+  double B_r = 0.0;   // remanence in T (magnets only)
+  std::shared_ptr<const BhCurve> curve; // soft materials only
+  std::string source; // where the data comes from (for reports)
+
+  bool is_nonlinear() const { return kind == MaterialKind::soft; }
+  bool is_magnet() const { return kind == MaterialKind::magnet; }
+
+  // nu(b2) in m/H and d nu / d(b2), b2 = |B|^2 in T^2.
+  void reluctivity(double b2, double& nu, double& dnu_db2) const;
+  // mu(h2) in H/m and d mu / d(h2), h2 = |H|^2 in (A/m)^2.
+  void permeability(double h2, double& mu, double& dmu_dh2) const;
+};
+
+} // namespace magfem
