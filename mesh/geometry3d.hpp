@@ -1,0 +1,89 @@
+#pragma once
+// 3D geometry as the mesher and the analytic models see it: parts built from primitives in a
+// local frame, placed by a rigid motion. SI metres and radians (the case reader converts).
+// Spherical coordinates as in the thesis body: theta polar from +z, phi azimuth from +x.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace magfem {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+// rho in [r_inner, r_outer], theta in [theta_min, theta_max], phi in [phi_min, phi_max] about
+// the local origin. Covers solid spheres (r_inner = 0, full ranges), shells, hemispheres
+// (theta_max = pi/2), caps and wedges.
+struct SphericalSegment {
+  double r_inner = 0, r_outer = 0;
+  double theta_min = 0, theta_max = 0;
+  double phi_min = 0, phi_max = 0;
+};
+
+// Local axis +z, from z = 0 (base) to z = height; r_inner = 0 for a solid cylinder.
+struct Cylinder {
+  double r_inner = 0, r_outer = 0;
+  double height = 0;
+};
+
+// Centred on the local origin, edges along the local axes.
+struct Box {
+  Vec3 size = Vec3::Zero();
+};
+
+using Shape3D = std::variant<SphericalSegment, Cylinder, Box>;
+
+// x_global = rotation * x_local + translation.
+struct Placement {
+  Mat3 rotation = Mat3::Identity();
+  Vec3 translation = Vec3::Zero();
+
+  Vec3 to_global(const Vec3& x_local) const { return rotation * x_local + translation; }
+  Vec3 to_local(const Vec3& x_global) const {
+    return rotation.transpose() * (x_global - translation);
+  }
+  // Rigid rotation by `angle` (right-hand rule) about `axis` through `point`, applied after
+  // this placement.
+  Placement rotated(const Vec3& axis, double angle, const Vec3& point) const {
+    const Mat3 r = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+    return {r * rotation, r * (translation - point) + point};
+  }
+};
+
+struct Part3D {
+  std::string name;
+  Shape3D shape;
+  Placement placement;
+  double max_size = 0; // metres; 0 = MeshOptions3D::default_size
+  std::string group;   // rigid group for sweeps ("" = none)
+};
+
+enum class OuterKind3D { open, dirichlet, neumann };
+
+// Computational domain: the ball of `radius` about the origin. For `open`, a spherical shell
+// from radius to shell_ratio * radius is added and mapped to infinity by the solver.
+struct OuterBoundary3D {
+  OuterKind3D kind = OuterKind3D::open;
+  double radius = 0;
+  double shell_ratio = 1.5;
+};
+
+struct MeshOptions3D {
+  double default_size = 0;       // metres, background air
+  double chord_tolerance = 0;    // metres: max distance between a curved surface and its facets
+  double radius_edge_ratio = 1.6; // TetGen quality bound (-q)
+  int gap_layers = 3;            // minimum element layers across thin air gaps
+  double size_scale = 1.0;       // multiplies every size (refinement studies)
+  double probe_size = 0;         // metres: size near probe surfaces (0 = no refinement)
+};
+
+struct Geometry3D {
+  std::vector<Part3D> parts;
+  OuterBoundary3D outer;
+  MeshOptions3D options;
+};
+
+} // namespace magfem

@@ -1,0 +1,66 @@
+#include "solver/linear_solver.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/IterativeLinearSolvers>
+
+#include "core/input_error.hpp"
+
+namespace magfem {
+
+struct LinearSolver::Impl {
+  bool use_direct = true;
+  bool analyzed = false;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> direct;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower,
+                           Eigen::IncompleteCholesky<double, Eigen::Lower>>
+      cg;
+};
+
+LinearSolver::LinearSolver(LinearSolverOptions options)
+    : impl_(std::make_unique<Impl>()), options_(options) {}
+
+LinearSolver::~LinearSolver() = default;
+
+void LinearSolver::factorize(const Eigen::SparseMatrix<double>& lower) {
+  if (!impl_->analyzed) {
+    impl_->use_direct = options_.kind == LinearSolverKind::cholmod ||
+                        (options_.kind == LinearSolverKind::automatic &&
+                         lower.rows() <= options_.direct_limit);
+  }
+  if (impl_->use_direct) {
+    if (!impl_->analyzed) impl_->direct.analyzePattern(lower);
+    impl_->direct.factorize(lower);
+    if (impl_->direct.info() != Eigen::Success)
+      throw SolveError("the system matrix is not positive definite (CHOLMOD); check that every "
+                       "material has mu_r > 0 and the potential has a reference");
+  } else {
+    if (!impl_->analyzed) impl_->cg.analyzePattern(lower);
+    impl_->cg.setTolerance(options_.cg_tolerance);
+    impl_->cg.setMaxIterations(options_.cg_max_iterations);
+    impl_->cg.factorize(lower);
+    if (impl_->cg.info() != Eigen::Success)
+      throw SolveError("incomplete Cholesky preconditioner failed");
+  }
+  impl_->analyzed = true;
+}
+
+Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) {
+  if (impl_->use_direct) {
+    Eigen::VectorXd x = impl_->direct.solve(rhs);
+    last_iterations_ = 1;
+    return x;
+  }
+  Eigen::VectorXd x = impl_->cg.solve(rhs);
+  last_iterations_ = static_cast<int>(impl_->cg.iterations());
+  if (impl_->cg.info() != Eigen::Success)
+    throw SolveError("conjugate gradients did not converge in " +
+                     std::to_string(options_.cg_max_iterations) + " iterations (residual " +
+                     std::to_string(impl_->cg.error()) + ")");
+  return x;
+}
+
+std::string LinearSolver::name() const {
+  return impl_->use_direct ? "cholmod" : "cg+ichol";
+}
+
+} // namespace magfem

@@ -1,0 +1,98 @@
+#include "solver/newton.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace magfem {
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Smallest line-search factor; below it the full step is taken regardless, because a
+// tangent that is this poor means the problem is badly posed and the iteration cap reports it.
+constexpr double min_step = 1.0 / 64;
+constexpr double armijo = 1e-4;
+} // namespace
+
+NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
+                             const NewtonOptions& options) {
+  NewtonReport report;
+  LinearSolver linear(options.linear);
+  if (u.size() != system.n_unknowns()) u = Eigen::VectorXd::Zero(system.n_unknowns());
+  const double scale = system.load_norm() > 0 ? system.load_norm() : 1.0;
+
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> k;
+  auto t0 = Clock::now();
+  system.evaluate(u, r, &k, options.method);
+  report.assemble_s += seconds_since(t0);
+  double r_norm = r.norm();
+  report.residual_history.push_back(r_norm / scale);
+  if (system.load_norm() == 0) { // no sources: the zero field is the answer
+    report.converged = true;
+    report.message = "no sources: zero field";
+    report.linear_solver = "none";
+    return report;
+  }
+
+  const TangentKind kind = system.is_linear() ? TangentKind::newton : options.method;
+  for (int it = 1; it <= options.max_iterations; ++it) {
+    t0 = Clock::now();
+    linear.factorize(k);
+    const Eigen::VectorXd du = linear.solve(-r);
+    report.solve_s += seconds_since(t0);
+    report.linear_iterations += linear.last_iterations();
+    report.iterations = it;
+
+    if (system.is_linear()) {
+      // One exact step; the final residual follows from the same matrix.
+      u += du;
+      const Eigen::VectorXd r_new = r + k.selfadjointView<Eigen::Lower>() * du;
+      report.residual_history.push_back(r_new.norm() / scale);
+      report.step_lengths.push_back(1.0);
+      report.converged = true;
+      break;
+    }
+
+    double alpha = 1.0;
+    Eigen::VectorXd u_try, r_try;
+    t0 = Clock::now();
+    for (;;) {
+      u_try = u + alpha * du;
+      system.evaluate(u_try, r_try, nullptr, kind);
+      const bool decreased = r_try.norm() <= (1 - armijo * alpha) * r_norm;
+      if (decreased || !options.line_search || kind == TangentKind::picard || alpha <= min_step)
+        break;
+      alpha *= 0.5;
+    }
+    report.assemble_s += seconds_since(t0);
+    u = u_try;
+    r_norm = r_try.norm();
+    report.residual_history.push_back(r_norm / scale);
+    report.step_lengths.push_back(alpha);
+
+    const double update = alpha * du.norm() / std::max(u.norm(), std::numeric_limits<double>::min());
+    if (!std::isfinite(r_norm)) {
+      report.message = "the residual became non-finite";
+      break;
+    }
+    if (r_norm / scale <= options.residual_tol && update <= options.update_tol) {
+      report.converged = true;
+      break;
+    }
+    t0 = Clock::now();
+    system.evaluate(u, r, &k, kind);
+    report.assemble_s += seconds_since(t0);
+  }
+  report.linear_solver = linear.name();
+  if (!report.converged && report.message.empty())
+    report.message = "no convergence in " + std::to_string(options.max_iterations) +
+                     " iterations (relative residual " +
+                     std::to_string(report.residual_history.back()) + ")";
+  return report;
+}
+
+} // namespace magfem

@@ -1,0 +1,40 @@
+#pragma once
+// Nonlinear solve of r(u) = 0 by Newton-Raphson (exact symmetric Jacobian, CHOLMOD) with a
+// backtracking line search on the residual norm, or by Picard (secant) iteration. Stops when
+// BOTH the relative residual and the relative update are below their tolerances. A linear
+// problem takes exactly one step. The outcome is a report the caller must check; nothing
+// here throws for non-convergence.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/linear_solver.hpp"
+#include "solver/nonlinear_system.hpp"
+
+namespace magfem {
+
+struct NewtonOptions {
+  TangentKind method = TangentKind::newton;
+  double residual_tol = 1e-9; // |r| / |load|
+  double update_tol = 1e-9;   // |du| / |u|
+  int max_iterations = 40;
+  bool line_search = true;
+  LinearSolverOptions linear;
+};
+
+struct NewtonReport {
+  bool converged = false;
+  int iterations = 0;
+  std::vector<double> residual_history; // relative residuals, starting with the initial one
+  std::vector<double> step_lengths;     // line-search factor per iteration
+  std::string linear_solver;
+  int linear_iterations = 0; // summed (CG) or number of factorizations (direct)
+  double assemble_s = 0, solve_s = 0;
+  std::string message;
+};
+
+NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
+                             const NewtonOptions& options);
+
+} // namespace magfem

@@ -1,0 +1,39 @@
+#pragma once
+// Open boundary by a shell transformation (the idea of GetDP's VolSphShell/VolCylShell): the
+// shell R1 <= r < R2 of the mesh stands for the whole exterior R1 <= r' < infinity through
+// the radial map r' = f(r) = R1 (R2 - R1) / (R2 - r). For the Laplace operator in the
+// exterior this is exact; the weak form in the shell carries the metric tensor
+//   T = |det J| J^-1 J^-T,  J = dx'/dx = (f/r) P_t + f' P_r,
+// with P_r = r_hat r_hat^T and P_t = I - P_r. A multipole of order n decays like
+// (R1/r')^n (2D) or (R1/r')^(n+1) (3D), which becomes the polynomial ((R2-r)/(R2-R1))^n or
+// ^(n+1) in the shell: dipoles are reproduced exactly by order-2 elements, so the truncation
+// error of the open boundary is negligible. The outer sphere r = R2 is infinity (potential 0).
+#include <Eigen/Core>
+
+namespace magfem {
+
+struct ShellTransform {
+  double r_inner = 0; // R1
+  double r_outer = 0; // R2
+
+  // Metric tensor T at point x in the shell (dimension 2 or 3).
+  template <int Dim>
+  Eigen::Matrix<double, Dim, Dim> metric(const Eigen::Matrix<double, Dim, 1>& x) const {
+    const double r = x.norm();
+    const double gap = r_outer - r; // > 0 at quadrature points
+    const Eigen::Matrix<double, Dim, 1> e = x / r;
+    const Eigen::Matrix<double, Dim, Dim> pr = e * e.transpose();
+    const Eigen::Matrix<double, Dim, Dim> pt = Eigen::Matrix<double, Dim, Dim>::Identity() - pr;
+    const double f = r_inner * (r_outer - r_inner) / gap;
+    const double df = f / gap;
+    if constexpr (Dim == 2) {
+      // |det J| = (f/r) f'
+      return (df * r / f) * pt + (f / (r * df)) * pr;
+    } else {
+      // |det J| = (f/r)^2 f'
+      return df * pt + (f * f / (r * r * df)) * pr;
+    }
+  }
+};
+
+} // namespace magfem

@@ -1,0 +1,27 @@
+#pragma once
+// Fixed sparsity pattern of a FE matrix with a scatter table, so that repeated assemblies
+// (Newton iterations) write straight into the compressed storage without rebuilding it.
+// Only the lower triangle is stored (the matrices are symmetric; CHOLMOD reads the lower part).
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+namespace magfem {
+
+class SparsePattern {
+public:
+  // element_eqs: for each element, `per_element` equation numbers (-1 = constrained DOF).
+  SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int per_element);
+
+  // A matrix with this pattern and zero values.
+  Eigen::SparseMatrix<double> zero_matrix() const { return matrix_; }
+  // Adds the element matrix ke (per_element x per_element, row major, full) of element e.
+  void add(Eigen::SparseMatrix<double>& m, std::size_t e, const double* ke) const;
+
+private:
+  int per_element_;
+  Eigen::SparseMatrix<double> matrix_;
+  std::vector<int> slot_; // per element entry: index into valuePtr or -1
+};
+
+} // namespace magfem
