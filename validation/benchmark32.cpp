@@ -24,8 +24,9 @@ std::vector<AnalyticMagnet> make_benchmark32(Benchmark32Magnetization kind, doub
   for (int pt = 1; pt <= Benchmark32::n_theta; ++pt) {
     for (int pp = 1; pp <= Benchmark32::n_phi; ++pp) {
       AnalyticMagnet m;
-      m.shape = SphericalSegment{Benchmark32::r_inner, Benchmark32::r_outer, step * (pt - 1),
-                                 step * pt, step * (pp - 1), step * pp};
+      m.shape = SphericalSegment{Benchmark32::r_inner, Benchmark32::r_outer,
+                                 step * (pt - 1),      step * pt,
+                                 step * (pp - 1),      step * pp};
       m.B_r = B_r;
       m.name = "m" + std::to_string(pt) + "_" + std::to_string(pp);
       m.magnetization.sign = ((pt + pp) % 2 == 0) ? 1.0 : -1.0;
@@ -37,8 +38,8 @@ std::vector<AnalyticMagnet> make_benchmark32(Benchmark32Magnetization kind, doub
         const double lp =
             step * (kind == Benchmark32Magnetization::parallel_centred ? pp - 0.5 : pp - 1.0);
         m.magnetization.pattern = Magnetization::Pattern::parallel;
-        m.magnetization.direction = Eigen::Vector3d(std::sin(lt) * std::cos(lp),
-                                                    std::sin(lt) * std::sin(lp), std::cos(lt));
+        m.magnetization.direction =
+            Eigen::Vector3d(std::sin(lt) * std::cos(lp), std::sin(lt) * std::sin(lp), std::cos(lt));
       }
       magnets.push_back(m);
     }

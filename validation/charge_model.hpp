@@ -1,0 +1,95 @@
+#pragma once
+// Magnetic charge model (thesis sec. 3.4): the field of permanent magnets with mu_r = 1 from
+// their surface charges sigma = M.n and volume charges rho_m = -div M,
+//   H(x) = (1/4 pi) [ int sigma (x - x')/|x - x'|^3 dS' + int rho_m (x - x')/|x - x'|^3 dV' ],
+// plus images in infinitely permeable spheres (sec. 3.5, see spherical_imaging.hpp).
+//
+// Quadrature: every face (and volume) is a binary tree of parameter boxes with a tensor
+// Gauss-Legendre rule on each; a box is used as is when the observation point is farther than
+// `ratio * radius` from its centre and split along its longest direction otherwise. The ratio
+// follows from the Gauss rule's convergence for an integrand with a singularity at that
+// distance (Bernstein ellipse), so the relative error per box is about `tolerance`. For
+// images, the test is made in the source's own space on the pre-image of the observation
+// point (inversion is conformal, so near-singularity is preserved). The top levels of the
+// trees are precomputed; deeper boxes (near field) are built on the fly.
+//
+// Evaluation is thread-safe; the vector overloads split the points over threads.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "validation/analytic_magnet.hpp"
+#include "validation/charge_source.hpp"
+#include "validation/spherical_imaging.hpp"
+
+namespace magfem {
+
+struct ChargeModelOptions {
+  double tolerance = 1e-6;   // relative quadrature error per box (about that of the field)
+  int gauss_order = 6;       // points per direction per box
+  int image_order = 2;       // longest chain of inversions (two spheres, 2 -> four images)
+  int n_threads = 0;         // 0 = std::thread::hardware_concurrency()
+  int cached_depth = 5;      // precomputed tree levels per root box
+  double max_angle = 0.7854; // radians: angular span of a root box (pi/4)
+};
+
+class ChargeModel {
+public:
+  explicit ChargeModel(std::vector<AnalyticMagnet> magnets,
+                       std::vector<PermeableSphere> spheres = {}, ChargeModelOptions options = {});
+
+  // Field strength H (A/m) at global point x (metres). Inside a magnet H = B/mu0 - M.
+  Eigen::Vector3d H(const Eigen::Vector3d &x) const;
+  // Flux density B = mu0 (H + M) (tesla); M is the magnetization of the magnet containing x.
+  Eigen::Vector3d B(const Eigen::Vector3d &x) const;
+  std::vector<Eigen::Vector3d> H(const std::vector<Eigen::Vector3d> &xs) const;
+  std::vector<Eigen::Vector3d> B(const std::vector<Eigen::Vector3d> &xs) const;
+  // Magnetization (A/m) at x: sum over the magnets containing x.
+  Eigen::Vector3d magnetization(const Eigen::Vector3d &x) const;
+
+  const std::vector<AnalyticMagnet> &magnets() const { return magnets_; }
+  const ChargeModelOptions &options() const { return options_; }
+  // Number of charge sources (faces and volumes, originals and images).
+  int n_sources() const { return static_cast<int>(sources_.size()); }
+
+private:
+  struct TreeNode {
+    ParamBox box;
+    Eigen::Vector3d centre; // source space
+    double radius = 0;
+    int axis = 0;
+    int child[2] = {-1, -1}; // -1 = not precomputed
+    int begin = 0, end = 0;  // range in Source::charges (image space)
+  };
+  struct Source {
+    ChargeDomain domain;
+    ImageMap map;
+    std::vector<TreeNode> nodes;
+    std::vector<int> roots;
+    std::vector<PointCharge> charges;
+    double min_radius = 0; // boxes smaller than this are never split
+  };
+
+  void build_source(const ChargeDomain &domain, const ImageMap &map);
+  int build_node(Source &s, const ParamBox &box, int depth);
+  void add_compensation();
+  void accumulate(const Source &s, int node, const Eigen::Vector3d &x, const Eigen::Vector3d &x_pre,
+                  Eigen::Vector3d &sum, std::vector<PointCharge> &scratch) const;
+  void accumulate_box(const Source &s, const ParamBox &box, int axis, int depth,
+                      const Eigen::Vector3d &x, const Eigen::Vector3d &x_pre, Eigen::Vector3d &sum,
+                      std::vector<PointCharge> &scratch) const;
+  bool far_enough(const Eigen::Vector3d &centre, double radius, double min_radius,
+                  const Eigen::Vector3d &x_pre) const;
+  template <class F>
+  std::vector<Eigen::Vector3d> parallel_map(const std::vector<Eigen::Vector3d> &xs, F f) const;
+
+  std::vector<AnalyticMagnet> magnets_;
+  std::vector<PermeableSphere> spheres_;
+  ChargeModelOptions options_;
+  GaussRule rule_;
+  double ratio_ = 2;
+  std::vector<Source> sources_;
+  std::vector<PointCharge> point_charges_; // flux-balancing charges at inner sphere centres
+};
+
+} // namespace magfem

@@ -1,0 +1,202 @@
+#include "validation/harmonic_expansion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <thread>
+#include <utility>
+
+namespace magfem {
+
+std::vector<double> ShellExpansion::degree_amplitude() const {
+  std::vector<double> amp(static_cast<std::size_t>(index.n_max()) + 1, 0.0);
+  for (int m = 0; m <= index.n_max(); ++m) {
+    const double norm = m == 0 ? 1.0 : 0.5;
+    for (int n = m; n <= index.n_max(); ++n) {
+      const std::size_t k = index(n, m);
+      const double nn1 = static_cast<double>(n) * (n + 1);
+      amp[static_cast<std::size_t>(n)] +=
+          norm * (radial_cos[k] * radial_cos[k] + radial_sin[k] * radial_sin[k] +
+                  nn1 * (poloidal_cos[k] * poloidal_cos[k] + poloidal_sin[k] * poloidal_sin[k]));
+    }
+  }
+  for (double &a : amp) {
+    a = std::sqrt(a);
+  }
+  return amp;
+}
+
+namespace {
+
+// Closed-form phi integrals over [phi_min, phi_max] of cos(k phi) and sin(k phi), any integer k.
+struct PhiIntegrals {
+  double lo, hi;
+  double cos_k(int k) const { return k == 0 ? hi - lo : (std::sin(k * hi) - std::sin(k * lo)) / k; }
+  double sin_k(int k) const { return k == 0 ? 0.0 : (std::cos(k * lo) - std::cos(k * hi)) / k; }
+};
+
+// Phi projections (onto cos m phi and sin m phi) of the functions that make up M in a band:
+//   M_rho = sin(t) F1 + cos(t) F2 + F3,  M_theta = cos(t) F1 - sin(t) F2,  M_phi = G,
+// with F1 = Mx cos phi + My sin phi, F2 = Mz, G = -Mx sin phi + My cos phi (parallel
+// segments) and F3 = the radial magnitude.
+struct PhiProjection {
+  double f1c = 0, f1s = 0, f2c = 0, f2s = 0, f3c = 0, f3s = 0, gc = 0, gs = 0;
+};
+
+struct Band {
+  double theta_min, theta_max;
+  std::vector<PhiProjection> proj; // per m
+};
+
+void add_segment(const ShellSegmentSource &s, int n_max, std::vector<PhiProjection> &proj) {
+  const PhiIntegrals in{s.phi_min, s.phi_max};
+  const double mx = s.parallel.x(), my = s.parallel.y(), mz = s.parallel.z();
+  for (int m = 0; m <= n_max; ++m) {
+    const double cc = 0.5 * (in.cos_k(m - 1) + in.cos_k(m + 1)); // cos(phi) cos(m phi)
+    const double sc = 0.5 * (in.sin_k(m + 1) - in.sin_k(m - 1)); // sin(phi) cos(m phi)
+    const double cs = 0.5 * (in.sin_k(m + 1) + in.sin_k(m - 1)); // cos(phi) sin(m phi)
+    const double ss = 0.5 * (in.cos_k(m - 1) - in.cos_k(m + 1)); // sin(phi) sin(m phi)
+    PhiProjection &p = proj[static_cast<std::size_t>(m)];
+    p.f1c += mx * cc + my * sc;
+    p.f1s += mx * cs + my * ss;
+    p.f2c += mz * in.cos_k(m);
+    p.f2s += mz * in.sin_k(m);
+    p.f3c += s.radial * in.cos_k(m);
+    p.f3s += s.radial * in.sin_k(m);
+    p.gc += -mx * sc + my * cc;
+    p.gs += -mx * ss + my * cs;
+  }
+}
+
+std::vector<Band> make_bands(const std::vector<ShellSegmentSource> &segments, int n_max) {
+  std::map<std::pair<double, double>, std::size_t> slot;
+  std::vector<Band> bands;
+  for (const ShellSegmentSource &s : segments) {
+    const auto key = std::make_pair(s.theta_min, s.theta_max);
+    auto it = slot.find(key);
+    if (it == slot.end()) {
+      it = slot.emplace(key, bands.size()).first;
+      bands.push_back({s.theta_min, s.theta_max,
+                       std::vector<PhiProjection>(static_cast<std::size_t>(n_max) + 1)});
+    }
+    add_segment(s, n_max, bands[it->second].proj);
+  }
+  return bands;
+}
+
+struct Node {
+  double theta, weight;
+  std::size_t band;
+};
+
+// The integrand is a trigonometric polynomial of degree n_max + 2 in theta; on a band of
+// width h that is a frequency omega = (n_max + 2) h / 2 on the reference interval, whose
+// Legendre coefficients vanish to round-off beyond degree omega + O(omega^(1/3)). A q-node
+// rule integrates degrees up to 2q - 1 exactly.
+std::vector<Node> make_nodes(const std::vector<Band> &bands, int n_max, double scale) {
+  std::vector<Node> nodes;
+  for (std::size_t b = 0; b < bands.size(); ++b) {
+    const double omega = 0.5 * (n_max + 2) * (bands[b].theta_max - bands[b].theta_min);
+    const int q =
+        static_cast<int>(std::ceil(scale * (0.5 * omega + 3.0 * std::cbrt(omega) + 10.0)));
+    const QuadratureRule rule = gauss_legendre(q, bands[b].theta_min, bands[b].theta_max);
+    for (std::size_t i = 0; i < rule.x.size(); ++i) {
+      nodes.push_back({rule.x[i], rule.w[i], b});
+    }
+  }
+  return nodes;
+}
+
+// Adds the theta-node contributions (sin(theta) is the area element) of one node.
+void accumulate_node(const Node &node, const Band &band, const NormalizedLegendre &legendre,
+                     LegendreValues &lv, ShellExpansion &acc) {
+  legendre.evaluate(node.theta, lv);
+  const double st = std::sin(node.theta), ct = std::cos(node.theta);
+  const double ws = node.weight * st;
+  const TriangularIndex &index = legendre.index();
+  for (int m = 0; m <= index.n_max(); ++m) {
+    const PhiProjection &p = band.proj[static_cast<std::size_t>(m)];
+    const double rc = ws * (st * p.f1c + ct * p.f2c + p.f3c);
+    const double rs = ws * (st * p.f1s + ct * p.f2s + p.f3s);
+    const double tc = ws * (ct * p.f1c - st * p.f2c);
+    const double ts = ws * (ct * p.f1s - st * p.f2s);
+    const double gc = ws * m * p.gc, gs = ws * m * p.gs;
+    const std::size_t begin = index.column_start(m);
+    const std::size_t end = begin + static_cast<std::size_t>(index.n_max() - m + 1);
+    for (std::size_t k = begin; k < end; ++k) {
+      acc.radial_cos[k] += lv.p[k] * rc;
+      acc.radial_sin[k] += lv.p[k] * rs;
+      acc.poloidal_cos[k] += lv.dp[k] * tc - lv.p_over_sin[k] * gs;
+      acc.poloidal_sin[k] += lv.dp[k] * ts + lv.p_over_sin[k] * gc;
+    }
+  }
+}
+
+ShellExpansion zero_expansion(int n_max) {
+  ShellExpansion e{TriangularIndex(n_max), {}, {}, {}, {}};
+  const std::size_t size = e.index.size();
+  e.radial_cos.assign(size, 0.0);
+  e.radial_sin.assign(size, 0.0);
+  e.poloidal_cos.assign(size, 0.0);
+  e.poloidal_sin.assign(size, 0.0);
+  return e;
+}
+
+// Projections -> coefficients: divide by the norms of the basis functions,
+// |Pbar cos m phi|^2 = N_m and |r grad (Pbar cos m phi)|^2 = n(n+1) N_m.
+void normalize(ShellExpansion &e) {
+  const TriangularIndex &index = e.index;
+  for (int m = 0; m <= index.n_max(); ++m) {
+    const double inv_norm = m == 0 ? 1.0 : 2.0;
+    for (int n = m; n <= index.n_max(); ++n) {
+      const std::size_t k = index(n, m);
+      e.radial_cos[k] *= inv_norm;
+      e.radial_sin[k] *= inv_norm;
+      const double inv_pol = n == 0 ? 0.0 : inv_norm / (static_cast<double>(n) * (n + 1));
+      e.poloidal_cos[k] *= inv_pol;
+      e.poloidal_sin[k] *= inv_pol;
+    }
+  }
+}
+
+} // namespace
+
+ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource> &segments,
+                                          int n_max, double quadrature_scale, int n_threads) {
+  const std::vector<Band> bands = make_bands(segments, n_max);
+  const std::vector<Node> nodes = make_nodes(bands, n_max, quadrature_scale);
+  const NormalizedLegendre legendre(n_max);
+  const int n_workers = std::max(1, std::min<int>(n_threads, static_cast<int>(nodes.size())));
+
+  std::vector<ShellExpansion> partial(static_cast<std::size_t>(n_workers), zero_expansion(n_max));
+  auto work = [&](int w) {
+    LegendreValues lv;
+    for (std::size_t i = static_cast<std::size_t>(w); i < nodes.size();
+         i += static_cast<std::size_t>(n_workers)) {
+      accumulate_node(nodes[i], bands[nodes[i].band], legendre, lv,
+                      partial[static_cast<std::size_t>(w)]);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int w = 1; w < n_workers; ++w) {
+    threads.emplace_back(work, w);
+  }
+  work(0);
+  for (std::thread &t : threads) {
+    t.join();
+  }
+
+  ShellExpansion total = std::move(partial[0]);
+  for (std::size_t w = 1; w < partial.size(); ++w) {
+    for (std::size_t k = 0; k < total.index.size(); ++k) {
+      total.radial_cos[k] += partial[w].radial_cos[k];
+      total.radial_sin[k] += partial[w].radial_sin[k];
+      total.poloidal_cos[k] += partial[w].poloidal_cos[k];
+      total.poloidal_sin[k] += partial[w].poloidal_sin[k];
+    }
+  }
+  normalize(total);
+  return total;
+}
+
+} // namespace magfem

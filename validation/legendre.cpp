@@ -1,0 +1,164 @@
+#include "validation/legendre.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/constants.hpp"
+
+namespace magfem {
+
+TriangularIndex::TriangularIndex(int n_max) : n_max_(n_max) {
+  if (n_max < 0) {
+    throw std::invalid_argument("TriangularIndex: n_max must be >= 0, got " +
+                                std::to_string(n_max));
+  }
+  offsets_.resize(static_cast<std::size_t>(n_max) + 2);
+  offsets_[0] = 0;
+  for (int m = 0; m <= n_max; ++m) {
+    offsets_[static_cast<std::size_t>(m) + 1] =
+        offsets_[static_cast<std::size_t>(m)] + static_cast<std::size_t>(n_max - m + 1);
+  }
+}
+
+NormalizedLegendre::NormalizedLegendre(int n_max) : index_(n_max) {
+  a_.assign(index_.size(), 0.0);
+  b_.assign(index_.size(), 0.0);
+  d_.assign(index_.size(), 0.0);
+  sector_.assign(static_cast<std::size_t>(n_max) + 1, 0.0);
+  for (int m = 1; m <= n_max; ++m) {
+    sector_[static_cast<std::size_t>(m)] = std::sqrt((2.0 * m + 1.0) / (2.0 * m));
+  }
+  for (int m = 0; m <= n_max; ++m) {
+    for (int n = m; n <= n_max; ++n) {
+      const std::size_t k = index_(n, m);
+      const double nn = n, mm = m;
+      if (n >= m + 2) {
+        a_[k] = std::sqrt((2 * nn - 1) * (2 * nn + 1) / ((nn - mm) * (nn + mm)));
+        b_[k] = std::sqrt((2 * nn + 1) * (nn + mm - 1) * (nn - mm - 1) /
+                          ((2 * nn - 3) * (nn + mm) * (nn - mm)));
+      } else if (n == m + 1) {
+        a_[k] = std::sqrt(2 * mm + 3);
+      }
+      if (n > m) {
+        d_[k] = std::sqrt((2 * nn + 1) * (nn - mm) * (nn + mm) / (2 * nn - 1));
+      }
+    }
+  }
+}
+
+namespace {
+
+// Extended-range number value = mantissa * 2^exponent, exponent a multiple of kStep.
+constexpr int kStep = 256;
+const double kBig = std::ldexp(1.0, kStep);
+const double kSmall = std::ldexp(1.0, -kStep);
+
+} // namespace
+
+void NormalizedLegendre::evaluate(double theta, LegendreValues &out) const {
+  const int nmax = n_max();
+  const std::size_t size = index_.size();
+  out.p.resize(size);
+  out.dp.resize(size);
+  out.p_over_sin.resize(size);
+  const double x = std::cos(theta);
+  const double u = std::abs(std::sin(theta));
+
+  // Orders m >= 1 through Q_nm = Pbar_nm / sin(t): the same recurrence in n, seeded with
+  // Q_mm = c_m sin^{m-1} t, so nothing is divided by sin t and the poles are regular.
+  double seed = std::sqrt(3.0 / 2.0) / std::sqrt(4.0 * pi); // Q_11
+  int seed_exp = 0;
+  for (int m = 1; m <= nmax; ++m) {
+    if (m >= 2) {
+      seed *= sector_[static_cast<std::size_t>(m)] * u;
+      while (seed != 0.0 && std::abs(seed) < kSmall) {
+        seed *= kBig;
+        seed_exp -= kStep;
+      }
+    }
+    const std::size_t c = index_.column_start(m);
+    double q_prev = 0.0; // Q_{n-2,m} (scaled)
+    double q_cur = seed; // Q_{n-1,m} (scaled), starts as Q_mm
+    int e = seed_exp;
+    double out_prev = 0.0; // unscaled Q_{n-1,m}
+    for (int n = m; n <= nmax; ++n) {
+      const std::size_t k = c + static_cast<std::size_t>(n - m);
+      if (n > m) {
+        const double q_next = a_[k] * x * q_cur - b_[k] * q_prev;
+        q_prev = q_cur;
+        q_cur = q_next;
+        if (e < 0 && std::abs(q_cur) > kBig) {
+          q_cur *= kSmall;
+          q_prev *= kSmall;
+          e += kStep;
+        }
+      }
+      const double q = e == 0 ? q_cur : std::ldexp(q_cur, e);
+      out.p_over_sin[k] = q;
+      out.p[k] = u * q;
+      out.dp[k] = n * x * q - d_[k] * out_prev;
+      out_prev = q;
+    }
+  }
+
+  // Order 0: O(1) values, plain recurrence; dPbar_n0/dt = -sqrt(n(n+1)) Pbar_n1.
+  double p_prev = 0.0;
+  double p_cur = 1.0 / std::sqrt(4.0 * pi);
+  for (int n = 0; n <= nmax; ++n) {
+    const std::size_t k = static_cast<std::size_t>(n);
+    if (n > 0) {
+      const double p_next = a_[k] * x * p_cur - b_[k] * p_prev;
+      p_prev = p_cur;
+      p_cur = p_next;
+      out.dp[k] = -std::sqrt(static_cast<double>(n) * (n + 1)) * out.p[index_(n, 1)];
+    } else {
+      out.dp[k] = 0.0;
+    }
+    out.p[k] = p_cur;
+    out.p_over_sin[k] = 0.0;
+  }
+}
+
+LegendreValues NormalizedLegendre::evaluate(double theta) const {
+  LegendreValues v;
+  evaluate(theta, v);
+  return v;
+}
+
+QuadratureRule gauss_legendre(int q, double a, double b) {
+  if (q < 1) {
+    throw std::invalid_argument("gauss_legendre: need at least one node, got " + std::to_string(q));
+  }
+  QuadratureRule rule;
+  rule.x.resize(static_cast<std::size_t>(q));
+  rule.w.resize(static_cast<std::size_t>(q));
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  for (int i = 0; i < (q + 1) / 2; ++i) {
+    // Newton on P_q from the classical asymptotic guess; converges in a few steps.
+    double t = std::cos(pi * (i + 0.75) / (q + 0.5));
+    double dp = 1.0;
+    for (int iter = 0; iter < 100; ++iter) {
+      double p0 = 1.0, p1 = t;
+      for (int k = 2; k <= q; ++k) {
+        const double p2 = ((2.0 * k - 1.0) * t * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = q * (t * p1 - p0) / (t * t - 1.0);
+      const double dt = p1 / dp;
+      t -= dt;
+      if (std::abs(dt) < 1e-16) {
+        break;
+      }
+    }
+    const double w = 2.0 / ((1.0 - t * t) * dp * dp);
+    const auto lo = static_cast<std::size_t>(i), hi = static_cast<std::size_t>(q - 1 - i);
+    rule.x[lo] = mid - half * t;
+    rule.x[hi] = mid + half * t;
+    rule.w[lo] = rule.w[hi] = half * w;
+  }
+  return rule;
+}
+
+} // namespace magfem

@@ -1,0 +1,73 @@
+#pragma once
+// Fully normalized associated Legendre functions for spherical harmonic expansions of any
+// degree, and Gauss-Legendre rules for the quadratures that produce the coefficients.
+//
+// Normalization (the thesis's S_n^m P_n^m, eqs. 3.86-3.89, without the Condon-Shortley phase):
+//   Pbar_nm(cos t) = sqrt((2n+1)/(4 pi) (n-m)!/(n+m)!) P_n^m(cos t),  0 <= m <= n,
+// so that Pbar_nm(cos t) e^{i m phi} is orthonormal on the unit sphere, i.e.
+//   integral_0^pi Pbar_nm^2 sin t dt = 1 / (2 pi).
+// The values come from the standard three-term recurrences in n of the normalized functions
+// (no factorials). The sectoral seeds Pbar_mm ~ sin^m t underflow for large m near the poles;
+// they are carried with an extended exponent so that the columns are exact at any degree
+// (values below ~1e-270 are returned as 0, their contribution to any sum is below round-off).
+#include <cstddef>
+#include <vector>
+
+namespace magfem {
+
+// Storage of a triangle 0 <= m <= n <= n_max column by column (m-major): the entries of one
+// order m are contiguous in n, which is the order the recurrences produce them.
+class TriangularIndex {
+public:
+  explicit TriangularIndex(int n_max = 0);
+
+  int n_max() const { return n_max_; }
+  std::size_t size() const { return offsets_.back(); }
+  // Index of (n = m, m): the column of order m starts here and holds n = m..n_max.
+  std::size_t column_start(int m) const { return offsets_[static_cast<std::size_t>(m)]; }
+  std::size_t operator()(int n, int m) const {
+    return column_start(m) + static_cast<std::size_t>(n - m);
+  }
+
+private:
+  int n_max_;
+  std::vector<std::size_t> offsets_; // n_max + 2 entries, the last one is the size
+};
+
+// Values at one polar angle theta, laid out by a TriangularIndex.
+struct LegendreValues {
+  std::vector<double> p;  // Pbar_nm(cos theta)
+  std::vector<double> dp; // d Pbar_nm / d theta
+  // Pbar_nm / sin(theta) for m >= 1 (finite at the poles, where only m = 1 is non-zero);
+  // 0 for m = 0. This is what the phi-derivative of a harmonic needs: m Pbar_nm / sin(theta).
+  std::vector<double> p_over_sin;
+};
+
+class NormalizedLegendre {
+public:
+  explicit NormalizedLegendre(int n_max);
+
+  int n_max() const { return index_.n_max(); }
+  const TriangularIndex &index() const { return index_; }
+
+  // All (n, m) at polar angle theta in [0, pi]; `out` is resized as needed (reuse it to
+  // avoid allocations in loops).
+  void evaluate(double theta, LegendreValues &out) const;
+  LegendreValues evaluate(double theta) const;
+
+private:
+  TriangularIndex index_;
+  std::vector<double> a_; // Pbar_nm = a x Pbar_{n-1,m} - b Pbar_{n-2,m}
+  std::vector<double> b_;
+  std::vector<double> d_;      // dPbar_nm/dt = n x Q_nm - d Q_{n-1,m}, Q = Pbar / sin t
+  std::vector<double> sector_; // Pbar_mm = sector_[m] sin t Pbar_{m-1,m-1}
+};
+
+// Gauss-Legendre rule on [a, b]: sum_i w_i f(x_i) is exact for polynomials of degree 2q - 1.
+struct QuadratureRule {
+  std::vector<double> x;
+  std::vector<double> w;
+};
+QuadratureRule gauss_legendre(int q, double a = -1.0, double b = 1.0);
+
+} // namespace magfem
