@@ -7,10 +7,27 @@
 // saturated and behaves like vacuum on top of its saturation polarization).
 // Both directions are provided because the 2D A-formulation needs H(B) and the 3D scalar
 // potential formulation needs B(H).
+#include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace magfem {
+
+// What BhCurve's constructor throws: a std::invalid_argument that also carries the 0-based
+// index of the offending row, so that a parser can point at that row's file line and field.
+class BhTableError : public std::invalid_argument {
+public:
+  BhTableError(std::size_t row, const std::string& message)
+      : std::invalid_argument("B-H table row " + std::to_string(row) + ": " + message), row_(row),
+        reason_(message) {}
+  std::size_t row() const { return row_; }
+  const std::string& reason() const { return reason_; } // without the "row i" prefix
+
+private:
+  std::size_t row_;
+  std::string reason_;
+};
 
 class BhCurve {
 public:
@@ -19,8 +36,12 @@ public:
   // H or B not strictly increasing, negative values, or a slope below mu0 at the end
   // (non-physical: dB/dH >= mu0 must hold for a ferromagnet). Callers that read the table
   // from a file turn this into an InputError with file, line and field.
+  // Rows with no specific culprit (sizes differ, fewer than 2 points) name row 0.
+  // The thrown type is BhTableError (a std::invalid_argument).
   BhCurve(std::vector<double> h_Apm, std::vector<double> b_T);
 
+  // Negative arguments are accepted: the curve is odd (b_of_h(-h) = -b_of_h(h), likewise
+  // h_of_b) and the derivatives are even.
   double b_of_h(double h) const;    // h >= 0
   double dbdh(double h) const;
   double h_of_b(double b) const;    // b >= 0
@@ -32,13 +53,21 @@ public:
   // Permeability form used by H-formulations: mu(h2) = b(h)/h and d mu / d(h2).
   void mu_of_h2(double h2, double& mu, double& dmu_dh2) const;
 
+  // The table as used, with (0, 0) inserted when the input did not start there.
   const std::vector<double>& h_table() const { return h_; }
   const std::vector<double>& b_table() const { return b_; }
+  // dB/dH at H = 0 in H/m (the permeability the curve starts with; >= mu0).
+  double initial_slope() const { return slope_b_.front(); }
 
 private:
   std::vector<double> h_, b_;
   // Implementation detail (e.g. monotone cubic slopes); see bh_curve.cpp.
   std::vector<double> slope_b_; // dB/dH at the table points
+
+  std::size_t interval_of_h(double h) const; // k with h_[k] <= h < h_[k+1], h < h_.back()
+  std::size_t interval_of_b(double b) const;
+  void hermite(std::size_t k, double h, double& b, double& dbdh) const; // on interval k
+  double solve_interval(std::size_t k, double b) const;                 // h with B(h) = b
 };
 
 } // namespace magfem

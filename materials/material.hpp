@@ -21,7 +21,8 @@ enum class MaterialKind { linear, magnet, soft };
 struct Material {
   std::string name;
   MaterialKind kind = MaterialKind::linear;
-  double mu_r = 1.0;  // relative permeability (recoil permeability for magnets)
+  double mu_r = 1.0;  // relative permeability (recoil permeability for magnets; for soft
+                      // materials the initial one, dB/dH(0) / mu0, for information only)
   double B_r = 0.0;   // remanence in T (magnets only)
   std::shared_ptr<const BhCurve> curve; // soft materials only
   std::string source; // where the data comes from (for reports)
@@ -33,6 +34,15 @@ struct Material {
   void reluctivity(double b2, double& nu, double& dnu_db2) const;
   // mu(h2) in H/m and d mu / d(h2), h2 = |H|^2 in (A/m)^2.
   void permeability(double h2, double& mu, double& dmu_dh2) const;
+
+  // Constructors that fill the fields consistently for each kind.
+  static Material make_linear(std::string name, double mu_r, std::string source);
+  static Material make_magnet(std::string name, double B_r, double mu_r, std::string source);
+  static Material make_soft(std::string name, std::shared_ptr<const BhCurve> curve,
+                            std::string source);
 };
+
+// "linear", "magnet" or "soft" (the spelling used in case files).
+const char* to_string(MaterialKind kind);
 
 } // namespace magfem

@@ -1,0 +1,213 @@
+#include "materials/bh_curve.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <sstream>
+
+#include "core/constants.hpp"
+
+namespace magfem {
+
+namespace {
+
+// Slopes within this relative margin below mu0 are accepted: tables are printed to 4-5
+// significant digits, so a saturated segment computed as mu0 * dH is often rounded just under.
+constexpr double slope_rel_tol = 1e-3;
+// The inverse's Newton iteration stops when the update is this many ulps of the interval end.
+constexpr double inverse_ulps = 4.0;
+constexpr int inverse_max_iter = 200;
+
+std::string in_mu0(double slope) {
+  std::ostringstream s;
+  s.precision(4);
+  s << slope / mu0 << " mu0";
+  return s.str();
+}
+
+void check_sizes(const std::vector<double>& h, const std::vector<double>& b) {
+  if (h.size() != b.size())
+    throw BhTableError(std::min(h.size(), b.size()), "H has " + std::to_string(h.size()) +
+                                                         " values but B has " +
+                                                         std::to_string(b.size()));
+  if (h.size() < 2)
+    throw BhTableError(0, "a B-H table needs at least 2 points, got " + std::to_string(h.size()));
+}
+
+// Slope of the segment ending at row i; the first row's segment starts at the origin.
+void check_slope(const std::vector<double>& h, const std::vector<double>& b, std::size_t i) {
+  const double h0 = i == 0 ? 0.0 : h[i - 1];
+  const double b0 = i == 0 ? 0.0 : b[i - 1];
+  if (i == 0 && h[0] == 0.0)
+    return; // the origin itself
+  const double slope = (b[i] - b0) / (h[i] - h0);
+  if (slope >= mu0 * (1.0 - slope_rel_tol))
+    return;
+  const bool first = i == 0 || (i == 1 && h[0] == 0.0);
+  const std::string where = first               ? "initial slope B/H"
+                            : i + 1 == h.size() ? "final slope dB/dH"
+                                                : "slope dB/dH";
+  throw BhTableError(i, where + " = " + in_mu0(slope) +
+                            " is below mu0: non-physical (a ferromagnet has dB/dH >= mu0)");
+}
+
+void validate(const std::vector<double>& h, const std::vector<double>& b) {
+  check_sizes(h, b);
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    if (!std::isfinite(h[i]) || !std::isfinite(b[i]))
+      throw BhTableError(i, "values must be finite numbers");
+    if (h[i] < 0.0 || b[i] < 0.0)
+      throw BhTableError(i, "negative values are not allowed (give the curve for H >= 0)");
+    if (i == 0 && h[0] == 0.0 && b[0] != 0.0)
+      throw BhTableError(0, "B must be 0 at H = 0 (a soft material has no remanence)");
+    const double h_prev = i == 0 ? 0.0 : h[i - 1];
+    const double b_prev = i == 0 ? 0.0 : b[i - 1];
+    if (i > 0 || h[0] > 0.0) {
+      if (!(h[i] > h_prev))
+        throw BhTableError(i, "H must increase strictly from row to row");
+      if (!(b[i] > b_prev))
+        throw BhTableError(i, "B must increase strictly from row to row");
+    }
+    check_slope(h, b, i);
+  }
+}
+
+} // namespace
+
+BhCurve::BhCurve(std::vector<double> h_Apm, std::vector<double> b_T) {
+  validate(h_Apm, b_T);
+  if (h_Apm.front() > 0.0) {
+    h_Apm.insert(h_Apm.begin(), 0.0);
+    b_T.insert(b_T.begin(), 0.0);
+  }
+  h_ = std::move(h_Apm);
+  b_ = std::move(b_T);
+
+  // Monotone cubic Hermite slopes (Fritsch-Carlson family, with the Fritsch-Butland weighted
+  // harmonic mean at interior points): every m_k <= 3 min(neighbouring secants), which keeps
+  // each cubic monotone, so there is no overshoot between table points.
+  const std::size_t n = h_.size();
+  std::vector<double> secant(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    secant[k] = (b_[k + 1] - b_[k]) / (h_[k + 1] - h_[k]);
+  slope_b_.assign(n, 0.0);
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const double wl = 2 * (h_[k + 1] - h_[k]) + (h_[k] - h_[k - 1]);
+    const double wr = (h_[k + 1] - h_[k]) + 2 * (h_[k] - h_[k - 1]);
+    slope_b_[k] = (wl + wr) / (wl / secant[k - 1] + wr / secant[k]);
+  }
+  // The curve leaves the last point with slope mu0, as the extrapolation does: saturation
+  // polarization is reached there, and the derivative (Newton's tangent) stays continuous.
+  slope_b_[n - 1] = mu0;
+  // First interval: B = m0 H + c H^3 (no H^2 term), i.e. the odd extension of the curve is
+  // smooth through H = 0. That is what keeps d mu/d(H^2) and d nu/d(B^2) finite at 0.
+  // It requires m0 = (3 secant_0 - m1) / 2; m1 is capped so that m0 >= mu0.
+  if (n > 2)
+    slope_b_[1] = std::min(slope_b_[1], 3 * secant[0] - 2 * mu0);
+  slope_b_[0] = 0.5 * (3 * secant[0] - slope_b_[1]);
+}
+
+std::size_t BhCurve::interval_of_h(double h) const {
+  const auto it = std::upper_bound(h_.begin(), h_.end(), h);
+  return static_cast<std::size_t>(it - h_.begin()) - 1;
+}
+
+std::size_t BhCurve::interval_of_b(double b) const {
+  const auto it = std::upper_bound(b_.begin(), b_.end(), b);
+  return static_cast<std::size_t>(it - b_.begin()) - 1;
+}
+
+void BhCurve::hermite(std::size_t k, double h, double& b, double& dbdh) const {
+  const double dh = h_[k + 1] - h_[k];
+  const double t = (h - h_[k]) / dh;
+  const double s = 1.0 - t;
+  const double m0 = slope_b_[k] * dh, m1 = slope_b_[k + 1] * dh; // slopes per unit t
+  b = (1 + 2 * t) * s * s * b_[k] + t * s * s * m0 + t * t * (3 - 2 * t) * b_[k + 1] -
+      t * t * s * m1;
+  const double db_dt =
+      6 * t * s * (b_[k + 1] - b_[k]) + s * (1 - 3 * t) * m0 + t * (3 * t - 2) * m1;
+  dbdh = db_dt / dh;
+}
+
+double BhCurve::solve_interval(std::size_t k, double b) const {
+  // B is monotone on the interval: Newton, falling back to bisection when a step would leave
+  // the bracket, converges for any table.
+  double lo = h_[k], hi = h_[k + 1];
+  double h = lo + (b - b_[k]) / (b_[k + 1] - b_[k]) * (hi - lo);
+  const double tol = inverse_ulps * DBL_EPSILON * hi;
+  for (int it = 0; it < inverse_max_iter; ++it) {
+    double bv = 0, d = 0;
+    hermite(k, h, bv, d);
+    const double f = bv - b;
+    if (f == 0.0)
+      return h;
+    (f > 0 ? hi : lo) = h;
+    double next = d > 0 ? h - f / d : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi))
+      next = 0.5 * (lo + hi);
+    const bool done = std::abs(next - h) <= tol;
+    h = next;
+    if (done)
+      break;
+  }
+  return h;
+}
+
+double BhCurve::b_of_h(double h) const {
+  if (h < 0)
+    return -b_of_h(-h);
+  if (h >= h_.back())
+    return b_.back() + mu0 * (h - h_.back());
+  double b = 0, d = 0;
+  hermite(interval_of_h(h), h, b, d);
+  return b;
+}
+
+double BhCurve::dbdh(double h) const {
+  h = std::abs(h);
+  if (h >= h_.back())
+    return mu0;
+  double b = 0, d = 0;
+  hermite(interval_of_h(h), h, b, d);
+  return d;
+}
+
+double BhCurve::h_of_b(double b) const {
+  if (b < 0)
+    return -h_of_b(-b);
+  if (b >= b_.back())
+    return h_.back() + (b - b_.back()) / mu0;
+  return solve_interval(interval_of_b(b), b);
+}
+
+double BhCurve::dhdb(double b) const {
+  return 1.0 / dbdh(h_of_b(b));
+}
+
+void BhCurve::mu_of_h2(double h2, double& mu, double& dmu_dh2) const {
+  const double h = std::sqrt(std::max(h2, 0.0));
+  if (h < h_[1]) {
+    // B = m0 H + c H^3 here, so mu = m0 + c H^2 exactly (no cancellation near H = 0).
+    const double c = (slope_b_[1] - slope_b_[0]) / (3 * h_[1] * h_[1]);
+    mu = slope_b_[0] + c * h * h;
+    dmu_dh2 = c;
+    return;
+  }
+  const double b = b_of_h(h);
+  mu = b / h;
+  dmu_dh2 = (dbdh(h) * h - b) / (2 * h * h * h);
+}
+
+void BhCurve::nu_of_b2(double b2, double& nu, double& dnu_db2) const {
+  // nu(b2) = 1 / mu(h2) with h = H(b); by the chain rule
+  // d nu/d(b2) = -mu'(h2) nu^2 d(h2)/d(b2) and d(h2)/d(b2) = (h / b) dh/db = nu dh/db.
+  // Every factor is finite at b = 0, where nu = 1 / (initial slope).
+  const double b = std::sqrt(std::max(b2, 0.0));
+  const double h = h_of_b(b);
+  double mu = 0, dmu = 0;
+  mu_of_h2(h * h, mu, dmu);
+  nu = 1.0 / mu;
+  dnu_db2 = -dmu * nu * nu * nu / dbdh(h);
+}
+
+} // namespace magfem
