@@ -27,8 +27,9 @@ namespace magfem {
 std::map<std::string, Material> parse_materials(const YamlNode& materials_map,
                                                 const MaterialLibrary& library);
 
-// The material called `name`: case materials first, then the library; otherwise an
-// InputError at `where` listing the known names.
+// The material called `name`: case materials first, then the library (aliases included);
+// otherwise an InputError at `where` (file, line, field of the referring node) listing the
+// known names. The reference points into `case_materials` or `library`, which must outlive it.
 const Material& resolve_material(const std::string& name,
                                  const std::map<std::string, Material>& case_materials,
                                  const MaterialLibrary& library, const YamlNode& where);
