@@ -14,9 +14,11 @@ namespace {
 // Slopes within this relative margin below mu0 are accepted: tables are printed to 4-5
 // significant digits, so a saturated segment computed as mu0 * dH is often rounded just under.
 constexpr double slope_rel_tol = 1e-3;
-// The inverse's Newton iteration stops when the update is this many ulps of the interval end.
+// The inverse's bisection fallback stops when the update is this many ulps of the interval end.
 constexpr double inverse_ulps = 4.0;
 constexpr int inverse_max_iter = 200;
+// A Newton step smaller than this fraction of the interval is the last one needed.
+constexpr double newton_final_step = 1e-8;
 
 std::string in_mu0(double slope) {
   std::ostringstream s;
@@ -129,63 +131,60 @@ void BhCurve::hermite(std::size_t k, double h, double& b, double& dbdh) const {
   dbdh = db_dt / dh;
 }
 
-double BhCurve::solve_interval(std::size_t k, double b) const {
-  // B is monotone on the interval: Newton, falling back to bisection when a step would leave
-  // the bracket, converges for any table.
+void BhCurve::evaluate(double h, double& b, double& dbdh) const {
+  if (h >= h_.back()) {
+    b = b_.back() + mu0 * (h - h_.back());
+    dbdh = mu0;
+    return;
+  }
+  hermite(interval_of_h(h), h, b, dbdh);
+}
+
+void BhCurve::invert(double b, double& h, double& dbdh) const {
+  if (b >= b_.back()) {
+    h = h_.back() + (b - b_.back()) / mu0;
+    dbdh = mu0;
+    return;
+  }
+  const std::size_t k = interval_of_b(b);
   double lo = h_[k], hi = h_[k + 1];
-  double h = lo + (b - b_[k]) / (b_[k + 1] - b_[k]) * (hi - lo);
+  // Start from the Hermite cubic of the inverse (slopes 1/m at the ends), which is usually
+  // close; then Newton on the monotone forward cubic, falling back to bisection whenever a
+  // step would leave the bracket, so it converges for any table.
+  const double db = b_[k + 1] - b_[k];
+  const double t = (b - b_[k]) / db, s = 1.0 - t;
+  h = (1 + 2 * t) * s * s * lo + t * s * s * db / slope_b_[k] + t * t * (3 - 2 * t) * hi -
+      t * t * s * db / slope_b_[k + 1];
+  if (!(h > lo && h < hi))
+    h = lo + t * (hi - lo);
+  // Newton converges quadratically: once a step is below newton_final_step of the interval,
+  // the next error is ~ (curvature factor) * step^2, far below round-off, so that step is the
+  // last one. Bisection steps only stop at round-off.
+  const double final_step = newton_final_step * (hi - lo);
   const double tol = inverse_ulps * DBL_EPSILON * hi;
   for (int it = 0; it < inverse_max_iter; ++it) {
-    double bv = 0, d = 0;
-    hermite(k, h, bv, d);
+    double bv = 0;
+    hermite(k, h, bv, dbdh);
     const double f = bv - b;
     if (f == 0.0)
-      return h;
+      return;
     (f > 0 ? hi : lo) = h;
-    double next = d > 0 ? h - f / d : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi))
+    double next = h - f / dbdh;
+    bool done = std::abs(next - h) <= final_step;
+    if (!(next > lo && next < hi)) {
       next = 0.5 * (lo + hi);
-    const bool done = std::abs(next - h) <= tol;
+      done = std::abs(next - h) <= tol;
+    }
     h = next;
     if (done)
       break;
   }
-  return h;
+  double bv = 0;
+  hermite(k, h, bv, dbdh); // the slope at the H returned
 }
 
-double BhCurve::b_of_h(double h) const {
-  if (h < 0)
-    return -b_of_h(-h);
-  if (h >= h_.back())
-    return b_.back() + mu0 * (h - h_.back());
-  double b = 0, d = 0;
-  hermite(interval_of_h(h), h, b, d);
-  return b;
-}
-
-double BhCurve::dbdh(double h) const {
-  h = std::abs(h);
-  if (h >= h_.back())
-    return mu0;
-  double b = 0, d = 0;
-  hermite(interval_of_h(h), h, b, d);
-  return d;
-}
-
-double BhCurve::h_of_b(double b) const {
-  if (b < 0)
-    return -h_of_b(-b);
-  if (b >= b_.back())
-    return h_.back() + (b - b_.back()) / mu0;
-  return solve_interval(interval_of_b(b), b);
-}
-
-double BhCurve::dhdb(double b) const {
-  return 1.0 / dbdh(h_of_b(b));
-}
-
-void BhCurve::mu_of_h2(double h2, double& mu, double& dmu_dh2) const {
-  const double h = std::sqrt(std::max(h2, 0.0));
+void BhCurve::secant_permeability(double h, double b, double dbdh, double& mu,
+                                  double& dmu_dh2) const {
   if (h < h_[1]) {
     // B = m0 H + c H^3 here, so mu = m0 + c H^2 exactly (no cancellation near H = 0).
     const double c = (slope_b_[1] - slope_b_[0]) / (3 * h_[1] * h_[1]);
@@ -193,21 +192,51 @@ void BhCurve::mu_of_h2(double h2, double& mu, double& dmu_dh2) const {
     dmu_dh2 = c;
     return;
   }
-  const double b = b_of_h(h);
   mu = b / h;
-  dmu_dh2 = (dbdh(h) * h - b) / (2 * h * h * h);
+  dmu_dh2 = (dbdh * h - b) / (2 * h * h * h);
+}
+
+double BhCurve::b_of_h(double h) const {
+  double b = 0, d = 0;
+  evaluate(std::abs(h), b, d);
+  return h < 0 ? -b : b;
+}
+
+double BhCurve::dbdh(double h) const {
+  double b = 0, d = 0;
+  evaluate(std::abs(h), b, d);
+  return d;
+}
+
+double BhCurve::h_of_b(double b) const {
+  double h = 0, d = 0;
+  invert(std::abs(b), h, d);
+  return b < 0 ? -h : h;
+}
+
+double BhCurve::dhdb(double b) const {
+  double h = 0, d = 0;
+  invert(std::abs(b), h, d);
+  return 1.0 / d;
+}
+
+void BhCurve::mu_of_h2(double h2, double& mu, double& dmu_dh2) const {
+  const double h = std::sqrt(std::max(h2, 0.0));
+  double b = 0, d = 0;
+  evaluate(h, b, d);
+  secant_permeability(h, b, d, mu, dmu_dh2);
 }
 
 void BhCurve::nu_of_b2(double b2, double& nu, double& dnu_db2) const {
   // nu(b2) = 1 / mu(h2) with h = H(b); by the chain rule
-  // d nu/d(b2) = -mu'(h2) nu^2 d(h2)/d(b2) and d(h2)/d(b2) = (h / b) dh/db = nu dh/db.
+  // d nu/d(b2) = -mu'(h2) nu^2 d(h2)/d(b2) and d(h2)/d(b2) = (h / b) dh/db = nu / (dB/dH).
   // Every factor is finite at b = 0, where nu = 1 / (initial slope).
   const double b = std::sqrt(std::max(b2, 0.0));
-  const double h = h_of_b(b);
-  double mu = 0, dmu = 0;
-  mu_of_h2(h * h, mu, dmu);
+  double h = 0, d = 0, mu = 0, dmu = 0;
+  invert(b, h, d);
+  secant_permeability(h, b, d, mu, dmu);
   nu = 1.0 / mu;
-  dnu_db2 = -dmu * nu * nu * nu / dbdh(h);
+  dnu_db2 = -dmu * nu * nu * nu / d;
 }
 
 } // namespace magfem

@@ -67,7 +67,12 @@ private:
   std::size_t interval_of_h(double h) const; // k with h_[k] <= h < h_[k+1], h < h_.back()
   std::size_t interval_of_b(double b) const;
   void hermite(std::size_t k, double h, double& b, double& dbdh) const; // on interval k
-  double solve_interval(std::size_t k, double b) const;                 // h with B(h) = b
+  // B and dB/dH at h >= 0, extrapolation included.
+  void evaluate(double h, double& b, double& dbdh) const;
+  // H and dB/dH (at that H) for b >= 0, extrapolation included.
+  void invert(double b, double& h, double& dbdh) const;
+  // mu = B/H and d mu/d(H^2) from a point of the curve and its slope there.
+  void secant_permeability(double h, double b, double dbdh, double& mu, double& dmu_dh2) const;
 };
 
 } // namespace magfem
