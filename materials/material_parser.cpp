@@ -71,7 +71,7 @@ Material parse_library_reference(const std::string& name, const YamlNode& entry,
   const Material* base = library.find(ref_name);
   if (!base)
     ref.fail("unknown library material '" + ref_name +
-             "' (bundled: " + comma_list(library.names()) + ")");
+             "' (library: " + comma_list(library.names()) + ")");
   entry.allow_keys(joined({"library", "source"}, law_keys(base->kind)));
   Material m = *base;
   m.name = name;
@@ -166,7 +166,7 @@ const Material& resolve_material(const std::string& name,
   for (const auto& kv : case_materials)
     case_names.push_back(kv.first);
   where.fail("unknown material '" + name + "' (case materials: " + comma_list(case_names) +
-             "; bundled: " + comma_list(library.names()) + ")");
+             "; library: " + comma_list(library.names()) + ")");
 }
 
 } // namespace magfem
