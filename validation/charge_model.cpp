@@ -39,8 +39,8 @@ void add_kernel(const PointCharge *begin, const PointCharge *end, const Vec3 &x,
 // half-lengths cosh(ln rho_B); the radius of a box with aspect ratio <= 2 is about 1.12
 // half-lengths, and curved boxes are slightly larger than their sampled radius (margin 1.1).
 double acceptance_ratio(double tolerance, int order) {
-  const double t = std::log(10.0 / tolerance) / (2.0 * order);
-  return std::max(1.2, 1.1 * std::cosh(t));
+  const double t = std::log(1.0 / tolerance) / (2.0 * order);
+  return std::max(1.0, std::cosh(t));
 }
 
 } // namespace
