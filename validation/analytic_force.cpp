@@ -17,7 +17,7 @@ struct SpherePoint {
   double w; // area weight
 };
 
-std::vector<SpherePoint> sphere_points(const Vec3 &c, double r, int n_theta, int n_phi) {
+std::vector<SpherePoint> sphere_points(const Vec3& c, double r, int n_theta, int n_phi) {
   const GaussRule g(n_theta);
   std::vector<SpherePoint> pts;
   pts.reserve(static_cast<std::size_t>(n_theta) * n_phi);
@@ -34,11 +34,11 @@ std::vector<SpherePoint> sphere_points(const Vec3 &c, double r, int n_theta, int
   return pts;
 }
 
-ForceTorque integrate_stress(const std::vector<SpherePoint> &pts, const std::vector<Vec3> &B,
-                             const Vec3 &torque_point) {
+ForceTorque integrate_stress(const std::vector<SpherePoint>& pts, const std::vector<Vec3>& B,
+                             const Vec3& torque_point) {
   ForceTorque ft;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Vec3 &b = B[i];
+    const Vec3& b = B[i];
     // T.n = (1/mu0) (B (B.n) - n |B|^2 / 2)
     const Vec3 tn = (b * b.dot(pts[i].n) - 0.5 * b.squaredNorm() * pts[i].n) / mu0;
     ft.force += pts[i].w * tn;
@@ -48,12 +48,12 @@ ForceTorque integrate_stress(const std::vector<SpherePoint> &pts, const std::vec
 }
 
 // Force and torque of the point charges of one box in the field H of `field`.
-ForceTorque box_force(const ChargeDomain &d, const ParamBox &box, const GaussRule &rule,
-                      const ChargeModel &field, const Vec3 &p) {
+ForceTorque box_force(const ChargeDomain& d, const ParamBox& box, const GaussRule& rule,
+                      const ChargeModel& field, const Vec3& p) {
   std::vector<PointCharge> q;
   d.quadrature(box, rule, q);
   ForceTorque ft;
-  for (const PointCharge &c : q) {
+  for (const PointCharge& c : q) {
     if (c.q == 0)
       continue;
     const Vec3 f = mu0 * c.q * field.H(c.x);
@@ -64,7 +64,7 @@ ForceTorque box_force(const ChargeDomain &d, const ParamBox &box, const GaussRul
 }
 
 struct InteractionTask {
-  const ChargeDomain *domain;
+  const ChargeDomain* domain;
   ParamBox box;
   int depth;
   ForceTorque estimate;
@@ -72,8 +72,8 @@ struct InteractionTask {
 
 // Adaptive bisection: accept a box when its two halves change force and torque by less than
 // the absolute tolerances; return the halves' (more accurate) sum.
-ForceTorque refine(const InteractionTask &t, const GaussRule &rule, const ChargeModel &field,
-                   const Vec3 &p, double f_tol, double t_tol, int max_depth) {
+ForceTorque refine(const InteractionTask& t, const GaussRule& rule, const ChargeModel& field,
+                   const Vec3& p, double f_tol, double t_tol, int max_depth) {
   const int axis = box_extent(*t.domain, t.box).longest_axis;
   const auto halves = split_box(t.box, axis);
   const ForceTorque a = box_force(*t.domain, halves[0], rule, field, p);
@@ -92,8 +92,8 @@ ForceTorque refine(const InteractionTask &t, const GaussRule &rule, const Charge
 
 } // namespace
 
-ForceTorque maxwell_stress_on_sphere(const FieldFunction &B, const Vec3 &center, double radius,
-                                     const Vec3 &torque_point, int n_theta, int n_phi) {
+ForceTorque maxwell_stress_on_sphere(const FieldFunction& B, const Vec3& center, double radius,
+                                     const Vec3& torque_point, int n_theta, int n_phi) {
   const std::vector<SpherePoint> pts = sphere_points(center, radius, n_theta, n_phi);
   std::vector<Vec3> b(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
@@ -101,8 +101,8 @@ ForceTorque maxwell_stress_on_sphere(const FieldFunction &B, const Vec3 &center,
   return integrate_stress(pts, b, torque_point);
 }
 
-ForceTorque maxwell_stress_on_sphere(const BatchFieldFunction &B, const Vec3 &center, double radius,
-                                     const Vec3 &torque_point, int n_theta, int n_phi) {
+ForceTorque maxwell_stress_on_sphere(const BatchFieldFunction& B, const Vec3& center, double radius,
+                                     const Vec3& torque_point, int n_theta, int n_phi) {
   const std::vector<SpherePoint> pts = sphere_points(center, radius, n_theta, n_phi);
   std::vector<Vec3> xs(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
@@ -110,23 +110,23 @@ ForceTorque maxwell_stress_on_sphere(const BatchFieldFunction &B, const Vec3 &ce
   return integrate_stress(pts, B(xs), torque_point);
 }
 
-ForceTorque charge_interaction(const std::vector<AnalyticMagnet> &on,
-                               const std::vector<AnalyticMagnet> &by, const Vec3 &torque_point,
-                               const ChargeInteractionOptions &options) {
+ForceTorque charge_interaction(const std::vector<AnalyticMagnet>& on,
+                               const std::vector<AnalyticMagnet>& by, const Vec3& torque_point,
+                               const ChargeInteractionOptions& options) {
   const ChargeModel field(by, {}, options.field);
   const GaussRule rule(options.gauss_order);
   std::vector<ChargeDomain> domains;
-  for (const AnalyticMagnet &m : on)
-    for (const ChargeDomain &d : charge_domains(m))
+  for (const AnalyticMagnet& m : on)
+    for (const ChargeDomain& d : charge_domains(m))
       domains.push_back(d);
 
   // First pass: whole faces, for the scale of the tolerance (sum of magnitudes, so that a
   // vanishing net force still gets a meaningful absolute tolerance).
   std::vector<InteractionTask> tasks;
   double f_scale = 0, t_scale = 0;
-  for (const ChargeDomain &d : domains) {
+  for (const ChargeDomain& d : domains) {
     const std::vector<ParamBox> boxes = root_boxes(d, pi / 4);
-    for (const ParamBox &b : boxes) {
+    for (const ParamBox& b : boxes) {
       const ForceTorque ft = box_force(d, b, rule, field, torque_point);
       f_scale += ft.force.norm();
       t_scale += ft.torque.norm();
@@ -159,10 +159,10 @@ ForceTorque charge_interaction(const std::vector<AnalyticMagnet> &on,
   for (int t = 1; t < n_threads; ++t)
     threads.emplace_back(work);
   work();
-  for (std::thread &th : threads)
+  for (std::thread& th : threads)
     th.join();
   ForceTorque total;
-  for (const ForceTorque &ft : results) {
+  for (const ForceTorque& ft : results) {
     total.force += ft.force;
     total.torque += ft.torque;
   }

@@ -24,18 +24,18 @@ struct ForceTorque {
   Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // newton metre, about the given point
 };
 
-using FieldFunction = std::function<Eigen::Vector3d(const Eigen::Vector3d &)>;
+using FieldFunction = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 // Evaluates B at many points at once (e.g. a threaded ChargeModel or an FE field).
 using BatchFieldFunction =
-    std::function<std::vector<Eigen::Vector3d>(const std::vector<Eigen::Vector3d> &)>;
+    std::function<std::vector<Eigen::Vector3d>(const std::vector<Eigen::Vector3d>&)>;
 
 // Force and torque on everything inside the sphere (centre, radius in metres) from B (tesla)
 // on the sphere, which must lie in air. n_theta Gauss points in theta, n_phi in phi.
-ForceTorque maxwell_stress_on_sphere(const FieldFunction &B, const Eigen::Vector3d &center,
-                                     double radius, const Eigen::Vector3d &torque_point,
+ForceTorque maxwell_stress_on_sphere(const FieldFunction& B, const Eigen::Vector3d& center,
+                                     double radius, const Eigen::Vector3d& torque_point,
                                      int n_theta, int n_phi);
-ForceTorque maxwell_stress_on_sphere(const BatchFieldFunction &B, const Eigen::Vector3d &center,
-                                     double radius, const Eigen::Vector3d &torque_point,
+ForceTorque maxwell_stress_on_sphere(const BatchFieldFunction& B, const Eigen::Vector3d& center,
+                                     double radius, const Eigen::Vector3d& torque_point,
                                      int n_theta, int n_phi);
 
 struct ChargeInteractionOptions {
@@ -47,9 +47,9 @@ struct ChargeInteractionOptions {
 
 // Force and torque (about torque_point) on the magnets `on` exerted by the magnets `by`
 // (mu_r = 1, no permeable boundaries). The two groups must not overlap.
-ForceTorque charge_interaction(const std::vector<AnalyticMagnet> &on,
-                               const std::vector<AnalyticMagnet> &by,
-                               const Eigen::Vector3d &torque_point,
-                               const ChargeInteractionOptions &options = {});
+ForceTorque charge_interaction(const std::vector<AnalyticMagnet>& on,
+                               const std::vector<AnalyticMagnet>& by,
+                               const Eigen::Vector3d& torque_point,
+                               const ChargeInteractionOptions& options = {});
 
 } // namespace magfem
