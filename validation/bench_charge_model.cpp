@@ -38,7 +38,7 @@ struct Run {
 };
 
 Run run(magfem::Benchmark32Magnetization kind, bool bounded, double tol, int threads,
-        const std::vector<Vec3> &xs) {
+        const std::vector<Vec3>& xs) {
   magfem::ChargeModelOptions opt;
   opt.tolerance = tol;
   opt.n_threads = threads;
@@ -54,7 +54,7 @@ Run run(magfem::Benchmark32Magnetization kind, bool bounded, double tol, int thr
 
 } // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   const double tol = argc > 1 ? std::atof(argv[1]) : 1e-4;
   const double ref_tol = argc > 2 ? std::atof(argv[2]) : 1e-8;
   const int threads = argc > 3 ? std::atoi(argv[3]) : 0;

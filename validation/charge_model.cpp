@@ -18,9 +18,9 @@ using Vec3 = Eigen::Vector3d;
 constexpr double min_radius_fraction = 1e-9;
 constexpr int max_depth = 80;
 
-void add_kernel(const PointCharge *begin, const PointCharge *end, const Vec3 &x, Vec3 &sum) {
+void add_kernel(const PointCharge* begin, const PointCharge* end, const Vec3& x, Vec3& sum) {
   double hx = 0, hy = 0, hz = 0;
-  for (const PointCharge *p = begin; p != end; ++p) {
+  for (const PointCharge* p = begin; p != end; ++p) {
     const double dx = x[0] - p->x[0], dy = x[1] - p->x[1], dz = x[2] - p->x[2];
     const double r2 = dx * dx + dy * dy + dz * dz;
     if (r2 == 0)
@@ -54,10 +54,10 @@ ChargeModel::ChargeModel(std::vector<AnalyticMagnet> magnets, std::vector<Permea
   ratio_ = acceptance_ratio(options_.tolerance, options_.gauss_order);
   const std::vector<std::vector<int>> chains =
       image_chains(static_cast<int>(spheres_.size()), options_.image_order);
-  for (const AnalyticMagnet &m : magnets_) {
-    for (const ChargeDomain &d : charge_domains(m)) {
+  for (const AnalyticMagnet& m : magnets_) {
+    for (const ChargeDomain& d : charge_domains(m)) {
       build_source(d, ImageMap{});
-      for (const auto &chain : chains) {
+      for (const auto& chain : chains) {
         std::vector<Inversion> invs;
         for (int s : chain)
           invs.push_back({spheres_[s].center, spheres_[s].radius});
@@ -68,17 +68,17 @@ ChargeModel::ChargeModel(std::vector<AnalyticMagnet> magnets, std::vector<Permea
   add_compensation();
 }
 
-void ChargeModel::build_source(const ChargeDomain &domain, const ImageMap &map) {
+void ChargeModel::build_source(const ChargeDomain& domain, const ImageMap& map) {
   Source s;
   s.domain = domain;
   s.map = map;
   s.min_radius = min_radius_fraction * box_extent(domain, domain.box).radius;
-  for (const ParamBox &b : root_boxes(domain, options_.max_angle))
+  for (const ParamBox& b : root_boxes(domain, options_.max_angle))
     s.roots.push_back(build_node(s, b, 0));
   sources_.push_back(std::move(s));
 }
 
-int ChargeModel::build_node(Source &s, const ParamBox &box, int depth) {
+int ChargeModel::build_node(Source& s, const ParamBox& box, int depth) {
   const BoxExtent e = box_extent(s.domain, box);
   const int index = static_cast<int>(s.nodes.size());
   TreeNode node;
@@ -109,15 +109,15 @@ int ChargeModel::build_node(Source &s, const ParamBox &box, int depth) {
 // of such a charge by construction.
 void ChargeModel::add_compensation() {
   std::vector<double> net(spheres_.size(), 0.0);
-  for (const Source &s : sources_) {
+  for (const Source& s : sources_) {
     if (s.map.is_identity())
       continue;
-    const Inversion &last = s.map.chain().back();
+    const Inversion& last = s.map.chain().back();
     for (std::size_t k = 0; k < spheres_.size(); ++k)
       if (!spheres_[k].encloses && spheres_[k].center == last.centre &&
           spheres_[k].radius == last.radius) {
         // Sum over the finest precomputed level: leaves of the cached tree.
-        for (const TreeNode &n : s.nodes)
+        for (const TreeNode& n : s.nodes)
           if (n.child[0] < 0)
             for (int i = n.begin; i < n.end; ++i)
               net[k] += s.charges[i].q;
@@ -129,14 +129,14 @@ void ChargeModel::add_compensation() {
       point_charges_.push_back({spheres_[k].center, -net[k]});
 }
 
-bool ChargeModel::far_enough(const Vec3 &centre, double radius, double min_radius,
-                             const Vec3 &x_pre) const {
+bool ChargeModel::far_enough(const Vec3& centre, double radius, double min_radius,
+                             const Vec3& x_pre) const {
   return radius <= min_radius || (x_pre - centre).norm() >= ratio_ * radius;
 }
 
-void ChargeModel::accumulate(const Source &s, int node, const Vec3 &x, const Vec3 &x_pre, Vec3 &sum,
-                             std::vector<PointCharge> &scratch) const {
-  const TreeNode &n = s.nodes[node];
+void ChargeModel::accumulate(const Source& s, int node, const Vec3& x, const Vec3& x_pre, Vec3& sum,
+                             std::vector<PointCharge>& scratch) const {
+  const TreeNode& n = s.nodes[node];
   if (far_enough(n.centre, n.radius, s.min_radius, x_pre)) {
     add_kernel(s.charges.data() + n.begin, s.charges.data() + n.end, x, sum);
     return;
@@ -150,10 +150,10 @@ void ChargeModel::accumulate(const Source &s, int node, const Vec3 &x, const Vec
 }
 
 // Near field below the cached levels: split `box` and recurse without storing.
-void ChargeModel::accumulate_box(const Source &s, const ParamBox &box, int axis, int depth,
-                                 const Vec3 &x, const Vec3 &x_pre, Vec3 &sum,
-                                 std::vector<PointCharge> &scratch) const {
-  for (const ParamBox &half : split_box(box, axis)) {
+void ChargeModel::accumulate_box(const Source& s, const ParamBox& box, int axis, int depth,
+                                 const Vec3& x, const Vec3& x_pre, Vec3& sum,
+                                 std::vector<PointCharge>& scratch) const {
+  for (const ParamBox& half : split_box(box, axis)) {
     const BoxExtent e = box_extent(s.domain, half);
     if (depth + 1 < max_depth && !far_enough(e.centre, e.radius, s.min_radius, x_pre)) {
       accumulate_box(s, half, e.longest_axis, depth + 1, x, x_pre, sum, scratch);
@@ -162,17 +162,17 @@ void ChargeModel::accumulate_box(const Source &s, const ParamBox &box, int axis,
     scratch.clear();
     s.domain.quadrature(half, rule_, scratch);
     if (!s.map.is_identity())
-      for (PointCharge &p : scratch)
+      for (PointCharge& p : scratch)
         p = s.map.apply(p);
     add_kernel(scratch.data(), scratch.data() + scratch.size(), x, sum);
   }
 }
 
-Vec3 ChargeModel::H(const Vec3 &x) const {
+Vec3 ChargeModel::H(const Vec3& x) const {
   Vec3 sum = Vec3::Zero();
   std::vector<PointCharge> scratch;
   scratch.reserve(rule_.size() * rule_.size() * rule_.size());
-  for (const Source &s : sources_) {
+  for (const Source& s : sources_) {
     const Vec3 x_pre = s.map.is_identity() ? x : s.map.preimage(x);
     for (int root : s.roots)
       accumulate(s, root, x, x_pre, sum, scratch);
@@ -181,20 +181,20 @@ Vec3 ChargeModel::H(const Vec3 &x) const {
   return sum / (4 * pi);
 }
 
-Vec3 ChargeModel::magnetization(const Vec3 &x) const {
+Vec3 ChargeModel::magnetization(const Vec3& x) const {
   Vec3 m = Vec3::Zero();
-  for (const AnalyticMagnet &a : magnets_)
+  for (const AnalyticMagnet& a : magnets_)
     if (a.magnetization.active() && magnet_contains(a, x))
       m += (a.B_r / mu0) * a.magnetization.unit_at(x);
   return m;
 }
 
-Vec3 ChargeModel::B(const Vec3 &x) const {
+Vec3 ChargeModel::B(const Vec3& x) const {
   return mu0 * (H(x) + magnetization(x));
 }
 
 template <class F>
-std::vector<Vec3> ChargeModel::parallel_map(const std::vector<Vec3> &xs, F f) const {
+std::vector<Vec3> ChargeModel::parallel_map(const std::vector<Vec3>& xs, F f) const {
   std::vector<Vec3> out(xs.size());
   int n = options_.n_threads > 0 ? options_.n_threads
                                  : static_cast<int>(std::thread::hardware_concurrency());
@@ -208,17 +208,17 @@ std::vector<Vec3> ChargeModel::parallel_map(const std::vector<Vec3> &xs, F f) co
   for (int t = 1; t < n; ++t)
     threads.emplace_back(work, t);
   work(0);
-  for (std::thread &th : threads)
+  for (std::thread& th : threads)
     th.join();
   return out;
 }
 
-std::vector<Vec3> ChargeModel::H(const std::vector<Vec3> &xs) const {
-  return parallel_map(xs, [this](const Vec3 &x) { return H(x); });
+std::vector<Vec3> ChargeModel::H(const std::vector<Vec3>& xs) const {
+  return parallel_map(xs, [this](const Vec3& x) { return H(x); });
 }
 
-std::vector<Vec3> ChargeModel::B(const std::vector<Vec3> &xs) const {
-  return parallel_map(xs, [this](const Vec3 &x) { return B(x); });
+std::vector<Vec3> ChargeModel::B(const std::vector<Vec3>& xs) const {
+  return parallel_map(xs, [this](const Vec3& x) { return B(x); });
 }
 
 } // namespace magfem

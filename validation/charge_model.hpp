@@ -39,16 +39,16 @@ public:
                        std::vector<PermeableSphere> spheres = {}, ChargeModelOptions options = {});
 
   // Field strength H (A/m) at global point x (metres). Inside a magnet H = B/mu0 - M.
-  Eigen::Vector3d H(const Eigen::Vector3d &x) const;
+  Eigen::Vector3d H(const Eigen::Vector3d& x) const;
   // Flux density B = mu0 (H + M) (tesla); M is the magnetization of the magnet containing x.
-  Eigen::Vector3d B(const Eigen::Vector3d &x) const;
-  std::vector<Eigen::Vector3d> H(const std::vector<Eigen::Vector3d> &xs) const;
-  std::vector<Eigen::Vector3d> B(const std::vector<Eigen::Vector3d> &xs) const;
+  Eigen::Vector3d B(const Eigen::Vector3d& x) const;
+  std::vector<Eigen::Vector3d> H(const std::vector<Eigen::Vector3d>& xs) const;
+  std::vector<Eigen::Vector3d> B(const std::vector<Eigen::Vector3d>& xs) const;
   // Magnetization (A/m) at x: sum over the magnets containing x.
-  Eigen::Vector3d magnetization(const Eigen::Vector3d &x) const;
+  Eigen::Vector3d magnetization(const Eigen::Vector3d& x) const;
 
-  const std::vector<AnalyticMagnet> &magnets() const { return magnets_; }
-  const ChargeModelOptions &options() const { return options_; }
+  const std::vector<AnalyticMagnet>& magnets() const { return magnets_; }
+  const ChargeModelOptions& options() const { return options_; }
   // Number of charge sources (faces and volumes, originals and images).
   int n_sources() const { return static_cast<int>(sources_.size()); }
 
@@ -70,18 +70,18 @@ private:
     double min_radius = 0; // boxes smaller than this are never split
   };
 
-  void build_source(const ChargeDomain &domain, const ImageMap &map);
-  int build_node(Source &s, const ParamBox &box, int depth);
+  void build_source(const ChargeDomain& domain, const ImageMap& map);
+  int build_node(Source& s, const ParamBox& box, int depth);
   void add_compensation();
-  void accumulate(const Source &s, int node, const Eigen::Vector3d &x, const Eigen::Vector3d &x_pre,
-                  Eigen::Vector3d &sum, std::vector<PointCharge> &scratch) const;
-  void accumulate_box(const Source &s, const ParamBox &box, int axis, int depth,
-                      const Eigen::Vector3d &x, const Eigen::Vector3d &x_pre, Eigen::Vector3d &sum,
-                      std::vector<PointCharge> &scratch) const;
-  bool far_enough(const Eigen::Vector3d &centre, double radius, double min_radius,
-                  const Eigen::Vector3d &x_pre) const;
+  void accumulate(const Source& s, int node, const Eigen::Vector3d& x, const Eigen::Vector3d& x_pre,
+                  Eigen::Vector3d& sum, std::vector<PointCharge>& scratch) const;
+  void accumulate_box(const Source& s, const ParamBox& box, int axis, int depth,
+                      const Eigen::Vector3d& x, const Eigen::Vector3d& x_pre, Eigen::Vector3d& sum,
+                      std::vector<PointCharge>& scratch) const;
+  bool far_enough(const Eigen::Vector3d& centre, double radius, double min_radius,
+                  const Eigen::Vector3d& x_pre) const;
   template <class F>
-  std::vector<Eigen::Vector3d> parallel_map(const std::vector<Eigen::Vector3d> &xs, F f) const;
+  std::vector<Eigen::Vector3d> parallel_map(const std::vector<Eigen::Vector3d>& xs, F f) const;
 
   std::vector<AnalyticMagnet> magnets_;
   std::vector<PermeableSphere> spheres_;

@@ -28,7 +28,7 @@ struct LocalGeometry {
   double dV = 0;
 };
 
-LocalGeometry local_geometry(const ChargeDomain &d, const Node &a, const Node &b, const Node &c,
+LocalGeometry local_geometry(const ChargeDomain& d, const Node& a, const Node& b, const Node& c,
                              double sf, double cf) {
   LocalGeometry g;
   switch (d.kind) {
@@ -83,14 +83,14 @@ LocalGeometry local_geometry(const ChargeDomain &d, const Node &a, const Node &b
 
 // -div M at global x: zero for parallel, -2 M0 sign / |x - c| for radial (div of f(r) e_r is
 // (1/r^2) d(r^2 f)/dr = 2 f / r for constant f).
-double volume_density(const ChargeDomain &d, const Vec3 &x) {
+double volume_density(const ChargeDomain& d, const Vec3& x) {
   if (d.magnetization.pattern != Magnetization::Pattern::radial)
     return 0;
   const double r = (x - d.magnetization.center).norm();
   return r > 0 ? -2.0 * d.M0 * d.magnetization.sign / r : 0;
 }
 
-bool domain_has_charge(const ChargeDomain &d) {
+bool domain_has_charge(const ChargeDomain& d) {
   if (d.dim == 3)
     return true;
   const int n = 5;
@@ -111,7 +111,7 @@ bool domain_has_charge(const ChargeDomain &d) {
   return false;
 }
 
-ChargeDomain make_domain(const AnalyticMagnet &m, ChargeDomainKind kind, double fixed,
+ChargeDomain make_domain(const AnalyticMagnet& m, ChargeDomainKind kind, double fixed,
                          double orient, ParamBox box, int dim, int axis = 0) {
   ChargeDomain d;
   d.kind = kind;
@@ -126,8 +126,8 @@ ChargeDomain make_domain(const AnalyticMagnet &m, ChargeDomainKind kind, double 
   return d;
 }
 
-void segment_domains(const AnalyticMagnet &m, const SphericalSegment &s,
-                     std::vector<ChargeDomain> &out) {
+void segment_domains(const AnalyticMagnet& m, const SphericalSegment& s,
+                     std::vector<ChargeDomain>& out) {
   using K = ChargeDomainKind;
   const ParamBox tp{{s.theta_min, s.phi_min, 0}, {s.theta_max, s.phi_max, 0}};
   const ParamBox rp{{s.r_inner, s.phi_min, 0}, {s.r_outer, s.phi_max, 0}};
@@ -148,7 +148,7 @@ void segment_domains(const AnalyticMagnet &m, const SphericalSegment &s,
       ParamBox{{s.r_inner, s.theta_min, s.phi_min}, {s.r_outer, s.theta_max, s.phi_max}}, 3));
 }
 
-void cylinder_domains(const AnalyticMagnet &m, const Cylinder &c, std::vector<ChargeDomain> &out) {
+void cylinder_domains(const AnalyticMagnet& m, const Cylinder& c, std::vector<ChargeDomain>& out) {
   using K = ChargeDomainKind;
   const ParamBox ra{{c.r_inner, 0, 0}, {c.r_outer, 2 * pi, 0}};
   const ParamBox az{{0, 0, 0}, {2 * pi, c.height, 0}};
@@ -161,7 +161,7 @@ void cylinder_domains(const AnalyticMagnet &m, const Cylinder &c, std::vector<Ch
                             ParamBox{{c.r_inner, 0, 0}, {c.r_outer, 2 * pi, c.height}}, 3));
 }
 
-void box_domains(const AnalyticMagnet &m, const Box &b, std::vector<ChargeDomain> &out) {
+void box_domains(const AnalyticMagnet& m, const Box& b, std::vector<ChargeDomain>& out) {
   using K = ChargeDomainKind;
   const Vec3 h = b.size / 2;
   for (int a = 0; a < 3; ++a) {
@@ -203,14 +203,14 @@ GaussRule::GaussRule(int n) : nodes(n), weights(n) {
   }
 }
 
-Vec3 ChargeDomain::point(const std::array<double, 3> &u) const {
+Vec3 ChargeDomain::point(const std::array<double, 3>& u) const {
   const LocalGeometry g = local_geometry(*this, make_node(u[0]), make_node(u[1]), make_node(u[2]),
                                          std::sin(fixed), std::cos(fixed));
   return placement.to_global(g.p);
 }
 
-void ChargeDomain::quadrature(const ParamBox &sub, const GaussRule &rule,
-                              std::vector<PointCharge> &out) const {
+void ChargeDomain::quadrature(const ParamBox& sub, const GaussRule& rule,
+                              std::vector<PointCharge>& out) const {
   const int n = rule.size();
   std::array<std::vector<Node>, 3> nodes;
   std::array<std::vector<double>, 3> w;
@@ -225,7 +225,7 @@ void ChargeDomain::quadrature(const ParamBox &sub, const GaussRule &rule,
     }
   }
   const double sf = std::sin(fixed), cf = std::cos(fixed);
-  const Mat3 &R = placement.rotation;
+  const Mat3& R = placement.rotation;
   for (std::size_t i = 0; i < nodes[0].size(); ++i)
     for (std::size_t j = 0; j < nodes[1].size(); ++j)
       for (std::size_t k = 0; k < nodes[2].size(); ++k) {
@@ -242,16 +242,16 @@ void ChargeDomain::quadrature(const ParamBox &sub, const GaussRule &rule,
       }
 }
 
-std::vector<ChargeDomain> charge_domains(const AnalyticMagnet &magnet) {
+std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet) {
   std::vector<ChargeDomain> all;
-  if (const auto *s = std::get_if<SphericalSegment>(&magnet.shape))
+  if (const auto* s = std::get_if<SphericalSegment>(&magnet.shape))
     segment_domains(magnet, *s, all);
-  else if (const auto *c = std::get_if<Cylinder>(&magnet.shape))
+  else if (const auto* c = std::get_if<Cylinder>(&magnet.shape))
     cylinder_domains(magnet, *c, all);
-  else if (const auto *b = std::get_if<Box>(&magnet.shape))
+  else if (const auto* b = std::get_if<Box>(&magnet.shape))
     box_domains(magnet, *b, all);
   std::vector<ChargeDomain> kept;
-  for (const ChargeDomain &d : all) {
+  for (const ChargeDomain& d : all) {
     if (d.dim == 3 && d.magnetization.pattern != Magnetization::Pattern::radial)
       continue; // div M = 0
     if (d.dim == 2 && !domain_has_charge(d))
@@ -261,7 +261,7 @@ std::vector<ChargeDomain> charge_domains(const AnalyticMagnet &magnet) {
   return kept;
 }
 
-BoxExtent box_extent(const ChargeDomain &d, const ParamBox &sub) {
+BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub) {
   // Sample the image of the box on the 3^dim grid {lo, mid, hi}.
   const int m = d.dim == 2 ? 1 : 3;
   Vec3 pts[3][3][3];
@@ -281,7 +281,7 @@ BoxExtent box_extent(const ChargeDomain &d, const ParamBox &sub) {
     double len = 0;
     for (int p = 0; p < 3; ++p)
       for (int q = 0; q < m; ++q) {
-        auto at = [&](int t) -> const Vec3 & {
+        auto at = [&](int t) -> const Vec3& {
           if (a == 0)
             return pts[t][p][q];
           if (a == 1)
@@ -304,7 +304,7 @@ BoxExtent box_extent(const ChargeDomain &d, const ParamBox &sub) {
   return e;
 }
 
-std::vector<ParamBox> root_boxes(const ChargeDomain &d, double max_angle) {
+std::vector<ParamBox> root_boxes(const ChargeDomain& d, double max_angle) {
   using K = ChargeDomainKind;
   std::array<bool, 3> angular{false, false, false};
   switch (d.kind) {
@@ -334,7 +334,7 @@ std::vector<ParamBox> root_boxes(const ChargeDomain &d, double max_angle) {
     if (!angular[a])
       continue;
     std::vector<ParamBox> next;
-    for (const ParamBox &b : boxes) {
+    for (const ParamBox& b : boxes) {
       const int n =
           std::max(1, static_cast<int>(std::ceil((b.hi[a] - b.lo[a]) / max_angle - 1e-9)));
       for (int k = 0; k < n; ++k) {
@@ -349,7 +349,7 @@ std::vector<ParamBox> root_boxes(const ChargeDomain &d, double max_angle) {
   return boxes;
 }
 
-std::array<ParamBox, 2> split_box(const ParamBox &sub, int axis) {
+std::array<ParamBox, 2> split_box(const ParamBox& sub, int axis) {
   std::array<ParamBox, 2> halves{sub, sub};
   const double mid = 0.5 * (sub.lo[axis] + sub.hi[axis]);
   halves[0].hi[axis] = mid;
@@ -357,9 +357,9 @@ std::array<ParamBox, 2> split_box(const ParamBox &sub, int axis) {
   return halves;
 }
 
-bool magnet_contains(const AnalyticMagnet &magnet, const Eigen::Vector3d &x) {
+bool magnet_contains(const AnalyticMagnet& magnet, const Eigen::Vector3d& x) {
   const Vec3 p = magnet.placement.to_local(x);
-  if (const auto *s = std::get_if<SphericalSegment>(&magnet.shape)) {
+  if (const auto* s = std::get_if<SphericalSegment>(&magnet.shape)) {
     const double r = p.norm();
     if (r < s->r_inner || r > s->r_outer)
       return false;
@@ -374,11 +374,11 @@ bool magnet_contains(const AnalyticMagnet &magnet, const Eigen::Vector3d &x) {
     phi = s->phi_min + std::fmod(std::fmod(phi - s->phi_min, 2 * pi) + 2 * pi, 2 * pi);
     return phi <= s->phi_max;
   }
-  if (const auto *c = std::get_if<Cylinder>(&magnet.shape)) {
+  if (const auto* c = std::get_if<Cylinder>(&magnet.shape)) {
     const double r = std::hypot(p.x(), p.y());
     return r >= c->r_inner && r <= c->r_outer && p.z() >= 0 && p.z() <= c->height;
   }
-  if (const auto *b = std::get_if<Box>(&magnet.shape))
+  if (const auto* b = std::get_if<Box>(&magnet.shape))
     return (p.cwiseAbs() - b->size / 2).maxCoeff() <= 0;
   return false;
 }

@@ -56,15 +56,15 @@ struct ChargeDomain {
   double M0 = 0; // A/m, B_r / mu0
 
   // Global point at parameters u.
-  Eigen::Vector3d point(const std::array<double, 3> &u) const;
+  Eigen::Vector3d point(const std::array<double, 3>& u) const;
   // Appends the point charges of the tensor Gauss rule on `sub` (a sub-box of `box`).
-  void quadrature(const ParamBox &sub, const GaussRule &rule, std::vector<PointCharge> &out) const;
+  void quadrature(const ParamBox& sub, const GaussRule& rule, std::vector<PointCharge>& out) const;
 };
 
 // The faces (and the volume if div M != 0) of a magnet carrying charge. Faces whose charge
 // vanishes identically (e.g. cone faces of a radially magnetized segment) and faces of zero
 // area (theta = 0 cones, the coinciding meridian faces of a full revolution) are dropped.
-std::vector<ChargeDomain> charge_domains(const AnalyticMagnet &magnet);
+std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet);
 
 // Sub-box geometry for adaptive quadrature: approximate centre and bounding radius of the
 // image of `sub`, and the parameter axis along which the image is longest.
@@ -73,17 +73,17 @@ struct BoxExtent {
   double radius = 0;
   int longest_axis = 0;
 };
-BoxExtent box_extent(const ChargeDomain &domain, const ParamBox &sub);
+BoxExtent box_extent(const ChargeDomain& domain, const ParamBox& sub);
 
 // The domain's box cut into a grid whose angular parameters span at most max_angle each:
 // Gauss rules in an angle converge at a rate set by the complex distance ln(D/a) of the
 // singularity, which for large arcs is much less than the chord distance suggests.
-std::vector<ParamBox> root_boxes(const ChargeDomain &domain, double max_angle);
+std::vector<ParamBox> root_boxes(const ChargeDomain& domain, double max_angle);
 
 // Halves `sub` along `axis`.
-std::array<ParamBox, 2> split_box(const ParamBox &sub, int axis);
+std::array<ParamBox, 2> split_box(const ParamBox& sub, int axis);
 
 // True if global point x lies inside the magnet (closed set).
-bool magnet_contains(const AnalyticMagnet &magnet, const Eigen::Vector3d &x);
+bool magnet_contains(const AnalyticMagnet& magnet, const Eigen::Vector3d& x);
 
 } // namespace magfem

@@ -28,18 +28,18 @@ public:
   explicit ImageMap(std::vector<Inversion> chain) : chain_(std::move(chain)) {}
 
   bool is_identity() const { return chain_.empty(); }
-  const std::vector<Inversion> &chain() const { return chain_; }
+  const std::vector<Inversion>& chain() const { return chain_; }
 
   // Image of a point charge (position and charge).
-  PointCharge apply(const PointCharge &source) const;
+  PointCharge apply(const PointCharge& source) const;
   // The point whose image is x (each inversion is an involution: apply in reverse order).
-  Eigen::Vector3d preimage(const Eigen::Vector3d &x) const;
+  Eigen::Vector3d preimage(const Eigen::Vector3d& x) const;
 
 private:
   std::vector<Inversion> chain_;
 };
 
-Eigen::Vector3d invert(const Inversion &inv, const Eigen::Vector3d &x);
+Eigen::Vector3d invert(const Inversion& inv, const Eigen::Vector3d& x);
 
 // Sequences of sphere indices of length 1..order with no index repeated consecutively
 // (imaging twice in the same sphere returns the original). One sphere gives {{0}}; two

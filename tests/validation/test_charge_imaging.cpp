@@ -14,7 +14,7 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-std::vector<Vec3> sphere_grid(const Vec3 &c, double r, int n_theta, int n_phi) {
+std::vector<Vec3> sphere_grid(const Vec3& c, double r, int n_theta, int n_phi) {
   std::vector<Vec3> xs;
   for (int i = 0; i < n_theta; ++i)
     for (int j = 0; j < n_phi; ++j) {
@@ -29,8 +29,8 @@ struct TangentialReport {
   double max_tangential = 0, peak = 0, peak_normal = 0;
 };
 
-TangentialReport tangential_h(const ChargeModel &model, const Vec3 &c,
-                              const std::vector<Vec3> &xs) {
+TangentialReport tangential_h(const ChargeModel& model, const Vec3& c,
+                              const std::vector<Vec3>& xs) {
   TangentialReport r;
   const std::vector<Vec3> h = model.H(xs);
   for (std::size_t i = 0; i < xs.size(); ++i) {

@@ -26,7 +26,7 @@ AnalyticMagnet segment(double ri, double ro, double t0, double t1, double p0, do
 
 // Exact field of a sphere of radius a with uniform remanence B_r along d centred at c:
 // inside B = (2/3) B_r d; outside the field of the dipole m = (4/3) pi a^3 M.
-Vec3 sphere_field(const Vec3 &x, const Vec3 &c, double a, const Vec3 &d, double B_r) {
+Vec3 sphere_field(const Vec3& x, const Vec3& c, double a, const Vec3& d, double B_r) {
   const Vec3 r = x - c;
   if (r.norm() < a)
     return (2.0 / 3.0) * B_r * d;
@@ -52,7 +52,7 @@ TEST(ChargeModel, UniformSphereAsOneSegment) {
   const double a = 0.01;
   const Vec3 d = Vec3(0.3, -0.4, 0.8).normalized();
   const ChargeModel model({segment(0, a, 0, pi, 0, 2 * pi, d, 1.0)});
-  for (const Vec3 &x : probe_points(a)) {
+  for (const Vec3& x : probe_points(a)) {
     const Vec3 exact = sphere_field(x, Vec3::Zero(), a, d, 1.0);
     EXPECT_LT((model.B(x) - exact).norm(), sphere_tol * exact.norm()) << x.transpose();
   }
@@ -88,7 +88,7 @@ TEST(ChargeModel, PlacedSphereAndSuperposition) {
   top.placement.translation = c;
   bottom.placement.translation = c;
   const ChargeModel model({top, bottom});
-  for (const Vec3 &p : probe_points(a)) {
+  for (const Vec3& p : probe_points(a)) {
     const Vec3 x = c + p;
     const Vec3 exact = sphere_field(x, c, a, d, 1.2);
     EXPECT_LT((model.B(x) - exact).norm(), sphere_tol * exact.norm()) << p.transpose();
@@ -143,10 +143,10 @@ TEST(ChargeModel, RadialSegmentHasZeroNetCharge) {
   m.magnetization.pattern = Magnetization::Pattern::radial;
   m.B_r = 1.3;
   double total = 0, magnitude = 0;
-  for (const ChargeDomain &d : charge_domains(m)) {
+  for (const ChargeDomain& d : charge_domains(m)) {
     std::vector<PointCharge> q;
     d.quadrature(d.box, GaussRule(8), q);
-    for (const PointCharge &p : q) {
+    for (const PointCharge& p : q) {
       total += p.q;
       magnitude += std::abs(p.q);
     }
@@ -166,11 +166,11 @@ TEST(ChargeModel, RadialOffCentreShellSegmentNetCharge) {
   m.magnetization.center = Vec3(-0.03, 0.01, -0.02);
   m.B_r = 1.0;
   double total = 0, magnitude = 0;
-  for (const ChargeDomain &d : charge_domains(m)) {
+  for (const ChargeDomain& d : charge_domains(m)) {
     // 1/|x - c| is smooth here but not polynomial: a high order is needed.
     std::vector<PointCharge> q;
     d.quadrature(d.box, GaussRule(24), q);
-    for (const PointCharge &p : q) {
+    for (const PointCharge& p : q) {
       total += p.q;
       magnitude += std::abs(p.q);
     }
@@ -180,7 +180,7 @@ TEST(ChargeModel, RadialOffCentreShellSegmentNetCharge) {
 
 // Peak of |B_rho| on the r56 observation grid (theta, phi in 0..90 deg, 2 deg steps; the
 // amplitude statement concerns the envelope, and 2 deg resolves it to well below 1 %).
-double peak_b_rho(const ChargeModel &model) {
+double peak_b_rho(const ChargeModel& model) {
   std::vector<Vec3> xs;
   for (int i = 0; i <= 45; ++i)
     for (int j = 0; j <= 45; ++j) {
