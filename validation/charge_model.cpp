@@ -72,7 +72,12 @@ void ChargeModel::build_source(const ChargeDomain& domain, const ImageMap& map) 
   Source s;
   s.domain = domain;
   s.map = map;
-  s.min_radius = min_radius_fraction * box_extent(domain, domain.box).radius;
+  // A volume box of radius r containing the observation point adds at most about
+  // rho_m r ~ M0 r / rho to H (the 1/r^2 kernel is integrable), so volumes stop splitting at
+  // a fraction of the tolerance; surfaces only at round-off scale (a point on a face).
+  const double fraction =
+      domain.dim == 3 ? std::min(0.1 * options_.tolerance, 1e-3) : min_radius_fraction;
+  s.min_radius = fraction * box_extent(domain, domain.box).radius;
   for (const ParamBox& b : root_boxes(domain, options_.max_angle))
     s.roots.push_back(build_node(s, b, 0));
   sources_.push_back(std::move(s));

@@ -262,20 +262,24 @@ std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet) {
 }
 
 BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub) {
-  // Sample the image of the box on the 3^dim grid {lo, mid, hi}.
+  // Sample the box on the 3^dim grid {lo, mid, hi}, in local coordinates (the placement is
+  // rigid), with the sines and cosines computed once per axis value: this runs for every
+  // box built on the fly in the near field.
   const int m = d.dim == 2 ? 1 : 3;
+  Node nodes[3][3];
+  for (int a = 0; a < 3; ++a)
+    for (int t = 0; t < 3; ++t)
+      nodes[a][t] = make_node(sub.lo[a] + 0.5 * t * (sub.hi[a] - sub.lo[a]));
+  const double sf = std::sin(d.fixed), cf = std::cos(d.fixed);
   Vec3 pts[3][3][3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < m; ++k) {
-        std::array<double, 3> u{};
-        const int idx[3] = {i, j, d.dim == 2 ? 1 : k};
-        for (int a = 0; a < 3; ++a)
-          u[a] = sub.lo[a] + 0.5 * idx[a] * (sub.hi[a] - sub.lo[a]);
-        pts[i][j][k] = d.point(u);
-      }
+      for (int k = 0; k < m; ++k)
+        pts[i][j][k] =
+            local_geometry(d, nodes[0][i], nodes[1][j], nodes[2][d.dim == 2 ? 1 : k], sf, cf).p;
   BoxExtent e;
-  e.centre = pts[1][1][d.dim == 2 ? 0 : 1];
+  const Vec3& centre = pts[1][1][d.dim == 2 ? 0 : 1];
+  e.centre = d.placement.to_global(centre);
   double best = -1;
   for (int a = 0; a < d.dim; ++a) {
     double len = 0;
@@ -300,7 +304,7 @@ BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < m; ++k)
-        e.radius = std::max(e.radius, (pts[i][j][k] - e.centre).norm());
+        e.radius = std::max(e.radius, (pts[i][j][k] - centre).norm());
   return e;
 }
 
