@@ -15,6 +15,7 @@ struct MeshQuality2D {
   double min_angle_deg = 0;
   double max_angle_deg = 0;
   double min_area = 0; // m^2
+  double max_sagitta = 0; // m, largest distance between a curved boundary and its chords
 };
 
 struct Mesh2D {

@@ -1,0 +1,109 @@
+#include "mesh/region_map2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/constants.hpp"
+#include "mesh/mesh_error.hpp"
+
+namespace magfem {
+
+namespace {
+
+constexpr int min_shell_layers = 4;
+// No triangle has all angles above 60 degrees.
+constexpr double max_min_angle_deg = 60.0;
+
+bool positive(double v) {
+  return v > 0 && std::isfinite(v);
+}
+
+} // namespace
+
+RegionMap2D::RegionMap2D(const Geometry2D& g, const Limit& limit, double shell_size) {
+  validate(g);
+  const MeshOptions2D& o = g.options;
+  background_size_ = o.default_size * o.size_scale;
+  for (const Part2D& p : g.parts)
+    part_sizes_.push_back((p.max_size > 0 ? p.max_size : o.default_size) * o.size_scale);
+  for (std::size_t i = 0; i < g.parts.size(); ++i) {
+    const ChordLimit2D part_limit = [&](const Vec2& x) { return limit(int(i), x); };
+    parts_.push_back(Outline2D::build(g.parts[i], o.chord_tolerance, part_limit));
+  }
+  const double r1 = g.outer.radius;
+  domain_ = Outline2D::build({"", Disk{Vec2::Zero(), r1}, 0}, o.chord_tolerance,
+                             [&](const Vec2& x) { return limit(region_background, x); });
+  check_inside_domain(g);
+  if (g.outer.kind != OuterKind::open)
+    return;
+  const double r2 = g.outer.shell_ratio * r1;
+  const auto& loop = domain_->loops().front();
+  const double chord = (loop[1] - loop[0]).norm();
+  shell_size_ = shell_size > 0
+                    ? shell_size
+                    : std::min(chord, (r2 - r1) / min_shell_layers * std::min(1.0, o.size_scale));
+  shell_ = Outline2D::build({"", Disk{Vec2::Zero(), r2}, 0}, o.chord_tolerance,
+                            [&](const Vec2& x) { return limit(region_shell, x); });
+}
+
+void RegionMap2D::validate(const Geometry2D& g) const {
+  const MeshOptions2D& o = g.options;
+  if (!positive(o.default_size))
+    throw MeshError("", "default_size", "must be a length > 0");
+  if (!positive(o.chord_tolerance))
+    throw MeshError("", "chord_tolerance", "must be a length > 0");
+  if (!(o.min_angle_deg > 0 && o.min_angle_deg < max_min_angle_deg))
+    throw MeshError("", "min_angle_deg", "must lie in (0, 60) degrees");
+  if (o.gap_layers < 1)
+    throw MeshError("", "gap_layers", "must be at least 1");
+  if (!positive(o.size_scale))
+    throw MeshError("", "size_scale", "must be > 0");
+  if (!positive(g.outer.radius))
+    throw MeshError("", "radius", "the outer radius must be > 0");
+  if (g.outer.kind == OuterKind::open &&
+      !(g.outer.shell_ratio > 1 && std::isfinite(g.outer.shell_ratio)))
+    throw MeshError("", "shell_ratio", "must be > 1 for an open boundary");
+}
+
+void RegionMap2D::check_inside_domain(const Geometry2D& g) const {
+  // Vertices on the domain polygon itself are accepted (pulled inwards by a relative 1e-9).
+  constexpr double inward = 1.0 - 1e-9;
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+    for (const auto& loop : parts_[i].loops())
+      for (const Vec2& v : loop)
+        if (!domain_->contains(inward * v))
+          throw MeshError(g.parts[i].name, "",
+                          "the part reaches beyond the domain boundary (radius " +
+                              std::to_string(g.outer.radius) + " m): enlarge the outer radius");
+}
+
+int RegionMap2D::region_of(const Vec2& p) const {
+  if (!domain_->contains(p))
+    return shell_ && shell_->contains(p) ? region_shell : region_outside;
+  for (std::size_t i = parts_.size(); i-- > 0;)
+    if (parts_[i].contains(p))
+      return int(i);
+  return region_background;
+}
+
+double RegionMap2D::size_of(int region) const {
+  if (region >= 0)
+    return part_sizes_[std::size_t(region)];
+  if (region == region_background)
+    return background_size_;
+  if (region == region_shell)
+    return shell_size_;
+  return std::numeric_limits<double>::infinity();
+}
+
+double RegionMap2D::max_sagitta() const {
+  double s = domain_->max_sagitta();
+  if (shell_)
+    s = std::max(s, shell_->max_sagitta());
+  for (const auto& p : parts_)
+    s = std::max(s, p.max_sagitta());
+  return s;
+}
+
+} // namespace magfem

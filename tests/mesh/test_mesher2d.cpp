@@ -1,0 +1,403 @@
+// Properties of the 2D mesher: coverage and region areas, orientation and quality, chordal
+// error, precedence of later parts, the air-gap rule, the conforming open-boundary shell,
+// uniform refinement through size_scale, and errors that name the part.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesher2d.hpp"
+
+namespace magfem {
+namespace {
+
+constexpr double mm = 1e-3;
+constexpr double pi = std::numbers::pi;
+// Sums of ~1e5 triangle areas: relative round-off well below 1e-12.
+constexpr double area_rel_tol = 1e-11;
+
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+double triangle_area(const Mesh2D& m, std::size_t t) {
+  const auto& v = m.triangles[t];
+  return 0.5 * cross(m.nodes[v[1]] - m.nodes[v[0]], m.nodes[v[2]] - m.nodes[v[0]]);
+}
+
+Vec2 centroid(const Mesh2D& m, std::size_t t) {
+  const auto& v = m.triangles[t];
+  return (m.nodes[v[0]] + m.nodes[v[1]] + m.nodes[v[2]]) / 3.0;
+}
+
+double max_edge(const Mesh2D& m, std::size_t t) {
+  const auto& v = m.triangles[t];
+  return std::max({(m.nodes[v[0]] - m.nodes[v[1]]).norm(), (m.nodes[v[1]] - m.nodes[v[2]]).norm(),
+                   (m.nodes[v[2]] - m.nodes[v[0]]).norm()});
+}
+
+std::map<int, double> region_areas(const Mesh2D& m) {
+  std::map<int, double> a;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    a[m.triangle_part[t]] += triangle_area(m, t);
+  return a;
+}
+
+// Area of the polygon through the mesh nodes lying exactly on a circle (the chord vertices of
+// the outline; vertices CGAL adds lie on the chords, inside the circle, and do not change it).
+double circle_polygon_area(const Mesh2D& m, const Vec2& c, double r, int* n_vertices = nullptr) {
+  std::vector<double> angles;
+  for (const Vec2& p : m.nodes)
+    if (std::abs((p - c).norm() - r) <= 1e-12 * r)
+      angles.push_back(std::atan2(p.y() - c.y(), p.x() - c.x()));
+  std::sort(angles.begin(), angles.end());
+  double a = 0;
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    const double next = i + 1 < angles.size() ? angles[i + 1] : angles[0] + 2 * pi;
+    a += 0.5 * r * r * std::sin(next - angles[i]);
+  }
+  if (n_vertices)
+    *n_vertices = int(angles.size());
+  return a;
+}
+
+Geometry2D base_geometry(OuterKind kind, double radius) {
+  Geometry2D g;
+  g.outer = {kind, radius, 1.5};
+  g.options.default_size = 2 * mm;
+  g.options.chord_tolerance = 0.01 * mm;
+  return g;
+}
+
+void expect_ccw_and_quality(const Mesh2D& m, double min_angle_deg) {
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    ASSERT_GT(triangle_area(m, t), 0.0) << t;
+  EXPECT_GT(m.quality.min_area, 0.0);
+  EXPECT_GE(m.quality.min_angle_deg, min_angle_deg);
+  EXPECT_LT(m.quality.max_angle_deg, 180.0 - 2 * min_angle_deg + 1e-9);
+}
+
+TEST(Mesher2D, DiskInOpenSpaceCoversDomainWithQualityAndChordalBound) {
+  Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
+  g.parts.push_back({"magnet", Disk{Vec2(1 * mm, -2 * mm), 8 * mm}, 0.5 * mm});
+  const Mesh2D m = build_mesh_2d(g);
+
+  // Promised bound: min(min_angle_deg = 28, 30); the geometry has no sharp input corners.
+  expect_ccw_and_quality(m, 28.0);
+  EXPECT_LE(m.quality.max_sagitta, g.options.chord_tolerance);
+
+  // Each region tiles its polygon: polygon area to round-off, exact area within the chordal
+  // bound (an inscribed polygon with sagitta s loses at most perimeter * s).
+  const auto areas = region_areas(m);
+  const double r = 8 * mm, s = m.quality.max_sagitta;
+  const double magnet_poly = circle_polygon_area(m, Vec2(1 * mm, -2 * mm), r);
+  EXPECT_NEAR(areas.at(0), magnet_poly, area_rel_tol * magnet_poly);
+  EXPECT_LE(pi * r * r - areas.at(0), 2 * pi * r * s);
+  EXPECT_GE(pi * r * r - areas.at(0), 0.0);
+  int n1 = 0;
+  const double r1 = 20 * mm, domain_poly = circle_polygon_area(m, Vec2::Zero(), r1, &n1);
+  EXPECT_NEAR(areas.at(0) + areas.at(region_background), domain_poly, area_rel_tol * domain_poly);
+  EXPECT_LE(pi * r1 * r1 - domain_poly, 2 * pi * r1 * s);
+  const double r2 = 30 * mm, all_poly = circle_polygon_area(m, Vec2::Zero(), r2);
+  EXPECT_NEAR(areas.at(region_shell), all_poly - domain_poly, area_rel_tol * all_poly);
+
+  // Magnet chords: sagitta within tolerance and length within the magnet's size.
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    if (m.triangle_part[t] != 0)
+      continue;
+    const auto& v = m.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 a = m.nodes[v[k]] - Vec2(1 * mm, -2 * mm),
+                 b = m.nodes[v[(k + 1) % 3]] - Vec2(1 * mm, -2 * mm);
+      if (std::abs(a.norm() - r) > 1e-12 * r || std::abs(b.norm() - r) > 1e-12 * r)
+        continue;
+      EXPECT_LE(r - (0.5 * (a + b)).norm(), g.options.chord_tolerance * (1 + 1e-9));
+      EXPECT_LE((a - b).norm(), 0.5 * mm * (1 + 1e-9));
+    }
+  }
+}
+
+TEST(Mesher2D, OpenShellIsConformingAndOuterEdgesLieOnOuterCircle) {
+  Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
+  g.parts.push_back({"magnet", Disk{Vec2::Zero(), 10 * mm}, 1 * mm});
+  const Mesh2D m = build_mesh_2d(g);
+  const double r1 = 20 * mm, r2 = 30 * mm;
+  EXPECT_DOUBLE_EQ(m.shell_inner_radius, r1);
+  EXPECT_DOUBLE_EQ(m.shell_outer_radius, r2);
+
+  // Every edge on the R1 circle has one inside and one shell triangle.
+  std::map<std::pair<int, int>, std::vector<int>> edge_parts;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      edge_parts[{std::min(a, b), std::max(a, b)}].push_back(m.triangle_part[t]);
+    }
+  const auto on = [&](int v, double r) { return std::abs(m.nodes[v].norm() - r) <= 1e-12 * r; };
+  int n_r1 = 0;
+  for (const auto& [e, parts] : edge_parts) {
+    if (!on(e.first, r1) || !on(e.second, r1))
+      continue;
+    ++n_r1;
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_EQ(std::count(parts.begin(), parts.end(), region_shell), 1);
+  }
+  EXPECT_GE(n_r1, 8);
+  // No inside triangle reaches beyond R1, no shell triangle inside it.
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    const double rc = centroid(m, t).norm();
+    if (m.triangle_part[t] == region_shell) {
+      EXPECT_GT(rc, r1 * std::cos(pi / n_r1) * (1 - 1e-12));
+      // At least 4 layers radially: no shell edge longer than (R2 - R1) / 4.
+      EXPECT_LE(max_edge(m, t), 0.25 * (r2 - r1) * (1 + 1e-9));
+    } else {
+      EXPECT_LT(rc, r1);
+    }
+  }
+  // Outer edges: on R2 exactly, counter-clockwise (domain on the left), closing the circle.
+  double turned = 0;
+  for (const auto& e : m.outer_edges) {
+    EXPECT_TRUE(on(e[0], r2) && on(e[1], r2));
+    const Vec2 a = m.nodes[e[0]], b = m.nodes[e[1]];
+    EXPECT_GT(cross(a, b), 0.0);
+    turned += std::atan2(cross(a, b), a.dot(b));
+  }
+  EXPECT_NEAR(turned, 2 * pi, 1e-9);
+}
+
+TEST(Mesher2D, DirichletBoundaryHasNoShellAndOuterEdgesOnDomainCircle) {
+  Geometry2D g = base_geometry(OuterKind::dirichlet, 20 * mm);
+  g.parts.push_back({"steel", Annulus{Vec2::Zero(), 12 * mm, 16 * mm}, 1 * mm});
+  const Mesh2D m = build_mesh_2d(g);
+  EXPECT_EQ(m.shell_inner_radius, 0.0);
+  for (int r : m.triangle_part)
+    EXPECT_NE(r, region_shell);
+  for (const auto& e : m.outer_edges)
+    for (int v : e)
+      EXPECT_NEAR(m.nodes[v].norm(), 20 * mm, 1e-12 * 20 * mm);
+  int n = 0;
+  const double poly = circle_polygon_area(m, Vec2::Zero(), 20 * mm, &n);
+  EXPECT_EQ(int(m.outer_edges.size()), n);
+  const auto areas = region_areas(m);
+  EXPECT_NEAR(areas.at(0) + areas.at(region_background), poly, area_rel_tol * poly);
+  const double annulus_poly =
+      circle_polygon_area(m, Vec2::Zero(), 16 * mm) - circle_polygon_area(m, Vec2::Zero(), 12 * mm);
+  EXPECT_NEAR(areas.at(0), annulus_poly, area_rel_tol * annulus_poly);
+}
+
+TEST(Mesher2D, LaterPartsTakePrecedence) {
+  Geometry2D g = base_geometry(OuterKind::neumann, 40 * mm);
+  g.parts.push_back({"yoke", Rectangle{Vec2::Zero(), 30 * mm, 16 * mm, 0.0}, 1 * mm});
+  g.parts.push_back({"inset", Disk{Vec2(-5 * mm, 0), 4 * mm}, 0.5 * mm});
+  // Straddles the right edge; off-centre so that no split point of that edge lies on its circle
+  // (circle_polygon_area collects every node on the circle).
+  g.parts.push_back({"cap", Disk{Vec2(15 * mm, 0.37 * mm), 3 * mm}, 0});
+  const Mesh2D m = build_mesh_2d(g);
+  expect_ccw_and_quality(m, 28.0);
+  const auto areas = region_areas(m);
+  const double inset = circle_polygon_area(m, Vec2(-5 * mm, 0), 4 * mm);
+  const double cap = circle_polygon_area(m, Vec2(15 * mm, 0.37 * mm), 3 * mm);
+  EXPECT_NEAR(areas.at(1), inset, area_rel_tol * inset);
+  EXPECT_NEAR(areas.at(2), cap, area_rel_tol * cap);
+  // The yoke keeps its rectangle minus the inset and the left part of the cap, which is about
+  // half the cap polygon (vertex placement breaks the symmetry by far less than 0.1 %) and at
+  // most the exact half disk.
+  const double yoke_min = 30 * mm * 16 * mm - inset - 0.5 * pi * 9 * mm * mm;
+  const double yoke_max = 30 * mm * 16 * mm - inset - 0.5 * cap + 1e-3 * cap;
+  EXPECT_GT(areas.at(0), yoke_min);
+  EXPECT_LT(areas.at(0), yoke_max);
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    const Vec2 c = centroid(m, t);
+    if ((c - Vec2(-5 * mm, 0)).norm() < 3.9 * mm) {
+      EXPECT_EQ(m.triangle_part[t], 1);
+    }
+    if ((c - Vec2(15 * mm, 0.37 * mm)).norm() < 2.9 * mm) {
+      EXPECT_EQ(m.triangle_part[t], 2);
+    }
+  }
+}
+
+TEST(Mesher2D, EveryPrimitiveMatchesItsExactAreaWithinTheChordalBound) {
+  Geometry2D g = base_geometry(OuterKind::open, 50 * mm);
+  g.parts.push_back({"disk", Disk{Vec2(-25 * mm, 0), 6 * mm}, 1 * mm});
+  g.parts.push_back({"ring", Annulus{Vec2(0, 20 * mm), 3 * mm, 7 * mm}, 1 * mm});
+  g.parts.push_back(
+      {"sector", AnnularSector{Vec2(10 * mm, -10 * mm), 4 * mm, 12 * mm, 0.2, 2.0}, 1 * mm});
+  g.parts.push_back({"pie", AnnularSector{Vec2(-10 * mm, -25 * mm), 0, 8 * mm, -1.0, 0.5}, 1 * mm});
+  g.parts.push_back({"bar", Rectangle{Vec2(25 * mm, 20 * mm), 10 * mm, 4 * mm, 0.5}, 0});
+  g.parts.push_back(
+      {"tri", Polygon{{Vec2(30 * mm, -5 * mm), Vec2(40 * mm, -5 * mm), Vec2(35 * mm, 5 * mm)}}, 0});
+  const Mesh2D m = build_mesh_2d(g);
+  // The pie's apex angle (1.5 rad = 86 deg) and the sector's corners (90 deg) are not sharp.
+  expect_ccw_and_quality(m, 28.0);
+  const auto areas = region_areas(m);
+  const double s = m.quality.max_sagitta;
+  // Exact areas and the arc lengths that bound the chordal deficit (arc length * sagitta).
+  const double exact[] = {pi * 36, pi * (49 - 9), 0.5 * 1.8 * (144 - 16), 0.5 * 1.5 * 64, 40, 50};
+  const double arcs[] = {2 * pi * 6, 2 * pi * 10, 1.8 * 16, 1.5 * 8, 0, 0};
+  for (int i = 0; i < 6; ++i) {
+    const double a = areas.at(i) / (mm * mm);
+    EXPECT_LE(exact[i] - a, arcs[i] * s / mm + area_rel_tol * exact[i]) << g.parts[i].name;
+    EXPECT_GE(exact[i] - a, -area_rel_tol * exact[i]) << g.parts[i].name;
+  }
+}
+
+// Share of a segment's length inside a triangle (Cyrus-Beck clipping).
+double clipped_length(const Mesh2D& m, std::size_t t, const Vec2& p, const Vec2& q) {
+  double t0 = 0, t1 = 1;
+  const auto& v = m.triangles[t];
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 a = m.nodes[v[k]], b = m.nodes[v[(k + 1) % 3]];
+    const double num = cross(b - a, p - a), den = cross(b - a, q - p); // inside: cross >= 0
+    if (den == 0) {
+      if (num < 0)
+        return 0;
+    } else if (den > 0) {
+      t0 = std::max(t0, -num / den);
+    } else {
+      t1 = std::min(t1, -num / den);
+    }
+  }
+  return t1 > t0 ? (t1 - t0) * (q - p).norm() : 0;
+}
+
+TEST(Mesher2D, ThinAirGapGetsAtLeastThreeLayers) {
+  Geometry2D g = base_geometry(OuterKind::open, 25 * mm);
+  const double r_in = 10 * mm, gap = 0.3 * mm;
+  g.parts.push_back({"rotor", Annulus{Vec2::Zero(), 5 * mm, r_in}, 1 * mm});
+  g.parts.push_back({"stator", Annulus{Vec2::Zero(), r_in + gap, 15 * mm}, 1 * mm});
+  const Mesh2D m = build_mesh_2d(g);
+  ASSERT_EQ(g.options.gap_layers, 3);
+  expect_ccw_and_quality(m, 28.0);
+  // The polygons' gap differs from 0.3 mm by at most the sagitta of each side.
+  const double d_max = gap + 2 * m.quality.max_sagitta;
+  int n_gap = 0;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    const double rc = centroid(m, t).norm();
+    if (m.triangle_part[t] != region_background || rc < r_in - gap || rc > r_in + 2 * gap)
+      continue;
+    ++n_gap;
+    EXPECT_LE(max_edge(m, t), d_max / 3) << t;
+  }
+  EXPECT_GT(n_gap, 1000);
+  // Count the air triangles a radial line crosses inside the gap.
+  for (int k = 0; k < 16; ++k) {
+    const double phi = 0.1 + 2 * pi * k / 16;
+    const Vec2 dir(std::cos(phi), std::sin(phi));
+    const Vec2 p = (r_in - gap) * dir, q = (r_in + 2 * gap) * dir;
+    int layers = 0;
+    for (std::size_t t = 0; t < m.n_triangles(); ++t)
+      if (m.triangle_part[t] == region_background && clipped_length(m, t, p, q) > 1e-6 * gap)
+        ++layers;
+    EXPECT_GE(layers, 3) << "phi = " << phi;
+  }
+  // Away from the gap the air keeps its coarse size: the rule is local.
+  double far_max = 0;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    if (m.triangle_part[t] == region_background && centroid(m, t).norm() > 20 * mm)
+      far_max = std::max(far_max, max_edge(m, t));
+  EXPECT_GT(far_max, 1 * mm);
+}
+
+TEST(Mesher2D, HalvingSizeScaleRoughlyQuadruplesTriangles) {
+  Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
+  g.options.chord_tolerance = 0.1 * mm; // sizes, not the tolerance, set the chords
+  g.parts.push_back({"magnet", Disk{Vec2::Zero(), 10 * mm}, 1 * mm});
+  const Mesh2D coarse = build_mesh_2d(g);
+  g.options.size_scale = 0.5;
+  const Mesh2D fine = build_mesh_2d(g);
+  const double ratio = double(fine.n_triangles()) / double(coarse.n_triangles());
+  // 4 for a self-similar mesh; boundary layers and CGAL's refinement order move it slightly.
+  EXPECT_GT(ratio, 3.4);
+  EXPECT_LT(ratio, 4.6);
+}
+
+template <class F>
+void expect_mesh_error(F&& make, const std::string& part, const std::string& field) {
+  try {
+    make();
+    FAIL() << "no MeshError for part '" << part << "'";
+  } catch (const MeshError& e) {
+    EXPECT_EQ(e.part, part) << e.what();
+    EXPECT_EQ(e.field, field) << e.what();
+    if (!part.empty()) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos);
+    }
+  }
+}
+
+TEST(Mesher2D, BadInputThrowsMeshErrorNamingThePart) {
+  const auto with = [](Part2D p) {
+    Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
+    g.parts.push_back({"ok", Disk{Vec2::Zero(), 2 * mm}, 0});
+    g.parts.push_back(std::move(p));
+    return g;
+  };
+  expect_mesh_error([&] { build_mesh_2d(with({"m1", Disk{Vec2::Zero(), 0}, 0})); }, "m1", "radius");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"m2", Annulus{Vec2::Zero(), 5 * mm, 5 * mm}, 0}));
+      },
+      "m2", "r_inner");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"m3", AnnularSector{Vec2::Zero(), 1 * mm, 5 * mm, 1.0, 1.0}, 0}));
+      },
+      "m3", "angle_end");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"m4", Rectangle{Vec2::Zero(), 0, 1 * mm, 0}, 0}));
+      },
+      "m4", "width");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"m5", Polygon{{Vec2::Zero(), Vec2(1 * mm, 0)}}, 0}));
+      },
+      "m5", "vertices");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with(
+            {"bowtie",
+             Polygon{{Vec2(0, 0), Vec2(4 * mm, 4 * mm), Vec2(4 * mm, 0), Vec2(0, 4 * mm)}}, 0}));
+      },
+      "bowtie", "vertices");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"far", Disk{Vec2(18 * mm, 0), 3 * mm}, 0}));
+      },
+      "far", "");
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"neg", Disk{Vec2::Zero(), 1 * mm}, -1.0}));
+      },
+      "neg", "max_size");
+  // "ok" (a 2 mm disk) is covered completely by the later 5 mm disk.
+  expect_mesh_error(
+      [&] {
+        build_mesh_2d(with({"cover", Disk{Vec2::Zero(), 5 * mm}, 0}));
+      },
+      "ok", "");
+  Geometry2D g = with({"fine", Disk{Vec2(5 * mm, 0), 1 * mm}, 0});
+  g.options.default_size = 0;
+  expect_mesh_error([&] { build_mesh_2d(g); }, "", "default_size");
+}
+
+// Speed figure (run with --gtest_also_run_disabled_tests): about 50k triangles.
+TEST(Mesher2D, DISABLED_Benchmark50kTriangles) {
+  Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
+  g.options.default_size = 0.25 * mm;
+  g.parts.push_back({"magnet", Disk{Vec2::Zero(), 10 * mm}, 0});
+  const auto t0 = std::chrono::steady_clock::now();
+  const Mesh2D m = build_mesh_2d(g);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("mesher2d: %zu nodes, %zu triangles in %.3f s, min angle %.2f deg, max %.2f deg\n",
+              m.n_nodes(), m.n_triangles(), s, m.quality.min_angle_deg, m.quality.max_angle_deg);
+  EXPECT_LT(s, 1.0);
+}
+
+} // namespace
+} // namespace magfem
