@@ -178,6 +178,51 @@ TEST(ChargeModel, RadialOffCentreShellSegmentNetCharge) {
   EXPECT_LT(std::abs(total), 1e-10 * magnitude);
 }
 
+TEST(ChargeModel, UniformCuboidOnAxis) {
+  // Cube-like box (half sides a, b, c) magnetized along z: on the axis the caps are charged
+  // rectangles, each seen under the solid angle 4 atan(ab / (d sqrt(a^2 + b^2 + d^2))), so
+  // above the box B_z = (B_r / pi) [atan(ab / ((z - c) s_-)) - atan(ab / ((z + c) s_+))].
+  const double a = 0.004, b = 0.006, c = 0.003, B_r = 1.2;
+  AnalyticMagnet m;
+  m.shape = Box{Vec3(2 * a, 2 * b, 2 * c)};
+  m.magnetization.pattern = Magnetization::Pattern::parallel;
+  m.magnetization.direction = Vec3::UnitZ();
+  m.B_r = B_r;
+  const ChargeModel model({m});
+  for (double z : {0.0035, 0.005, 0.02}) {
+    auto term = [&](double d) { return std::atan(a * b / (d * std::sqrt(a * a + b * b + d * d))); };
+    const double exact = B_r / pi * (term(z - c) - term(z + c));
+    const Vec3 field = model.B(Vec3(0, 0, z));
+    EXPECT_NEAR(field.z(), exact, sphere_tol * std::abs(exact)) << z;
+    EXPECT_LT(std::hypot(field.x(), field.y()), sphere_tol * std::abs(exact)) << z;
+  }
+}
+
+TEST(ChargeModel, ToleranceBoundsTheErrorNearFaces) {
+  // The exposed tolerance is calibrated so that the maximum error relative to the peak field
+  // stays below it, including 1 mm from the 55 mm faces (r56 points, parallel and radial).
+  std::vector<Vec3> xs;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) {
+      const double t = (3 + 11.3 * i) * deg_to_rad, p = (1 + 11.7 * j) * deg_to_rad;
+      xs.push_back(0.056 * Vec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)));
+    }
+  for (auto kind : {Benchmark32Magnetization::parallel_centred, Benchmark32Magnetization::radial}) {
+    ChargeModelOptions loose, tight;
+    loose.tolerance = 1e-3;
+    tight.tolerance = 1e-8;
+    const std::vector<Vec3> b = ChargeModel(make_benchmark32(kind), {}, loose).B(xs);
+    const std::vector<Vec3> ref = ChargeModel(make_benchmark32(kind), {}, tight).B(xs);
+    double err = 0, peak = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      err = std::max(err, (b[i] - ref[i]).norm());
+      peak = std::max(peak, ref[i].norm());
+    }
+    EXPECT_LT(err, loose.tolerance * peak) << to_string(kind);
+    EXPECT_GT(err, 0); // the loose model does differ: the comparison is not vacuous
+  }
+}
+
 // Peak of |B_rho| on the r56 observation grid (theta, phi in 0..90 deg, 2 deg steps; the
 // amplitude statement concerns the envelope, and 2 deg resolves it to well below 1 %).
 double peak_b_rho(const ChargeModel& model) {
@@ -208,6 +253,12 @@ TEST(ChargeModel, Benchmark32RadialAmplitudeBelowParallel) {
   RecordProperty("parallel_peak_T", std::to_string(parallel));
   RecordProperty("radial_peak_T", std::to_string(radial));
   EXPECT_NEAR(reduction, 0.20, 0.03) << "parallel " << parallel << " T, radial " << radial << " T";
+  // The literal eq. 3.113 (direction at the segment edge) gives a stronger parallel array and
+  // about 30 % (paper_targets A): the reason the centred reading is the convention.
+  const double edge =
+      peak_b_rho(ChargeModel(make_benchmark32(Benchmark32Magnetization::parallel_edge), {}, opt));
+  RecordProperty("parallel_edge_peak_T", std::to_string(edge));
+  EXPECT_NEAR(1 - radial / edge, 0.30, 0.03) << "edge " << edge << " T";
 }
 
 } // namespace
