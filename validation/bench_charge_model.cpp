@@ -6,6 +6,10 @@
 // Prints, per case, the time per point (wall, whole model construction included), the error
 // against the reference tolerance (max over points of |B - B_ref| / max |B_ref|), and the
 // peak |B_rho|.
+//
+// usage: magfem_bench_charge compensator [tolerance=1e-4] [step_deg=10]
+// Prints the Table 4.2 gravity-compensator curve (paper_targets.md B) by charge interaction:
+// axial force and torque about y on the inner magnet versus the rotation of the outer one.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +19,7 @@
 #include <vector>
 
 #include "core/constants.hpp"
+#include "validation/analytic_force.hpp"
 #include "validation/benchmark32.hpp"
 #include "validation/charge_model.hpp"
 
@@ -56,9 +61,41 @@ Run run(magfem::Benchmark32Magnetization kind, bool bounded, double tol, int thr
   return r;
 }
 
+// Inner solid hemisphere R 29 mm along +z, outer shell 30..43 mm radial inwards (opposed at
+// 0 deg), B_r 1.3 T; the outer magnet rotated about y.
+int compensator_curve(double tol, double step_deg) {
+  magfem::AnalyticMagnet inner;
+  inner.shape = magfem::SphericalSegment{0, 0.029, 0, magfem::pi / 2, 0, 2 * magfem::pi};
+  inner.magnetization.pattern = magfem::Magnetization::Pattern::parallel;
+  inner.magnetization.direction = Vec3::UnitZ();
+  inner.B_r = 1.3;
+  std::printf("%8s %12s %12s %12s %10s\n", "deg", "F_z N", "F_x N", "T_y Nm", "seconds");
+  for (double deg = 0; deg <= 180 + 1e-9; deg += step_deg) {
+    magfem::AnalyticMagnet outer;
+    outer.shape = magfem::SphericalSegment{0.030, 0.043, 0, magfem::pi / 2, 0, 2 * magfem::pi};
+    outer.magnetization.pattern = magfem::Magnetization::Pattern::radial;
+    outer.magnetization.sign = -1;
+    outer.B_r = 1.3;
+    outer.placement =
+        magfem::Placement{}.rotated(Vec3::UnitY(), deg * magfem::deg_to_rad, Vec3::Zero());
+    magfem::ChargeInteractionOptions opt;
+    opt.tolerance = tol;
+    opt.field.tolerance = tol;
+    const auto t0 = std::chrono::steady_clock::now();
+    const magfem::ForceTorque ft = magfem::charge_interaction({inner}, {outer}, Vec3::Zero(), opt);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("%8.1f %12.3f %12.3f %12.4f %10.2f\n", deg, ft.force.z(), ft.force.x(),
+                ft.torque.y(), s);
+  }
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "compensator")
+    return compensator_curve(argc > 2 ? std::atof(argv[2]) : 1e-4,
+                             argc > 3 ? std::atof(argv[3]) : 10);
   const double tol = argc > 1 ? std::atof(argv[1]) : 1e-4;
   const double ref_tol = argc > 2 ? std::atof(argv[2]) : 1e-8;
   const int threads = argc > 3 ? std::atoi(argv[3]) : 0;

@@ -119,6 +119,19 @@ TEST(ChargeImaging, IronCoreCarriesNoNetFlux) {
   EXPECT_LT(std::abs(flux), 1e-8 * abs_flux);
 }
 
+TEST(ChargeImaging, ImageChainsCountAsInTheThesis) {
+  // One boundary: one image whatever the order. Two boundaries: order 1 gives the thesis's
+  // "two images", order 2 its "four images" (each first image imaged in the other sphere).
+  EXPECT_EQ(image_chains(1, 4).size(), 1u);
+  EXPECT_EQ(image_chains(2, 1).size(), 2u);
+  EXPECT_EQ(image_chains(2, 2).size(), 4u);
+  EXPECT_EQ(image_chains(2, 4).size(), 8u);
+  // An inversion is an involution and the image map inverts its preimage.
+  const ImageMap map({{Vec3(0.01, 0, 0), 0.03}, {Vec3::Zero(), 0.05}});
+  const Vec3 x(0.004, -0.02, 0.013);
+  EXPECT_LT((map.apply({map.preimage(x), 1.0}).x - x).norm(), 1e-15);
+}
+
 TEST(ChargeImaging, TwoBoundariesConvergeWithImageOrder) {
   // A shell magnet between an iron core (25 mm) and an iron shell (45 mm): every finite set of
   // images leaves a residual tangential H on the boundaries, which must shrink as images of
