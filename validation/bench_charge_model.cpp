@@ -3,6 +3,7 @@
 // points), parallel (centred) and radial, unbounded and bounded by a permeable sphere.
 //
 // usage: magfem_bench_charge [tolerance=1e-4] [reference_tolerance=1e-8] [threads=0]
+//                            [surface_gauss_order] [volume_gauss_order]
 // Prints, per case, the time per point (wall, whole model construction included), the error
 // against the reference tolerance (max over points of |B - B_ref| / max |B_ref|), and the
 // peak |B_rho|.
@@ -44,9 +45,15 @@ struct Run {
   double cpu_seconds; // all threads (the machine may be shared)
 };
 
+int g_surface_order = 0, g_volume_order = 0; // 0 = library default
+
 Run run(magfem::Benchmark32Magnetization kind, bool bounded, double tol, int threads,
         const std::vector<Vec3>& xs) {
   magfem::ChargeModelOptions opt;
+  if (g_surface_order > 0)
+    opt.gauss_order = g_surface_order;
+  if (g_volume_order > 0)
+    opt.volume_gauss_order = g_volume_order;
   opt.tolerance = tol;
   opt.n_threads = threads;
   std::vector<magfem::PermeableSphere> spheres;
@@ -99,6 +106,8 @@ int main(int argc, char** argv) {
   const double tol = argc > 1 ? std::atof(argv[1]) : 1e-4;
   const double ref_tol = argc > 2 ? std::atof(argv[2]) : 1e-8;
   const int threads = argc > 3 ? std::atoi(argv[3]) : 0;
+  g_surface_order = argc > 4 ? std::atoi(argv[4]) : 0;
+  g_volume_order = argc > 5 ? std::atoi(argv[5]) : 0;
   std::printf("%-18s %-9s %10s %10s %12s %14s %12s\n", "magnetization", "boundary", "ms/point",
               "cpu ms/pt", "ref ms/point", "max err/peak", "peak B_rho T");
   for (auto kind : {magfem::Benchmark32Magnetization::parallel_centred,

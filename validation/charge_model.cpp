@@ -48,10 +48,9 @@ double acceptance_ratio(double tolerance, int order) {
 ChargeModel::ChargeModel(std::vector<AnalyticMagnet> magnets, std::vector<PermeableSphere> spheres,
                          ChargeModelOptions options)
     : magnets_(std::move(magnets)), spheres_(std::move(spheres)), options_(options),
-      rule_(options.gauss_order) {
+      surface_rule_(options.gauss_order), volume_rule_(options.volume_gauss_order) {
   if (!(options_.tolerance > 0))
     throw std::invalid_argument("ChargeModel: tolerance must be positive");
-  ratio_ = acceptance_ratio(options_.tolerance, options_.gauss_order);
   const std::vector<std::vector<int>> chains =
       image_chains(static_cast<int>(spheres_.size()), options_.image_order);
   for (const AnalyticMagnet& m : magnets_) {
@@ -78,6 +77,8 @@ void ChargeModel::build_source(const ChargeDomain& domain, const ImageMap& map) 
   const double fraction =
       domain.dim == 3 ? std::min(0.1 * options_.tolerance, 1e-3) : min_radius_fraction;
   s.min_radius = fraction * box_extent(domain, domain.box).radius;
+  s.rule = domain.dim == 3 ? &volume_rule_ : &surface_rule_;
+  s.ratio = acceptance_ratio(options_.tolerance, s.rule->size());
   for (const ParamBox& b : root_boxes(domain, options_.max_angle))
     s.roots.push_back(build_node(s, b, 0));
   sources_.push_back(std::move(s));
@@ -92,7 +93,7 @@ int ChargeModel::build_node(Source& s, const ParamBox& box, int depth) {
   node.radius = e.radius;
   node.axis = e.longest_axis;
   node.begin = static_cast<int>(s.charges.size());
-  s.domain.quadrature(box, rule_, s.charges);
+  s.domain.quadrature(box, *s.rule, s.charges);
   if (!s.map.is_identity())
     for (int i = node.begin; i < static_cast<int>(s.charges.size()); ++i)
       s.charges[i] = s.map.apply(s.charges[i]);
@@ -134,15 +135,15 @@ void ChargeModel::add_compensation() {
       point_charges_.push_back({spheres_[k].center, -net[k]});
 }
 
-bool ChargeModel::far_enough(const Vec3& centre, double radius, double min_radius,
-                             const Vec3& x_pre) const {
-  return radius <= min_radius || (x_pre - centre).norm() >= ratio_ * radius;
+bool ChargeModel::far_enough(const Source& s, const Vec3& centre, double radius,
+                             const Vec3& x_pre) {
+  return radius <= s.min_radius || (x_pre - centre).norm() >= s.ratio * radius;
 }
 
 void ChargeModel::accumulate(const Source& s, int node, const Vec3& x, const Vec3& x_pre, Vec3& sum,
                              std::vector<PointCharge>& scratch) const {
   const TreeNode& n = s.nodes[node];
-  if (far_enough(n.centre, n.radius, s.min_radius, x_pre)) {
+  if (far_enough(s, n.centre, n.radius, x_pre)) {
     add_kernel(s.charges.data() + n.begin, s.charges.data() + n.end, x, sum);
     return;
   }
@@ -160,12 +161,12 @@ void ChargeModel::accumulate_box(const Source& s, const ParamBox& box, int axis,
                                  std::vector<PointCharge>& scratch) const {
   for (const ParamBox& half : split_box(box, axis)) {
     const BoxExtent e = box_extent(s.domain, half);
-    if (depth + 1 < max_depth && !far_enough(e.centre, e.radius, s.min_radius, x_pre)) {
+    if (depth + 1 < max_depth && !far_enough(s, e.centre, e.radius, x_pre)) {
       accumulate_box(s, half, e.longest_axis, depth + 1, x, x_pre, sum, scratch);
       continue;
     }
     scratch.clear();
-    s.domain.quadrature(half, rule_, scratch);
+    s.domain.quadrature(half, *s.rule, scratch);
     if (!s.map.is_identity())
       for (PointCharge& p : scratch)
         p = s.map.apply(p);
@@ -176,7 +177,8 @@ void ChargeModel::accumulate_box(const Source& s, const ParamBox& box, int axis,
 Vec3 ChargeModel::H(const Vec3& x) const {
   Vec3 sum = Vec3::Zero();
   std::vector<PointCharge> scratch;
-  scratch.reserve(rule_.size() * rule_.size() * rule_.size());
+  scratch.reserve(std::max(surface_rule_.size() * surface_rule_.size(),
+                           volume_rule_.size() * volume_rule_.size() * volume_rule_.size()));
   for (const Source& s : sources_) {
     const Vec3 x_pre = s.map.is_identity() ? x : s.map.preimage(x);
     for (int root : s.roots)

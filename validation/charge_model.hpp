@@ -25,12 +25,13 @@
 namespace magfem {
 
 struct ChargeModelOptions {
-  double tolerance = 1e-6;   // relative quadrature error per box (about that of the field)
-  int gauss_order = 6;       // points per direction per box
-  int image_order = 2;       // longest chain of inversions (two spheres, 2 -> four images)
-  int n_threads = 0;         // 0 = std::thread::hardware_concurrency()
-  int cached_depth = 5;      // precomputed tree levels per root box
-  double max_angle = 0.7854; // radians: angular span of a root box (pi/4)
+  double tolerance = 1e-6;    // relative quadrature error per box (about that of the field)
+  int gauss_order = 6;        // points per direction per surface box
+  int volume_gauss_order = 4; // per direction per volume box (n^3 points: lower is cheaper)
+  int image_order = 2;        // longest chain of inversions (two spheres, 2 -> four images)
+  int n_threads = 0;          // 0 = std::thread::hardware_concurrency()
+  int cached_depth = 5;       // precomputed tree levels per root box
+  double max_angle = 0.7854;  // radians: angular span of a root box (pi/4)
 };
 
 class ChargeModel {
@@ -68,6 +69,8 @@ private:
     std::vector<int> roots;
     std::vector<PointCharge> charges;
     double min_radius = 0; // boxes smaller than this are never split
+    const GaussRule* rule = nullptr;
+    double ratio = 2; // acceptance distance / radius for `rule`
   };
 
   void build_source(const ChargeDomain& domain, const ImageMap& map);
@@ -78,16 +81,15 @@ private:
   void accumulate_box(const Source& s, const ParamBox& box, int axis, int depth,
                       const Eigen::Vector3d& x, const Eigen::Vector3d& x_pre, Eigen::Vector3d& sum,
                       std::vector<PointCharge>& scratch) const;
-  bool far_enough(const Eigen::Vector3d& centre, double radius, double min_radius,
-                  const Eigen::Vector3d& x_pre) const;
+  static bool far_enough(const Source& s, const Eigen::Vector3d& centre, double radius,
+                         const Eigen::Vector3d& x_pre);
   template <class F>
   std::vector<Eigen::Vector3d> parallel_map(const std::vector<Eigen::Vector3d>& xs, F f) const;
 
   std::vector<AnalyticMagnet> magnets_;
   std::vector<PermeableSphere> spheres_;
   ChargeModelOptions options_;
-  GaussRule rule_;
-  double ratio_ = 2;
+  GaussRule surface_rule_, volume_rule_;
   std::vector<Source> sources_;
   std::vector<PointCharge> point_charges_; // flux-balancing charges at inner sphere centres
 };
