@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
+#include <utility>
 
 #include "core/constants.hpp"
 
@@ -24,18 +24,32 @@ std::uint64_t key(int a, int b) {
   return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
 }
 
-// Triangle indices by undirected edge (at most two per edge in a conforming mesh).
-std::unordered_map<std::uint64_t, std::array<int, 2>> edge_triangles(const Mesh2D& m) {
-  std::unordered_map<std::uint64_t, std::array<int, 2>> map;
-  map.reserve(m.triangles.size() * 2);
+// Neighbour of each triangle across each edge k (from vertex k to vertex k + 1), -1 on the
+// boundary. Sorting the edge keys is cheaper than a hash map at these sizes.
+std::vector<std::array<int, 3>> neighbours(const Mesh2D& m) {
+  std::vector<std::pair<std::uint64_t, int>> half; // (edge key, 3 * triangle + k)
+  half.reserve(3 * m.triangles.size());
   for (int t = 0; t < int(m.triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k) {
-      auto [it, fresh] = map.try_emplace(key(m.triangles[t][k], m.triangles[t][(k + 1) % 3]),
-                                         std::array<int, 2>{t, -1});
-      if (!fresh)
-        it->second[1] = t;
+    for (int k = 0; k < 3; ++k)
+      half.emplace_back(key(m.triangles[t][k], m.triangles[t][(k + 1) % 3]), 3 * t + k);
+  std::sort(half.begin(), half.end());
+  std::vector<std::array<int, 3>> nb(m.triangles.size(), {-1, -1, -1});
+  for (std::size_t i = 0; i + 1 < half.size(); ++i)
+    if (half[i].first == half[i + 1].first) {
+      const int p = half[i].second, q = half[i + 1].second;
+      nb[p / 3][p % 3] = q / 3;
+      nb[q / 3][q % 3] = p / 3;
+      ++i;
     }
-  return map;
+  return nb;
+}
+
+// Index k of the edge from u to v (either direction) in triangle t, -1 when absent.
+int edge_index(const std::array<int, 3>& t, int u, int v) {
+  for (int k = 0; k < 3; ++k)
+    if (key(t[k], t[(k + 1) % 3]) == key(u, v))
+      return k;
+  return -1;
 }
 
 } // namespace
@@ -53,12 +67,13 @@ int remove_slivers(Mesh2D& m) {
       slivers.push_back(t);
   if (slivers.empty())
     return 0;
-  auto edges = edge_triangles(m);
-  std::vector<char> dead(m.triangles.size(), 0);
+  const auto nb = neighbours(m);
+  const std::size_t n_original = m.triangles.size();
+  std::vector<char> dead(n_original, 0);
   for (int s : slivers) {
     const auto v = m.triangles[s];
     if (!flat(v))
-      continue; // a neighbouring sliver's split already rebuilt it
+      continue; // rebuilt by a neighbouring sliver's split
     // Middle vertex c opposite the longest edge a-b.
     int k = 0;
     double best = -1;
@@ -69,33 +84,24 @@ int remove_slivers(Mesh2D& m) {
     }
     const int c = v[k], a = v[(k + 1) % 3], b = v[(k + 2) % 3];
     dead[s] = 1;
-    const auto& pair = edges.at(key(a, b));
-    const int n = pair[0] == s ? pair[1] : pair[0];
-    const auto replace = [&](int p, int q, int from, int to) {
-      auto& pair_pq = edges.at(key(p, q));
-      (pair_pq[0] == from ? pair_pq[0] : pair_pq[1]) = to;
-    };
-    if (n < 0) { // a-b is on the boundary: c already lies on it, b-c and c-a become boundary
-      replace(b, c, s, -1);
-      replace(c, a, s, -1);
-      edges.erase(key(a, b));
-      continue;
+    // The neighbour across a-b; an earlier split may have moved that edge to an added triangle.
+    int n = nb[s][(k + 1) % 3];
+    if (n >= 0 && (dead[n] || edge_index(m.triangles[n], a, b) < 0)) {
+      n = -1;
+      for (std::size_t t = n_original; t < m.triangles.size(); ++t)
+        if (!dead[t] && edge_index(m.triangles[t], a, b) >= 0)
+          n = int(t);
     }
-    // Split neighbour (b, a, y) at c into (b, c, y) and (c, a, y); orientation is kept.
+    if (n < 0)
+      continue; // a-b is on the boundary: c already lies on it
+    // Split the neighbour (b, a, y) at c into (b, c, y) and (c, a, y); orientation is kept.
     auto tn = m.triangles[n];
-    while (!(tn[0] == b && tn[1] == a))
-      std::rotate(tn.begin(), tn.begin() + 1, tn.end());
-    const int y = tn[2], fresh = int(m.triangles.size());
+    std::rotate(tn.begin(), tn.begin() + edge_index(tn, a, b), tn.end());
+    const int y = tn[2];
     m.triangles[n] = {b, c, y};
     m.triangles.push_back({c, a, y});
     m.triangle_part.push_back(m.triangle_part[n]);
     dead.push_back(0);
-    // Edge map: b-c and c-a now border n and fresh instead of the sliver, a-y borders fresh.
-    replace(b, c, s, n);
-    replace(c, a, s, fresh);
-    replace(a, y, n, fresh);
-    edges[key(c, y)] = {n, fresh};
-    edges.erase(key(a, b));
   }
   std::size_t w = 0;
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
@@ -109,27 +115,24 @@ int remove_slivers(Mesh2D& m) {
 }
 
 std::vector<std::array<int, 2>> boundary_edges(const Mesh2D& m) {
-  const auto edges = edge_triangles(m);
+  const auto nb = neighbours(m);
   std::vector<std::array<int, 2>> out;
-  for (const auto& t : m.triangles)
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
-      if (edges.at(key(t[k], t[(k + 1) % 3]))[1] < 0)
-        out.push_back({t[k], t[(k + 1) % 3]});
+      if (nb[t][k] < 0)
+        out.push_back({m.triangles[t][k], m.triangles[t][(k + 1) % 3]});
   return out;
 }
 
 std::vector<std::array<int, 2>> interface_edges(const Mesh2D& m, int region) {
-  const auto edges = edge_triangles(m);
+  const auto nb = neighbours(m);
   std::vector<std::array<int, 2>> out;
-  for (int t = 0; t < int(m.triangles.size()); ++t) {
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     if (m.triangle_part[t] != region)
       continue;
-    for (int k = 0; k < 3; ++k) {
-      const auto& pair = edges.at(key(m.triangles[t][k], m.triangles[t][(k + 1) % 3]));
-      const int n = pair[0] == t ? pair[1] : pair[0];
-      if (n >= 0 && m.triangle_part[n] != region)
+    for (int k = 0; k < 3; ++k)
+      if (nb[t][k] >= 0 && m.triangle_part[nb[t][k]] != region)
         out.push_back({m.triangles[t][k], m.triangles[t][(k + 1) % 3]});
-    }
   }
   return out;
 }

@@ -16,8 +16,7 @@ constexpr double two_pi = 2.0 * pi;
 constexpr int min_chords_per_turn = 8;
 // A curve needing more pieces than this means a tolerance or size far below the geometry.
 constexpr int max_pieces_per_curve = 1'000'000;
-// Relative slack for "the span is a full turn".
-constexpr double full_turn_rel_tol = 1e-12;
+constexpr double full_turn_rel_tol = 1e-12; // relative slack for "the span is a full turn"
 
 double wrap_angle(double a) {
   a = std::fmod(a, two_pi);
@@ -30,6 +29,10 @@ double cross(const Vec2& a, const Vec2& b) {
 
 bool finite(const Vec2& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y());
+}
+
+bool positive(double v) {
+  return v > 0 && std::isfinite(v);
 }
 
 // Smallest chord limit along a curve given as t in [0, 1] -> point. Sampling is refined until
@@ -78,99 +81,61 @@ bool segments_touch(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
          (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
 }
 
+bool lexicographically_less(const Vec2& a, const Vec2& b) {
+  return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+}
+
+std::vector<Vec2> rectangle_corners(const Rectangle& r) {
+  const Eigen::Rotation2Dd rot(r.rotation);
+  const double hw = 0.5 * r.width, hh = 0.5 * r.height;
+  return {r.center + rot * Vec2(-hw, -hh), r.center + rot * Vec2(hw, -hh),
+          r.center + rot * Vec2(hw, hh), r.center + rot * Vec2(-hw, hh)};
+}
+
 } // namespace
 
-// Validates one part and fills an Outline2D; one member function per primitive.
-class OutlineBuilder2D {
-public:
-  OutlineBuilder2D(const Part2D& part, double tol, const ChordLimit2D& limit)
-      : part_(part), tol_(tol), limit_(limit) {}
+// ---- phase 1: validation and arc requests ----------------------------------------------------
 
-  Outline2D build() {
-    if (!(part_.max_size >= 0) || !std::isfinite(part_.max_size))
-      fail("max_size", "must be a finite size >= 0 (0 = default size)");
-    out_.shape_ = part_.shape;
-    std::visit([this](const auto& s) { add(s); }, part_.shape);
-    finish();
-    return std::move(out_);
-  }
-
-private:
-  [[noreturn]] void fail(const std::string& field, const std::string& msg) const {
-    throw MeshError(part_.name, field, msg);
-  }
-
-  void check_center(const Vec2& c) const {
-    if (!finite(c))
-      fail("center", "must be finite");
-  }
-
-  void check_radii(double r_inner, double r_outer) const {
-    if (!(r_outer > 0) || !std::isfinite(r_outer))
-      fail("r_outer", "must be a finite radius > 0");
-    if (!(r_inner >= 0) || !(r_inner < r_outer))
-      fail("r_inner", "must satisfy 0 <= r_inner < r_outer");
-  }
-
-  void add(const Disk& d) {
-    check_center(d.center);
-    if (!(d.radius > 0) || !std::isfinite(d.radius))
+OutlineBuilder2D::OutlineBuilder2D(const Part2D& part, double chord_tolerance, ChordLimit2D limit,
+                                   CircleSet2D& circles)
+    : part_(part), tol_(chord_tolerance), limit_(std::move(limit)) {
+  if (!positive(tol_))
+    throw MeshError("", "chord_tolerance", "must be a finite length > 0");
+  if (!(part.max_size >= 0) || !std::isfinite(part.max_size))
+    fail("max_size", "must be a finite size >= 0 (0 = default size)");
+  if (const auto* d = std::get_if<Disk>(&part.shape)) {
+    check_center(d->center);
+    if (!positive(d->radius))
       fail("radius", "must be a finite radius > 0");
-    add_rings(d.center, 0.0, d.radius, 0.0);
-  }
-
-  void add(const Annulus& a) {
-    check_center(a.center);
-    check_radii(a.r_inner, a.r_outer);
-    add_rings(a.center, a.r_inner, a.r_outer, 0.0);
-  }
-
-  void add(const AnnularSector& s) {
-    check_center(s.center);
-    check_radii(s.r_inner, s.r_outer);
-    const double span = s.angle_end - s.angle_start;
+    outer_arc_ = request_arc(circles, d->center, d->radius, 0.0, two_pi);
+  } else if (const auto* a = std::get_if<Annulus>(&part.shape)) {
+    check_center(a->center);
+    check_radii(a->r_inner, a->r_outer);
+    outer_arc_ = request_arc(circles, a->center, a->r_outer, 0.0, two_pi);
+    if (a->r_inner > 0)
+      inner_arc_ = request_arc(circles, a->center, a->r_inner, 0.0, two_pi);
+  } else if (const auto* s = std::get_if<AnnularSector>(&part.shape)) {
+    check_center(s->center);
+    check_radii(s->r_inner, s->r_outer);
+    const double span = s->angle_end - s->angle_start;
     if (!std::isfinite(span) || !(span > 0))
       fail("angle_end", "must exceed angle_start (angles counter-clockwise)");
     if (span > two_pi * (1 + full_turn_rel_tol))
       fail("angle_end", "the span exceeds a full turn");
-    if (span >= two_pi * (1 - full_turn_rel_tol)) {
-      add_rings(s.center, s.r_inner, s.r_outer, s.angle_start); // a full ring, no radial edges
-      return;
-    }
-    kind_sector_ = true;
-    const Outline2D::Arc outer = make_arc(s.center, s.r_outer, s.angle_start, span);
-    std::vector<Vec2> loop;
-    append_arc(loop, outer, false);
-    if (s.r_inner > 0) {
-      const Outline2D::Arc inner = make_arc(s.center, s.r_inner, s.angle_start, span);
-      append_segment(loop, loop.back(), arc_point(inner, inner.n_chords));
-      append_arc(loop, inner, true);
-      append_segment(loop, loop.back(), loop.front());
-      out_.arcs_ = {outer, inner};
-    } else {
-      append_segment(loop, loop.back(), s.center);
-      append_segment(loop, s.center, loop.front());
-      out_.arcs_ = {outer};
-    }
-    out_.loops_.push_back(std::move(loop));
-  }
-
-  void add(const Rectangle& r) {
-    check_center(r.center);
-    if (!(r.width > 0) || !std::isfinite(r.width))
+    const double a0 = span >= two_pi * (1 - full_turn_rel_tol) ? 0.0 : s->angle_start;
+    outer_arc_ = request_arc(circles, s->center, s->r_outer, a0, span);
+    if (s->r_inner > 0)
+      inner_arc_ = request_arc(circles, s->center, s->r_inner, a0, span);
+  } else if (const auto* r = std::get_if<Rectangle>(&part.shape)) {
+    check_center(r->center);
+    if (!positive(r->width))
       fail("width", "must be a finite width > 0");
-    if (!(r.height > 0) || !std::isfinite(r.height))
+    if (!positive(r->height))
       fail("height", "must be a finite height > 0");
-    if (!std::isfinite(r.rotation))
+    if (!std::isfinite(r->rotation))
       fail("rotation", "must be finite");
-    const Eigen::Rotation2Dd rot(r.rotation);
-    const double hw = 0.5 * r.width, hh = 0.5 * r.height;
-    close_polyline({r.center + rot * Vec2(-hw, -hh), r.center + rot * Vec2(hw, -hh),
-                    r.center + rot * Vec2(hw, hh), r.center + rot * Vec2(-hw, hh)});
-  }
-
-  void add(const Polygon& p) {
-    const auto& v = p.vertices;
+  } else {
+    const auto& v = std::get<Polygon>(part.shape).vertices;
     if (v.size() < 3)
       fail("vertices", "a polygon needs at least 3 vertices");
     for (const Vec2& x : v)
@@ -183,138 +148,148 @@ private:
     if (std::abs(shoelace(v)) <= 1e-14 * (v[0] - v[1]).squaredNorm() * double(n))
       fail("vertices", "the polygon has zero area");
     check_simple(v);
-    close_polyline(v);
   }
-
-  void check_simple(const std::vector<Vec2>& v) const {
-    const std::size_t n = v.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 &a = v[i], &b = v[(i + 1) % n];
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const Vec2 &c = v[j], &d = v[(j + 1) % n];
-        const bool next = j == i + 1, prev = (j + 1) % n == i;
-        if (next || prev) {
-          // Adjacent edges share a vertex; they must not fold back onto each other.
-          const Vec2& shared = next ? b : a;
-          const Vec2& p = next ? a : b;
-          const Vec2& q = next ? d : c;
-          if (orientation(p, shared, q) == 0 && (p - shared).dot(q - shared) > 0)
-            fail("vertices",
-                 "edges " + std::to_string(i + 1) + " and " + std::to_string(j + 1) + " overlap");
-          continue;
-        }
-        if (segments_touch(a, b, c, d))
-          fail("vertices", "the polygon intersects itself (edges " + std::to_string(i + 1) +
-                               " and " + std::to_string(j + 1) + ")");
-      }
-    }
-  }
-
-  // Full circle (r_inner = 0) or full ring about c, chords starting at angle a0.
-  void add_rings(const Vec2& c, double r_inner, double r_outer, double a0) {
-    const Outline2D::Arc outer = make_arc(c, r_outer, a0, two_pi);
-    out_.arcs_.push_back(outer);
-    out_.loops_.push_back(full_loop(outer));
-    if (r_inner > 0) {
-      const Outline2D::Arc inner = make_arc(c, r_inner, a0, two_pi);
-      out_.arcs_.push_back(inner);
-      out_.loops_.push_back(full_loop(inner));
-    }
-  }
-
-  Outline2D::Arc make_arc(const Vec2& c, double r, double a0, double span) {
-    Outline2D::Arc arc{c, r, a0, span, 0};
-    const double half_angle = std::acos(std::max(-1.0, 1.0 - tol_ / r));
-    const double n_sagitta = std::ceil(span / (2.0 * half_angle));
-    const double n_turn = std::ceil(min_chords_per_turn * span / two_pi - 1e-9);
-    const auto at = [&](double t) {
-      return Vec2(c + r * Vec2(std::cos(a0 + t * span), std::sin(a0 + t * span)));
-    };
-    const double h = min_limit_along(at, r * span, limit_);
-    const double n_size = std::ceil(r * span / h);
-    const double n = std::max({1.0, n_sagitta, n_turn, n_size});
-    if (!(n <= max_pieces_per_curve))
-      fail("", "an arc of radius " + std::to_string(r) +
-                   " m needs more than a million chords (size or chord tolerance too small)");
-    arc.n_chords = int(n);
-    out_.max_sagitta_ = std::max(out_.max_sagitta_, r * (1 - std::cos(0.5 * span / n)));
-    return arc;
-  }
-
-  static Vec2 arc_point(const Outline2D::Arc& a, int k) {
-    const double phi = a.angle_start + a.span * k / a.n_chords;
-    return a.center + a.radius * Vec2(std::cos(phi), std::sin(phi));
-  }
-
-  static std::vector<Vec2> full_loop(const Outline2D::Arc& a) {
-    std::vector<Vec2> loop;
-    for (int k = 0; k < a.n_chords; ++k)
-      loop.push_back(arc_point(a, k));
-    return loop;
-  }
-
-  // Appends the arc's vertices 0..n (or n..0 when reversed), skipping one equal to the last.
-  static void append_arc(std::vector<Vec2>& loop, const Outline2D::Arc& a, bool reversed) {
-    for (int k = 0; k <= a.n_chords; ++k) {
-      const Vec2 v = arc_point(a, reversed ? a.n_chords - k : k);
-      if (loop.empty() || v != loop.back())
-        loop.push_back(v);
-    }
-  }
-
-  // Appends the interior split points of segment ab and then b, unless b closes the loop.
-  void append_segment(std::vector<Vec2>& loop, const Vec2 a, const Vec2 b) {
-    const double len = (b - a).norm();
-    const auto at = [&](double t) { return Vec2(a + t * (b - a)); };
-    const double h = min_limit_along(at, len, limit_);
-    const double n = std::max(1.0, std::ceil(len / h));
-    if (!(n <= max_pieces_per_curve))
-      fail("", "an edge needs more than a million pieces (size too small)");
-    for (int k = 1; k < int(n); ++k)
-      loop.push_back(at(double(k) / n));
-    if (!loop.empty() && b == loop.front())
-      return;
-    loop.push_back(b);
-  }
-
-  void close_polyline(const std::vector<Vec2>& corners) {
-    std::vector<Vec2> loop{corners.front()};
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      append_segment(loop, corners[i], corners[(i + 1) % corners.size()]);
-    out_.loops_.push_back(std::move(loop));
-  }
-
-  void finish() {
-    out_.kind_sector_ = kind_sector_;
-    out_.lo_ = out_.hi_ = out_.loops_.front().front();
-    for (const auto& loop : out_.loops_)
-      for (const Vec2& v : loop) {
-        out_.lo_ = out_.lo_.cwiseMin(v);
-        out_.hi_ = out_.hi_.cwiseMax(v);
-      }
-  }
-
-  const Part2D& part_;
-  double tol_;
-  const ChordLimit2D& limit_;
-  bool kind_sector_ = false;
-  Outline2D out_;
-};
-
-Outline2D Outline2D::build(const Part2D& part, double chord_tolerance, const ChordLimit2D& limit) {
-  if (!(chord_tolerance > 0) || !std::isfinite(chord_tolerance))
-    throw MeshError("", "chord_tolerance", "must be a finite length > 0");
-  return OutlineBuilder2D(part, chord_tolerance, limit).build();
 }
 
-bool Outline2D::inside_arc_chain(const Vec2& p, const Arc& arc) const {
-  const Vec2 d = p - arc.center;
-  const double t = wrap_angle(std::atan2(d.y(), d.x()) - arc.angle_start);
-  const double dphi = arc.span / arc.n_chords;
-  const int k = std::clamp(int(t / dphi), 0, arc.n_chords - 1);
-  const double mid = arc.angle_start + (k + 0.5) * dphi;
-  return d.x() * std::cos(mid) + d.y() * std::sin(mid) < arc.radius * std::cos(0.5 * dphi);
+void OutlineBuilder2D::fail(const std::string& field, const std::string& msg) const {
+  throw MeshError(part_.name, field, msg);
 }
+
+void OutlineBuilder2D::check_center(const Vec2& c) const {
+  if (!finite(c))
+    fail("center", "must be finite");
+}
+
+void OutlineBuilder2D::check_radii(double r_inner, double r_outer) const {
+  if (!positive(r_outer))
+    fail("r_outer", "must be a finite radius > 0");
+  if (!(r_inner >= 0) || !(r_inner < r_outer))
+    fail("r_inner", "must satisfy 0 <= r_inner < r_outer");
+}
+
+void OutlineBuilder2D::check_simple(const std::vector<Vec2>& v) const {
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 &a = v[i], &b = v[(i + 1) % n];
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Vec2 &c = v[j], &d = v[(j + 1) % n];
+      const bool next = j == i + 1, prev = (j + 1) % n == i;
+      const std::string edges = std::to_string(i + 1) + " and " + std::to_string(j + 1);
+      if (next || prev) {
+        // Adjacent edges share a vertex; they must not fold back onto each other.
+        const Vec2& shared = next ? b : a;
+        const Vec2& p = next ? a : b;
+        const Vec2& q = next ? d : c;
+        if (orientation(p, shared, q) == 0 && (p - shared).dot(q - shared) > 0)
+          fail("vertices", "edges " + edges + " overlap");
+        continue;
+      }
+      if (segments_touch(a, b, c, d))
+        fail("vertices", "the polygon intersects itself (edges " + edges + ")");
+    }
+  }
+}
+
+int OutlineBuilder2D::request_arc(CircleSet2D& circles, const Vec2& c, double r, double a0,
+                                  double span) const {
+  const double sagitta_angle = 2.0 * std::acos(std::max(-1.0, 1.0 - tol_ / r));
+  const auto at = [&](double t) {
+    return Vec2(c + r * Vec2(std::cos(a0 + t * span), std::sin(a0 + t * span)));
+  };
+  const double h = min_limit_along(at, r * span, limit_);
+  const double size_angle = h >= 2 * r ? pi : 2.0 * std::asin(h / (2 * r));
+  const double angle = std::min({sagitta_angle, size_angle, two_pi / min_chords_per_turn});
+  if (!(angle * max_pieces_per_curve >= two_pi))
+    fail("", "a circle of radius " + std::to_string(r) +
+                 " m needs more than a million chords (size or chord tolerance too small)");
+  return circles.request(c, r, a0, span, angle);
+}
+
+// ---- phase 2: loops --------------------------------------------------------------------------
+
+// Appends the interior split points of segment ab and then b, unless b closes the loop. The
+// points are computed from the lexicographically smaller end so that they do not depend on the
+// direction in which the edge is walked.
+void OutlineBuilder2D::append_segment(std::vector<Vec2>& loop, Vec2 a, Vec2 b) const {
+  const bool flip = lexicographically_less(b, a);
+  const Vec2 p = flip ? b : a, q = flip ? a : b;
+  const double len = (q - p).norm();
+  const auto at = [&](double t) { return Vec2(p + t * (q - p)); };
+  const double h = min_limit_along(at, len, limit_);
+  const double n = std::max(1.0, std::ceil(len / h));
+  if (!(n <= max_pieces_per_curve))
+    fail("", "an edge needs more than a million pieces");
+  std::vector<Vec2> inner;
+  for (int k = 1; k < int(n); ++k)
+    inner.push_back(at(double(k) / n));
+  if (flip)
+    std::reverse(inner.begin(), inner.end());
+  loop.insert(loop.end(), inner.begin(), inner.end());
+  if (!loop.empty() && b == loop.front())
+    return;
+  loop.push_back(b);
+}
+
+std::vector<Vec2> OutlineBuilder2D::close_polyline(const std::vector<Vec2>& corners) const {
+  std::vector<Vec2> loop{corners.front()};
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    append_segment(loop, corners[i], corners[(i + 1) % corners.size()]);
+  return loop;
+}
+
+void OutlineBuilder2D::add_arcs(Outline2D& o, const CircleSet2D& circles) const {
+  o.outer_circle_ = circles.circle_of(outer_arc_);
+  o.max_sagitta_ = circles.max_sagitta(o.outer_circle_);
+  if (inner_arc_ >= 0) {
+    o.inner_circle_ = circles.circle_of(inner_arc_);
+    o.max_sagitta_ = std::max(o.max_sagitta_, circles.max_sagitta(o.inner_circle_));
+  }
+  const auto* s = std::get_if<AnnularSector>(&part_.shape);
+  const double span = s ? s->angle_end - s->angle_start : two_pi;
+  if (span >= two_pi * (1 - full_turn_rel_tol)) { // full disk or ring
+    o.loops_.push_back(circles.arc_points(outer_arc_));
+    if (inner_arc_ >= 0)
+      o.loops_.push_back(circles.arc_points(inner_arc_));
+    return;
+  }
+  o.sector_ = true;
+  o.sector_center_ = s->center;
+  o.sector_start_ = s->angle_start;
+  o.sector_span_ = span;
+  std::vector<Vec2> loop = circles.arc_points(outer_arc_);
+  const Vec2 outer_start = loop.front();
+  if (inner_arc_ >= 0) {
+    std::vector<Vec2> inner = circles.arc_points(inner_arc_);
+    append_segment(loop, loop.back(), inner.back());
+    loop.insert(loop.end(), inner.rbegin() + 1, inner.rend());
+  } else {
+    append_segment(loop, loop.back(), s->center);
+  }
+  append_segment(loop, loop.back(), outer_start);
+  o.loops_.push_back(std::move(loop));
+}
+
+Outline2D OutlineBuilder2D::build(const std::shared_ptr<const CircleSet2D>& circles) const {
+  Outline2D o;
+  o.shape_ = part_.shape;
+  o.circles_ = circles;
+  if (outer_arc_ >= 0) {
+    add_arcs(o, *circles);
+  } else if (const auto* r = std::get_if<Rectangle>(&part_.shape)) {
+    o.loops_.push_back(close_polyline(rectangle_corners(*r)));
+  } else {
+    o.loops_.push_back(close_polyline(std::get<Polygon>(part_.shape).vertices));
+  }
+  o.lo_ = o.hi_ = o.loops_.front().front();
+  for (const auto& loop : o.loops_)
+    for (const Vec2& v : loop) {
+      o.lo_ = o.lo_.cwiseMin(v);
+      o.hi_ = o.hi_.cwiseMax(v);
+    }
+  return o;
+}
+
+// ---- queries ---------------------------------------------------------------------------------
 
 bool Outline2D::contains(const Vec2& p) const {
   if ((p.array() < lo_.array()).any() || (p.array() > hi_.array()).any())
@@ -333,15 +308,14 @@ bool Outline2D::contains(const Vec2& p) const {
     }
     return inside;
   }
-  if (kind_sector_) {
-    const Arc& outer = arcs_.front();
-    const Vec2 d = p - outer.center;
-    if (wrap_angle(std::atan2(d.y(), d.x()) - outer.angle_start) >= outer.span)
+  if (sector_) {
+    const Vec2 d = p - sector_center_;
+    if (wrap_angle(std::atan2(d.y(), d.x()) - sector_start_) >= sector_span_)
       return false;
   }
-  if (!inside_arc_chain(p, arcs_.front()))
+  if (!circles_->inside(outer_circle_, p))
     return false;
-  return arcs_.size() < 2 || !inside_arc_chain(p, arcs_[1]);
+  return inner_circle_ < 0 || !circles_->inside(inner_circle_, p);
 }
 
 double Outline2D::polygon_area() const {

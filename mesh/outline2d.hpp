@@ -3,17 +3,25 @@
 // point-in-shape test that answers for exactly those polygons (not for the exact curves), so
 // that region assignment agrees with the constrained edges of the mesh.
 //
-// Arcs are cut into chords at uniformly spaced angles (a full circle starts at angle 0 about
-// its centre). The chord count of each arc is the smallest that satisfies all of
+// Arcs are cut by a CircleSet2D shared by all parts (see circle_set2d.hpp): each arc asks for
+// chords that satisfy all of
 //   sagitta r (1 - cos(dphi / 2)) <= chord_tolerance,
 //   chord length <= the chord limit sampled along the arc,
-//   at least 8 chords per full turn.
-// Straight edges are split uniformly so that no piece exceeds the chord limit sampled along it.
+//   at least 8 chords per full turn,
+// and parts meeting on a circle share its vertices. Straight edges are split uniformly so that
+// no piece exceeds the chord limit sampled along it; the split points of an edge do not depend
+// on its direction, so edges shared by two parts coincide exactly.
+//
+// Building is two-phase because arcs of all parts must be known before any circle is cut:
+//   CircleSet2D circles;  OutlineBuilder2D b(part, tol, limit, circles);  (for every part)
+//   circles.finalize();   Outline2D o = b.build(shared circles);
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "mesh/circle_set2d.hpp"
 #include "mesh/geometry2d.hpp"
 
 namespace magfem {
@@ -23,11 +31,6 @@ using ChordLimit2D = std::function<double(const Vec2&)>;
 
 class Outline2D {
 public:
-  // Validates the shape (throws MeshError naming the part and field for zero or negative radii,
-  // r_inner >= r_outer, empty angular spans, polygons with fewer than 3 vertices, repeated
-  // vertices, zero area or self-intersections) and discretises it.
-  static Outline2D build(const Part2D& part, double chord_tolerance, const ChordLimit2D& limit);
-
   // Closed loops; the first is the outer boundary, further loops are holes (annulus).
   const std::vector<std::vector<Vec2>>& loops() const { return loops_; }
   // True when p lies strictly inside the polygonal approximation (round-off aside).
@@ -38,23 +41,44 @@ public:
   Vec2 box_min() const { return lo_; }
   Vec2 box_max() const { return hi_; }
 
-  // One arc of the approximation: vertices at angle_start + k * span / n_chords, k = 0..n.
-  struct Arc {
-    Vec2 center = Vec2::Zero();
-    double radius = 0, angle_start = 0, span = 0;
-    int n_chords = 0;
-  };
-
 private:
-  bool inside_arc_chain(const Vec2& p, const Arc& arc) const;
+  friend class OutlineBuilder2D;
 
   Shape2D shape_;
-  bool kind_sector_ = false; // a true sector: wedge test plus radial edges
-  std::vector<Arc> arcs_;    // outer arc first, inner arc second (annulus, sector)
+  std::shared_ptr<const CircleSet2D> circles_;
+  int outer_circle_ = -1, inner_circle_ = -1; // circle ids, -1 when absent
+  bool sector_ = false;                       // a true sector: wedge test plus radial edges
+  Vec2 sector_center_ = Vec2::Zero();
+  double sector_start_ = 0, sector_span_ = 0;
   std::vector<std::vector<Vec2>> loops_;
   double max_sagitta_ = 0;
   Vec2 lo_ = Vec2::Zero(), hi_ = Vec2::Zero();
-  friend class OutlineBuilder2D;
+};
+
+class OutlineBuilder2D {
+public:
+  // Validates the part (throws MeshError naming the part and field for zero or negative radii,
+  // r_inner >= r_outer, empty angular spans, polygons with fewer than 3 vertices, repeated
+  // vertices, zero area or self-intersections, a negative max_size) and requests its arcs.
+  OutlineBuilder2D(const Part2D& part, double chord_tolerance, ChordLimit2D limit,
+                   CircleSet2D& circles);
+  // After circles.finalize(): the outline.
+  Outline2D build(const std::shared_ptr<const CircleSet2D>& circles) const;
+
+private:
+  [[noreturn]] void fail(const std::string& field, const std::string& msg) const;
+  void check_center(const Vec2& c) const;
+  void check_radii(double r_inner, double r_outer) const;
+  void check_simple(const std::vector<Vec2>& v) const;
+  int request_arc(CircleSet2D& circles, const Vec2& c, double r, double a0, double span) const;
+  void append_segment(std::vector<Vec2>& loop, Vec2 a, Vec2 b) const;
+  std::vector<Vec2> close_polyline(const std::vector<Vec2>& corners) const;
+  void add_arcs(Outline2D& o, const CircleSet2D& circles) const;
+
+  Part2D part_;
+  double tol_;
+  ChordLimit2D limit_;
+  int outer_arc_ = -1, inner_arc_ = -1;
 };
 
 } // namespace magfem

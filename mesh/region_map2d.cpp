@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "core/constants.hpp"
 #include "mesh/mesh_error.hpp"
@@ -27,24 +28,37 @@ RegionMap2D::RegionMap2D(const Geometry2D& g, const Limit& limit, double shell_s
   background_size_ = o.default_size * o.size_scale;
   for (const Part2D& p : g.parts)
     part_sizes_.push_back((p.max_size > 0 ? p.max_size : o.default_size) * o.size_scale);
-  for (std::size_t i = 0; i < g.parts.size(); ++i) {
-    const ChordLimit2D part_limit = [&](const Vec2& x) { return limit(int(i), x); };
-    parts_.push_back(Outline2D::build(g.parts[i], o.chord_tolerance, part_limit));
-  }
-  const double r1 = g.outer.radius;
-  domain_ = Outline2D::build({"", Disk{Vec2::Zero(), r1}, 0}, o.chord_tolerance,
-                             [&](const Vec2& x) { return limit(region_background, x); });
+  // Phase 1: every outline requests its arcs, so that circles shared by parts are cut once.
+  auto circles = std::make_shared<CircleSet2D>();
+  const auto limit_of = [&limit](int region) {
+    return [&limit, region](const Vec2& x) { return limit(region, x); };
+  };
+  std::vector<OutlineBuilder2D> builders;
+  for (std::size_t i = 0; i < g.parts.size(); ++i)
+    builders.emplace_back(g.parts[i], o.chord_tolerance, limit_of(int(i)), *circles);
+  const double r1 = g.outer.radius, r2 = g.outer.shell_ratio * r1;
+  const bool open = g.outer.kind == OuterKind::open;
+  builders.emplace_back(Part2D{"", Disk{Vec2::Zero(), r1}, 0}, o.chord_tolerance,
+                        limit_of(region_background), *circles);
+  if (open)
+    builders.emplace_back(Part2D{"", Disk{Vec2::Zero(), r2}, 0}, o.chord_tolerance,
+                          limit_of(region_shell), *circles);
+  circles->finalize();
+  // Phase 2: loops on the shared circles.
+  for (std::size_t i = 0; i < g.parts.size(); ++i)
+    parts_.push_back(builders[i].build(circles));
+  domain_ = builders[g.parts.size()].build(circles);
   check_inside_domain(g);
-  if (g.outer.kind != OuterKind::open)
+  if (!open)
     return;
-  const double r2 = g.outer.shell_ratio * r1;
   const auto& loop = domain_->loops().front();
-  const double chord = (loop[1] - loop[0]).norm();
+  double chord = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    chord = std::max(chord, (loop[(i + 1) % loop.size()] - loop[i]).norm());
   shell_size_ = shell_size > 0
                     ? shell_size
                     : std::min(chord, (r2 - r1) / min_shell_layers * std::min(1.0, o.size_scale));
-  shell_ = Outline2D::build({"", Disk{Vec2::Zero(), r2}, 0}, o.chord_tolerance,
-                            [&](const Vec2& x) { return limit(region_shell, x); });
+  shell_ = builders.back().build(circles);
 }
 
 void RegionMap2D::validate(const Geometry2D& g) const {

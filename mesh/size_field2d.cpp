@@ -78,7 +78,7 @@ double SizeField2D::cell_distance(const Vec2& x, int i, int j) const {
   const double x0 = origin_.x() + i * cell_, y0 = origin_.y() + j * cell_;
   const double dx = std::max({x0 - x.x(), 0.0, x.x() - x0 - cell_});
   const double dy = std::max({y0 - x.y(), 0.0, x.y() - y0 - cell_});
-  return std::hypot(dx, dy);
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 double SizeField2D::operator()(const Vec2& x) const {
