@@ -51,6 +51,7 @@ ChargeModel::ChargeModel(std::vector<AnalyticMagnet> magnets, std::vector<Permea
       surface_rule_(options.gauss_order), volume_rule_(options.volume_gauss_order) {
   if (!(options_.tolerance > 0))
     throw std::invalid_argument("ChargeModel: tolerance must be positive");
+  check_spheres();
   const std::vector<std::vector<int>> chains =
       image_chains(static_cast<int>(spheres_.size()), options_.image_order);
   for (const AnalyticMagnet& m : magnets_) {
@@ -65,6 +66,32 @@ ChargeModel::ChargeModel(std::vector<AnalyticMagnet> magnets, std::vector<Permea
     }
   }
   add_compensation();
+}
+
+// Imaging is valid only if every magnet lies wholly on the air side of every boundary
+// (touching allowed); checked on a grid of points over every face and volume, edges included.
+void ChargeModel::check_spheres() const {
+  for (const PermeableSphere& sphere : spheres_) {
+    if (!(sphere.radius > 0))
+      throw std::invalid_argument("ChargeModel: permeable sphere radius must be positive");
+    const double slack = 1e-9 * sphere.radius;
+    for (const AnalyticMagnet& m : magnets_)
+      for (const ChargeDomain& d : charge_domains(m)) {
+        const int n = d.dim == 2 ? 9 : 5;
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j)
+            for (int k = 0; k < (d.dim == 2 ? 1 : n); ++k) {
+              std::array<double, 3> u{};
+              const int idx[3] = {i, j, k};
+              for (int a = 0; a < d.dim; ++a)
+                u[a] = d.box.lo[a] + (d.box.hi[a] - d.box.lo[a]) * idx[a] / (n - 1);
+              const double r = (d.point(u) - sphere.center).norm();
+              if (sphere.encloses ? r > sphere.radius + slack : r < sphere.radius - slack)
+                throw std::invalid_argument("ChargeModel: magnet '" + m.name +
+                                            "' is not on the air side of a permeable sphere");
+            }
+      }
+  }
 }
 
 void ChargeModel::build_source(const ChargeDomain& domain, const ImageMap& map) {

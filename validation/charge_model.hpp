@@ -36,6 +36,8 @@ struct ChargeModelOptions {
 
 class ChargeModel {
 public:
+  // Throws std::invalid_argument for invalid shapes (see check_shape) and for magnets not
+  // wholly on the air side of a permeable sphere.
   explicit ChargeModel(std::vector<AnalyticMagnet> magnets,
                        std::vector<PermeableSphere> spheres = {}, ChargeModelOptions options = {});
 
@@ -73,6 +75,7 @@ private:
     double ratio = 2; // acceptance distance / radius for `rule`
   };
 
+  void check_spheres() const;
   void build_source(const ChargeDomain& domain, const ImageMap& map);
   int build_node(Source& s, const ParamBox& box, int depth);
   void add_compensation();

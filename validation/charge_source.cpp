@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "core/constants.hpp"
 
@@ -242,7 +243,33 @@ void ChargeDomain::quadrature(const ParamBox& sub, const GaussRule& rule,
       }
 }
 
+void check_shape(const AnalyticMagnet& magnet) {
+  auto fail = [&](const std::string& what) {
+    throw std::invalid_argument("magnet '" + magnet.name + "': " + what);
+  };
+  if (const auto* s = std::get_if<SphericalSegment>(&magnet.shape)) {
+    if (!(s->r_inner >= 0 && s->r_outer > s->r_inner))
+      fail("spherical segment needs 0 <= r_inner < r_outer");
+    if (!(s->theta_min >= 0 && s->theta_max > s->theta_min && s->theta_max <= pi + 1e-12))
+      fail("spherical segment needs 0 <= theta_min < theta_max <= pi");
+    if (!(s->phi_max > s->phi_min && s->phi_max - s->phi_min <= 2 * pi + 1e-12))
+      fail("spherical segment needs phi_min < phi_max <= phi_min + 2 pi");
+  } else if (const auto* c = std::get_if<Cylinder>(&magnet.shape)) {
+    if (!(c->r_inner >= 0 && c->r_outer > c->r_inner && c->height > 0))
+      fail("cylinder needs 0 <= r_inner < r_outer and height > 0");
+  } else if (const auto* b = std::get_if<Box>(&magnet.shape)) {
+    if (!(b->size.minCoeff() > 0))
+      fail("box needs positive sizes");
+  }
+  if (magnet.magnetization.active() && !(magnet.B_r >= 0))
+    fail("B_r must be >= 0");
+  if (magnet.magnetization.pattern == Magnetization::Pattern::parallel &&
+      std::abs(magnet.magnetization.direction.norm() - 1) > 1e-9)
+    fail("parallel direction must be a unit vector");
+}
+
 std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet) {
+  check_shape(magnet);
   std::vector<ChargeDomain> all;
   if (const auto* s = std::get_if<SphericalSegment>(&magnet.shape))
     segment_domains(magnet, *s, all);

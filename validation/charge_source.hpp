@@ -61,8 +61,12 @@ struct ChargeDomain {
   void quadrature(const ParamBox& sub, const GaussRule& rule, std::vector<PointCharge>& out) const;
 };
 
-// The faces (and the volume if div M != 0) of a magnet carrying charge. Faces whose charge
-// vanishes identically (e.g. cone faces of a radially magnetized segment) and faces of zero
+// Throws std::invalid_argument (naming the magnet) for empty or inverted ranges, angles
+// outside [0, pi] x [phi_min, phi_min + 2 pi], negative B_r or a non-unit parallel direction.
+void check_shape(const AnalyticMagnet& magnet);
+
+// The faces (and the volume if div M != 0) of a magnet carrying charge (checked first). Faces whose
+// charge vanishes identically (e.g. cone faces of a radially magnetized segment) and faces of zero
 // area (theta = 0 cones, the coinciding meridian faces of a full revolution) are dropped.
 std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet);
 

@@ -119,6 +119,15 @@ TEST(ChargeImaging, IronCoreCarriesNoNetFlux) {
   EXPECT_LT(std::abs(flux), 1e-8 * abs_flux);
 }
 
+TEST(ChargeImaging, RejectsMagnetsOnTheIronSide) {
+  // 40..55 mm array: a boundary at 50 mm cuts it (either reading), at 55 mm it touches.
+  const auto array = make_benchmark32(Benchmark32Magnetization::parallel_centred);
+  EXPECT_THROW(ChargeModel(array, {{Vec3::Zero(), 0.05, true}}), std::invalid_argument);
+  EXPECT_THROW(ChargeModel(array, {{Vec3::Zero(), 0.05, false}}), std::invalid_argument);
+  EXPECT_NO_THROW(ChargeModel(array, {{Vec3::Zero(), 0.055, true}}));
+  EXPECT_NO_THROW(ChargeModel(array, {{Vec3::Zero(), 0.04, false}}));
+}
+
 TEST(ChargeImaging, ImageChainsCountAsInTheThesis) {
   // One boundary: one image whatever the order. Two boundaries: order 1 gives the thesis's
   // "two images", order 2 its "four images" (each first image imaged in the other sphere).

@@ -135,6 +135,18 @@ TEST(ChargeModel, RotatedDiametricCylinderMatchesAxialRotation) {
   EXPECT_LT((b1 - rot.rotation * b0).norm(), 1e-6 * b0.norm());
 }
 
+TEST(ChargeModel, RejectsInvalidShapes) {
+  AnalyticMagnet m = segment(0.02, 0.01, 0, pi, 0, 2 * pi, Vec3::UnitZ(), 1.0);
+  EXPECT_THROW(ChargeModel({m}), std::invalid_argument); // r_outer < r_inner
+  m = segment(0, 0.01, 0, 4.0, 0, 1, Vec3::UnitZ(), 1.0);
+  EXPECT_THROW(ChargeModel({m}), std::invalid_argument); // theta beyond pi
+  m.shape = Cylinder{0, 0.01, 0};
+  EXPECT_THROW(ChargeModel({m}), std::invalid_argument); // zero height
+  m.shape = Cylinder{0, 0.01, 0.01};
+  m.magnetization.direction = Vec3(0, 0, 2);
+  EXPECT_THROW(ChargeModel({m}), std::invalid_argument); // not a unit vector
+}
+
 TEST(ChargeModel, RadialSegmentHasZeroNetCharge) {
   // Divergence theorem: surface charge M0 (R_out^2 - R_in^2) Omega is cancelled by the volume
   // charge -2 M0 / rho. Gauss quadrature integrates rho exactly, so round-off only.
