@@ -10,8 +10,8 @@ namespace {
 
 // B of a point dipole mu0 m at the origin, written with mu0 m = (4 pi / 3) a^3 mu0 M so that
 // only the remanence and the radius enter.
-Eigen::Vector3d dipole_B(const Eigen::Vector3d &d, double radius,
-                         const Eigen::Vector3d &remanence) {
+Eigen::Vector3d dipole_B(const Eigen::Vector3d& d, double radius,
+                         const Eigen::Vector3d& remanence) {
   const double r = d.norm();
   const Eigen::Vector3d e = d / r;
   const double scale = std::pow(radius / r, 3) / 3.0; // (mu0 / 4 pi) m / r^3 over mu0 M
@@ -20,8 +20,8 @@ Eigen::Vector3d dipole_B(const Eigen::Vector3d &d, double radius,
 
 } // namespace
 
-Eigen::Vector3d uniform_sphere_B(const Eigen::Vector3d &x, const Eigen::Vector3d &center,
-                                 double radius, const Eigen::Vector3d &remanence) {
+Eigen::Vector3d uniform_sphere_B(const Eigen::Vector3d& x, const Eigen::Vector3d& center,
+                                 double radius, const Eigen::Vector3d& remanence) {
   const Eigen::Vector3d d = x - center;
   if (d.norm() <= radius) {
     return (2.0 / 3.0) * remanence;
@@ -29,8 +29,8 @@ Eigen::Vector3d uniform_sphere_B(const Eigen::Vector3d &x, const Eigen::Vector3d
   return dipole_B(d, radius, remanence);
 }
 
-Eigen::Vector3d uniform_shell_B(const Eigen::Vector3d &x, const Eigen::Vector3d &center,
-                                double r_inner, double r_outer, const Eigen::Vector3d &remanence) {
+Eigen::Vector3d uniform_shell_B(const Eigen::Vector3d& x, const Eigen::Vector3d& center,
+                                double r_inner, double r_outer, const Eigen::Vector3d& remanence) {
   if (r_inner <= 0) {
     return uniform_sphere_B(x, center, r_outer, remanence);
   }
@@ -38,8 +38,8 @@ Eigen::Vector3d uniform_shell_B(const Eigen::Vector3d &x, const Eigen::Vector3d 
          uniform_sphere_B(x, center, r_inner, remanence);
 }
 
-Eigen::Vector2d uniform_cylinder_B(const Eigen::Vector2d &x, const Eigen::Vector2d &center,
-                                   double radius, const Eigen::Vector2d &remanence) {
+Eigen::Vector2d uniform_cylinder_B(const Eigen::Vector2d& x, const Eigen::Vector2d& center,
+                                   double radius, const Eigen::Vector2d& remanence) {
   const Eigen::Vector2d d = x - center;
   const double r = d.norm();
   if (r <= radius) {
@@ -60,14 +60,14 @@ double log_distance2(double R, double r, double s) {
 
 } // namespace
 
-double harwin_eq3_radial_B(const HarwinCylinder &c, double R, double phi) {
+double harwin_eq3_radial_B(const HarwinCylinder& c, double R, double phi) {
   const double r = c.magnet_radius;
   const double s = std::sin(phi);
   return mu0 * c.current_per_rad / (2 * pi * R) *
          (log_distance2(R, r, s) - log_distance2(R, r, -s));
 }
 
-double harwin_eq4_radial_B(const HarwinCylinder &c, double R, double phi) {
+double harwin_eq4_radial_B(const HarwinCylinder& c, double R, double phi) {
   const double r = c.magnet_radius;
   const double sp = std::sin(phi + c.band_half_width);
   const double sm = std::sin(phi - c.band_half_width);
@@ -76,7 +76,7 @@ double harwin_eq4_radial_B(const HarwinCylinder &c, double R, double phi) {
   return mu0 * c.current_per_rad / (4 * pi * R) * sum;
 }
 
-double harwin_eq4_as_printed_radial_B(const HarwinCylinder &c, double R, double phi) {
+double harwin_eq4_as_printed_radial_B(const HarwinCylinder& c, double R, double phi) {
   const double r = c.magnet_radius;
   const double sp = std::sin(phi + c.band_half_width);
   const double sm = std::sin(phi - c.band_half_width);

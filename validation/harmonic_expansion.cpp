@@ -20,7 +20,7 @@ std::vector<double> ShellExpansion::degree_amplitude() const {
                   nn1 * (poloidal_cos[k] * poloidal_cos[k] + poloidal_sin[k] * poloidal_sin[k]));
     }
   }
-  for (double &a : amp) {
+  for (double& a : amp) {
     a = std::sqrt(a);
   }
   return amp;
@@ -48,7 +48,7 @@ struct Band {
   std::vector<PhiProjection> proj; // per m
 };
 
-void add_segment(const ShellSegmentSource &s, int n_max, std::vector<PhiProjection> &proj) {
+void add_segment(const ShellSegmentSource& s, int n_max, std::vector<PhiProjection>& proj) {
   const PhiIntegrals in{s.phi_min, s.phi_max};
   const double mx = s.parallel.x(), my = s.parallel.y(), mz = s.parallel.z();
   for (int m = 0; m <= n_max; ++m) {
@@ -56,7 +56,7 @@ void add_segment(const ShellSegmentSource &s, int n_max, std::vector<PhiProjecti
     const double sc = 0.5 * (in.sin_k(m + 1) - in.sin_k(m - 1)); // sin(phi) cos(m phi)
     const double cs = 0.5 * (in.sin_k(m + 1) + in.sin_k(m - 1)); // cos(phi) sin(m phi)
     const double ss = 0.5 * (in.cos_k(m - 1) - in.cos_k(m + 1)); // sin(phi) sin(m phi)
-    PhiProjection &p = proj[static_cast<std::size_t>(m)];
+    PhiProjection& p = proj[static_cast<std::size_t>(m)];
     p.f1c += mx * cc + my * sc;
     p.f1s += mx * cs + my * ss;
     p.f2c += mz * in.cos_k(m);
@@ -68,10 +68,10 @@ void add_segment(const ShellSegmentSource &s, int n_max, std::vector<PhiProjecti
   }
 }
 
-std::vector<Band> make_bands(const std::vector<ShellSegmentSource> &segments, int n_max) {
+std::vector<Band> make_bands(const std::vector<ShellSegmentSource>& segments, int n_max) {
   std::map<std::pair<double, double>, std::size_t> slot;
   std::vector<Band> bands;
-  for (const ShellSegmentSource &s : segments) {
+  for (const ShellSegmentSource& s : segments) {
     const auto key = std::make_pair(s.theta_min, s.theta_max);
     auto it = slot.find(key);
     if (it == slot.end()) {
@@ -93,7 +93,7 @@ struct Node {
 // width h that is a frequency omega = (n_max + 2) h / 2 on the reference interval, whose
 // Legendre coefficients vanish to round-off beyond degree omega + O(omega^(1/3)). A q-node
 // rule integrates degrees up to 2q - 1 exactly.
-std::vector<Node> make_nodes(const std::vector<Band> &bands, int n_max, double scale) {
+std::vector<Node> make_nodes(const std::vector<Band>& bands, int n_max, double scale) {
   std::vector<Node> nodes;
   for (std::size_t b = 0; b < bands.size(); ++b) {
     const double omega = 0.5 * (n_max + 2) * (bands[b].theta_max - bands[b].theta_min);
@@ -108,14 +108,14 @@ std::vector<Node> make_nodes(const std::vector<Band> &bands, int n_max, double s
 }
 
 // Adds the theta-node contributions (sin(theta) is the area element) of one node.
-void accumulate_node(const Node &node, const Band &band, const NormalizedLegendre &legendre,
-                     LegendreValues &lv, ShellExpansion &acc) {
+void accumulate_node(const Node& node, const Band& band, const NormalizedLegendre& legendre,
+                     LegendreValues& lv, ShellExpansion& acc) {
   legendre.evaluate(node.theta, lv);
   const double st = std::sin(node.theta), ct = std::cos(node.theta);
   const double ws = node.weight * st;
-  const TriangularIndex &index = legendre.index();
+  const TriangularIndex& index = legendre.index();
   for (int m = 0; m <= index.n_max(); ++m) {
-    const PhiProjection &p = band.proj[static_cast<std::size_t>(m)];
+    const PhiProjection& p = band.proj[static_cast<std::size_t>(m)];
     const double rc = ws * (st * p.f1c + ct * p.f2c + p.f3c);
     const double rs = ws * (st * p.f1s + ct * p.f2s + p.f3s);
     const double tc = ws * (ct * p.f1c - st * p.f2c);
@@ -144,8 +144,8 @@ ShellExpansion zero_expansion(int n_max) {
 
 // Projections -> coefficients: divide by the norms of the basis functions,
 // |Pbar cos m phi|^2 = N_m and |r grad (Pbar cos m phi)|^2 = n(n+1) N_m.
-void normalize(ShellExpansion &e) {
-  const TriangularIndex &index = e.index;
+void normalize(ShellExpansion& e) {
+  const TriangularIndex& index = e.index;
   for (int m = 0; m <= index.n_max(); ++m) {
     const double inv_norm = m == 0 ? 1.0 : 2.0;
     for (int n = m; n <= index.n_max(); ++n) {
@@ -161,7 +161,7 @@ void normalize(ShellExpansion &e) {
 
 } // namespace
 
-ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource> &segments,
+ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>& segments,
                                           int n_max, double quadrature_scale, int n_threads) {
   const std::vector<Band> bands = make_bands(segments, n_max);
   const std::vector<Node> nodes = make_nodes(bands, n_max, quadrature_scale);
@@ -182,7 +182,7 @@ ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource> 
     threads.emplace_back(work, w);
   }
   work(0);
-  for (std::thread &t : threads) {
+  for (std::thread& t : threads) {
     t.join();
   }
 

@@ -40,7 +40,7 @@ struct ShellExpansion {
 
 // quadrature_scale multiplies the number of theta nodes per band (1 is converged to round-off
 // for degrees up to n_max; larger values are for checking that claim). n_threads >= 1.
-ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource> &segments,
+ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>& segments,
                                           int n_max, double quadrature_scale, int n_threads);
 
 } // namespace magfem

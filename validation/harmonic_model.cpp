@@ -18,13 +18,13 @@ namespace {
 
 constexpr double kGeomTol = 1e-12; // relative, for "same radius", "at the origin", ...
 
-[[noreturn]] void reject(const AnalyticMagnet &m, std::size_t i, const std::string &why) {
+[[noreturn]] void reject(const AnalyticMagnet& m, std::size_t i, const std::string& why) {
   throw std::invalid_argument("HarmonicModel: magnet '" +
                               (m.name.empty() ? "#" + std::to_string(i) : m.name) +
                               "' cannot be represented: " + why);
 }
 
-ShellSegmentSource segment_source(const AnalyticMagnet &m, std::size_t i, const SphericalSegment &s,
+ShellSegmentSource segment_source(const AnalyticMagnet& m, std::size_t i, const SphericalSegment& s,
                                   double scale) {
   if (!(s.theta_min >= -kGeomTol && s.theta_max <= pi + kGeomTol && s.theta_min < s.theta_max)) {
     reject(m, i, "theta range must satisfy 0 <= theta_min < theta_max <= pi");
@@ -55,15 +55,15 @@ ShellSegmentSource segment_source(const AnalyticMagnet &m, std::size_t i, const 
 
 } // namespace
 
-ShellArray to_shell_array(const std::vector<AnalyticMagnet> &magnets) {
+ShellArray to_shell_array(const std::vector<AnalyticMagnet>& magnets) {
   if (magnets.empty()) {
     throw std::invalid_argument("HarmonicModel: empty magnet list");
   }
   ShellArray shell;
   bool first = true;
   for (std::size_t i = 0; i < magnets.size(); ++i) {
-    const AnalyticMagnet &m = magnets[i];
-    const auto *s = std::get_if<SphericalSegment>(&m.shape);
+    const AnalyticMagnet& m = magnets[i];
+    const auto* s = std::get_if<SphericalSegment>(&m.shape);
     if (s == nullptr) {
       reject(m, i, "only SphericalSegment shapes (one spherical shell) are supported");
     }
@@ -91,7 +91,7 @@ ShellArray to_shell_array(const std::vector<AnalyticMagnet> &magnets) {
 
 namespace {
 
-HarmonicOptions checked(HarmonicOptions o, const ShellArray &shell) {
+HarmonicOptions checked(HarmonicOptions o, const ShellArray& shell) {
   if (o.n_max < 1) {
     throw std::invalid_argument("HarmonicModel: n_max must be >= 1, got " +
                                 std::to_string(o.n_max));
@@ -110,7 +110,7 @@ HarmonicOptions checked(HarmonicOptions o, const ShellArray &shell) {
   return o;
 }
 
-std::optional<double> boundary_radius(const std::vector<PermeableSphere> &spheres) {
+std::optional<double> boundary_radius(const std::vector<PermeableSphere>& spheres) {
   if (spheres.empty()) {
     return std::nullopt;
   }
@@ -118,7 +118,7 @@ std::optional<double> boundary_radius(const std::vector<PermeableSphere> &sphere
     throw std::invalid_argument("HarmonicModel: at most one permeable sphere is supported, got " +
                                 std::to_string(spheres.size()));
   }
-  const PermeableSphere &s = spheres.front();
+  const PermeableSphere& s = spheres.front();
   if (s.center.norm() > kGeomTol * s.radius || !s.encloses) {
     throw std::invalid_argument("HarmonicModel: the permeable sphere must be centred at the "
                                 "origin and enclose the magnets (an inner iron core is not "
@@ -127,7 +127,7 @@ std::optional<double> boundary_radius(const std::vector<PermeableSphere> &sphere
   return s.radius;
 }
 
-HarmonicOptions with_boundary(HarmonicOptions o, const std::vector<PermeableSphere> &spheres) {
+HarmonicOptions with_boundary(HarmonicOptions o, const std::vector<PermeableSphere>& spheres) {
   if (o.permeable_radius && !spheres.empty()) {
     throw std::invalid_argument("HarmonicModel: permeable sphere given twice (options and list)");
   }
@@ -139,11 +139,11 @@ HarmonicOptions with_boundary(HarmonicOptions o, const std::vector<PermeableSphe
 
 } // namespace
 
-HarmonicModel::HarmonicModel(const std::vector<AnalyticMagnet> &magnets, HarmonicOptions options)
+HarmonicModel::HarmonicModel(const std::vector<AnalyticMagnet>& magnets, HarmonicOptions options)
     : HarmonicModel(to_shell_array(magnets), options) {}
 
-HarmonicModel::HarmonicModel(const std::vector<AnalyticMagnet> &magnets,
-                             const std::vector<PermeableSphere> &spheres, HarmonicOptions options)
+HarmonicModel::HarmonicModel(const std::vector<AnalyticMagnet>& magnets,
+                             const std::vector<PermeableSphere>& spheres, HarmonicOptions options)
     : HarmonicModel(to_shell_array(magnets), with_boundary(options, spheres)) {}
 
 HarmonicModel::HarmonicModel(ShellArray shell, HarmonicOptions options)
@@ -156,7 +156,7 @@ HarmonicModel::HarmonicModel(ShellArray shell, HarmonicOptions options)
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Eigen::Vector3d HarmonicModel::magnetization_at(const Eigen::Vector3d &x) const {
+Eigen::Vector3d HarmonicModel::magnetization_at(const Eigen::Vector3d& x) const {
   const double rho = x.norm();
   if (!(rho > r_inner_ && rho < r_outer_)) {
     return Eigen::Vector3d::Zero();
@@ -164,9 +164,11 @@ Eigen::Vector3d HarmonicModel::magnetization_at(const Eigen::Vector3d &x) const 
   const double theta = std::acos(std::clamp(x.z() / rho, -1.0, 1.0));
   const double phi = std::atan2(x.y(), x.x());
   Eigen::Vector3d m = Eigen::Vector3d::Zero();
-  for (const ShellSegmentSource &s : segments_) {
+  for (const ShellSegmentSource& s : segments_) {
+    // Half-open ranges, so that a point on a common face belongs to one segment only.
     const double p = s.phi_min + std::fmod(std::fmod(phi - s.phi_min, 2 * pi) + 2 * pi, 2 * pi);
-    if (theta >= s.theta_min && theta <= s.theta_max && p <= s.phi_max) {
+    const bool in_theta = theta >= s.theta_min && (theta < s.theta_max || s.theta_max >= pi);
+    if (in_theta && p < s.phi_max) {
       m += s.parallel + s.radial * x / rho;
     }
   }
@@ -184,7 +186,7 @@ struct Spherical {
   double rho, theta, phi;
 };
 
-Spherical to_spherical(const Eigen::Vector3d &x, double r_tiny) {
+Spherical to_spherical(const Eigen::Vector3d& x, double r_tiny) {
   double rho = x.norm();
   if (rho < r_tiny) {
     // At the centre the field is that of the degree-1 terms; rho -> tiny changes it by O(rho).
@@ -200,22 +202,22 @@ Spherical to_spherical(const Eigen::Vector3d &x, double r_tiny) {
 struct OrderSums {
   std::vector<double> rc, rs, tc, ts, pc, ps;
   void resize(std::size_t n) {
-    for (auto *v : {&rc, &rs, &tc, &ts, &pc, &ps}) {
+    for (auto* v : {&rc, &rs, &tc, &ts, &pc, &ps}) {
       v->assign(n, 0.0);
     }
   }
 };
 
-void order_sums(const ShellExpansion &e, const LegendreValues &lv,
-                const std::vector<RadialFactors> &f, OrderSums &s) {
-  const TriangularIndex &index = e.index;
+void order_sums(const ShellExpansion& e, const LegendreValues& lv,
+                const std::vector<RadialFactors>& f, OrderSums& s) {
+  const TriangularIndex& index = e.index;
   s.resize(static_cast<std::size_t>(index.n_max()) + 1);
   for (int m = 0; m <= index.n_max(); ++m) {
     const std::size_t begin = index.column_start(m);
     double rc = 0, rs = 0, tc = 0, ts = 0, pc = 0, ps = 0;
     for (int n = m; n <= index.n_max(); ++n) {
       const std::size_t k = begin + static_cast<std::size_t>(n - m);
-      const RadialFactors &r = f[static_cast<std::size_t>(n)];
+      const RadialFactors& r = f[static_cast<std::size_t>(n)];
       const double c = r.alpha * e.radial_cos[k] + r.beta * e.poloidal_cos[k];
       const double sn = r.alpha * e.radial_sin[k] + r.beta * e.poloidal_sin[k];
       const double dc = r.d_alpha * e.radial_cos[k] + r.d_beta * e.poloidal_cos[k];
@@ -237,7 +239,7 @@ void order_sums(const ShellExpansion &e, const LegendreValues &lv,
   }
 }
 
-Eigen::Vector3d field_at_phi(const OrderSums &s, double rho, double theta, double phi) {
+Eigen::Vector3d field_at_phi(const OrderSums& s, double rho, double theta, double phi) {
   double h_rho = 0, h_theta = 0, h_phi = 0;
   const double c1 = std::cos(phi), s1 = std::sin(phi);
   double cm = 1.0, sm = 0.0; // cos(m phi), sin(m phi) by rotation
@@ -261,8 +263,8 @@ Eigen::Vector3d field_at_phi(const OrderSums &s, double rho, double theta, doubl
 
 } // namespace
 
-void HarmonicModel::evaluate_group(const Group &group, const std::vector<Eigen::Vector3d> &x,
-                                   std::vector<Eigen::Vector3d> &out) const {
+void HarmonicModel::evaluate_group(const Group& group, const std::vector<Eigen::Vector3d>& x,
+                                   std::vector<Eigen::Vector3d>& out) const {
   thread_local LegendreValues lv;
   thread_local std::vector<RadialFactors> factors;
   thread_local OrderSums sums;
@@ -277,7 +279,7 @@ void HarmonicModel::evaluate_group(const Group &group, const std::vector<Eigen::
   }
 }
 
-std::vector<Eigen::Vector3d> HarmonicModel::B(const std::vector<Eigen::Vector3d> &x) const {
+std::vector<Eigen::Vector3d> HarmonicModel::B(const std::vector<Eigen::Vector3d>& x) const {
   const double r_tiny = 1e-12 * r_outer_;
   std::vector<Spherical> sph(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -296,7 +298,7 @@ std::vector<Eigen::Vector3d> HarmonicModel::B(const std::vector<Eigen::Vector3d>
   });
   std::vector<Group> groups;
   for (std::size_t i : order) {
-    const Spherical &p = sph[i];
+    const Spherical& p = sph[i];
     if (groups.empty() || std::abs(p.rho - groups.back().rho) > kGeomTol * p.rho ||
         std::abs(p.theta - groups.back().theta) > kGeomTol) {
       groups.push_back({p.rho, p.theta, {}});
@@ -304,11 +306,11 @@ std::vector<Eigen::Vector3d> HarmonicModel::B(const std::vector<Eigen::Vector3d>
     groups.back().points.push_back(i);
   }
   // Sorting by rho first can interleave thetas of nearly equal rho; merge groups again.
-  std::sort(groups.begin(), groups.end(), [](const Group &a, const Group &b) {
+  std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
     return a.theta != b.theta ? a.theta < b.theta : a.rho < b.rho;
   });
   std::vector<Group> merged;
-  for (Group &g : groups) {
+  for (Group& g : groups) {
     if (!merged.empty() && std::abs(g.rho - merged.back().rho) <= kGeomTol * g.rho &&
         std::abs(g.theta - merged.back().theta) <= kGeomTol) {
       merged.back().points.insert(merged.back().points.end(), g.points.begin(), g.points.end());
@@ -331,13 +333,13 @@ std::vector<Eigen::Vector3d> HarmonicModel::B(const std::vector<Eigen::Vector3d>
     threads.emplace_back(work);
   }
   work();
-  for (std::thread &t : threads) {
+  for (std::thread& t : threads) {
     t.join();
   }
   return out;
 }
 
-Eigen::Vector3d HarmonicModel::B(const Eigen::Vector3d &x) const {
+Eigen::Vector3d HarmonicModel::B(const Eigen::Vector3d& x) const {
   return B(std::vector<Eigen::Vector3d>{x}).front();
 }
 

@@ -32,7 +32,7 @@ struct ShellArray {
 };
 // Validates and converts (same rules and messages as HarmonicModel); non-magnetized magnets
 // (Pattern::none) are dropped.
-ShellArray to_shell_array(const std::vector<AnalyticMagnet> &magnets);
+ShellArray to_shell_array(const std::vector<AnalyticMagnet>& magnets);
 
 struct HarmonicOptions {
   int n_max = 200;                        // highest degree n (orders m = 0..n)
@@ -46,30 +46,30 @@ public:
   // Throws std::invalid_argument (message names the magnet) for lists it cannot represent:
   // non-spherical shapes, different radii, shells not centred at the origin or rotated,
   // radial centres away from the origin, R_s <= R_o, n_max < 1.
-  HarmonicModel(const std::vector<AnalyticMagnet> &magnets, HarmonicOptions options);
+  HarmonicModel(const std::vector<AnalyticMagnet>& magnets, HarmonicOptions options);
   // The same with the boundary given as PermeableSphere (the charge model's input): at most
   // one, centred at the origin, enclosing the magnets.
-  HarmonicModel(const std::vector<AnalyticMagnet> &magnets,
-                const std::vector<PermeableSphere> &spheres, HarmonicOptions options);
+  HarmonicModel(const std::vector<AnalyticMagnet>& magnets,
+                const std::vector<PermeableSphere>& spheres, HarmonicOptions options);
 
   // Flux density (tesla) at global points. Inside the magnets B = mu0 (H + M) with the exact
   // M of the containing segment. Points beyond R_s (inside the iron) are rejected with
   // std::domain_error.
-  Eigen::Vector3d B(const Eigen::Vector3d &x) const;
-  std::vector<Eigen::Vector3d> B(const std::vector<Eigen::Vector3d> &x) const;
+  Eigen::Vector3d B(const Eigen::Vector3d& x) const;
+  std::vector<Eigen::Vector3d> B(const std::vector<Eigen::Vector3d>& x) const;
 
   int n_max() const { return options_.n_max; }
   double r_inner() const { return r_inner_; }
   double r_outer() const { return r_outer_; }
-  const ShellExpansion &expansion() const { return expansion_; }
+  const ShellExpansion& expansion() const { return expansion_; }
   double setup_seconds() const { return setup_seconds_; } // expansion time
 
 private:
   HarmonicModel(ShellArray shell, HarmonicOptions options);
   struct Group; // points sharing (rho, theta)
-  void evaluate_group(const Group &group, const std::vector<Eigen::Vector3d> &x,
-                      std::vector<Eigen::Vector3d> &out) const;
-  Eigen::Vector3d magnetization_at(const Eigen::Vector3d &x) const; // A/m
+  void evaluate_group(const Group& group, const std::vector<Eigen::Vector3d>& x,
+                      std::vector<Eigen::Vector3d>& out) const;
+  Eigen::Vector3d magnetization_at(const Eigen::Vector3d& x) const; // A/m
 
   HarmonicOptions options_;
   double r_inner_ = 0, r_outer_ = 0;

@@ -32,13 +32,13 @@ public:
   ShellRadialSolution(double r_inner, double r_outer, std::optional<double> permeable_radius);
 
   // Factors for n = 0..n_max at radius rho > 0 (rho <= R_s when bounded).
-  void evaluate(double rho, int n_max, std::vector<RadialFactors> &out) const;
+  void evaluate(double rho, int n_max, std::vector<RadialFactors>& out) const;
 
 private:
-  void add_exterior(double rho, int n_max, std::vector<RadialFactors> &out) const;
-  void add_interior(double rho, int n_max, std::vector<RadialFactors> &out) const;
-  void add_in_magnet(double rho, int n_max, std::vector<RadialFactors> &out) const;
-  void add_image(double rho, int n_max, std::vector<RadialFactors> &out) const;
+  void add_exterior(double rho, int n_max, std::vector<RadialFactors>& out) const;
+  void add_interior(double rho, int n_max, std::vector<RadialFactors>& out) const;
+  void add_in_magnet(double rho, int n_max, std::vector<RadialFactors>& out) const;
+  void add_image(double rho, int n_max, std::vector<RadialFactors>& out) const;
 
   double r_inner_, r_outer_;
   std::optional<double> r_s_;

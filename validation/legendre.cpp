@@ -56,7 +56,7 @@ const double kSmall = std::ldexp(1.0, -kStep);
 
 } // namespace
 
-void NormalizedLegendre::evaluate(double theta, LegendreValues &out) const {
+void NormalizedLegendre::evaluate(double theta, LegendreValues& out) const {
   const int nmax = n_max();
   const std::size_t size = index_.size();
   out.p.resize(size);

@@ -48,11 +48,11 @@ public:
   explicit NormalizedLegendre(int n_max);
 
   int n_max() const { return index_.n_max(); }
-  const TriangularIndex &index() const { return index_; }
+  const TriangularIndex& index() const { return index_; }
 
   // All (n, m) at polar angle theta in [0, pi]; `out` is resized as needed (reuse it to
   // avoid allocations in loops).
-  void evaluate(double theta, LegendreValues &out) const;
+  void evaluate(double theta, LegendreValues& out) const;
   LegendreValues evaluate(double theta) const;
 
 private:
