@@ -91,9 +91,8 @@ double volume_density(const ChargeDomain& d, const Vec3& x) {
   return r > 0 ? -2.0 * d.M0 * d.magnetization.sign / r : 0;
 }
 
-bool domain_has_charge(const ChargeDomain& d) {
-  if (d.dim == 3)
-    return true;
+// True if M.n (charge) or M x n (current) is nonzero somewhere on the face.
+bool face_is_loaded(const ChargeDomain& d, bool current) {
   const int n = 5;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
@@ -106,7 +105,9 @@ bool domain_has_charge(const ChargeDomain& d) {
         continue;
       const Vec3 x = d.placement.to_global(g.p);
       const Vec3 n_hat = d.placement.rotation * g.dA / a;
-      if (std::abs(d.magnetization.unit_at(x).dot(n_hat)) > 1e-12)
+      const Vec3 u_m = d.magnetization.unit_at(x);
+      const double load = current ? u_m.cross(n_hat).norm() : std::abs(u_m.dot(n_hat));
+      if (load > 1e-12)
         return true;
     }
   return false;
@@ -268,6 +269,32 @@ void check_shape(const AnalyticMagnet& magnet) {
     fail("parallel direction must be a unit vector");
 }
 
+void ChargeDomain::current_quadrature(const ParamBox& sub, const GaussRule& rule,
+                                      std::vector<PointCurrent>& out) const {
+  // The same tensor nodes as quadrature() (surfaces only).
+  const int n = rule.size();
+  std::array<std::vector<Node>, 2> nodes;
+  std::array<std::vector<double>, 2> w;
+  for (int a = 0; a < 2; ++a) {
+    const double half = 0.5 * (sub.hi[a] - sub.lo[a]);
+    const double mid = 0.5 * (sub.hi[a] + sub.lo[a]);
+    for (int i = 0; i < n; ++i) {
+      nodes[a].push_back(make_node(mid + half * rule.nodes[i]));
+      w[a].push_back(half * rule.weights[i]);
+    }
+  }
+  const double sf = std::sin(fixed), cf = std::cos(fixed);
+  const Mat3& R = placement.rotation;
+  const Node none = make_node(0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const LocalGeometry g = local_geometry(*this, nodes[0][i], nodes[1][j], none, sf, cf);
+      const Vec3 x = placement.to_global(g.p);
+      const Vec3 m = M0 * magnetization.unit_at(x);
+      out.push_back({x, m.cross(R * g.dA) * (w[0][i] * w[1][j])});
+    }
+}
+
 std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet) {
   check_shape(magnet);
   std::vector<ChargeDomain> all;
@@ -281,10 +308,26 @@ std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet) {
   for (const ChargeDomain& d : all) {
     if (d.dim == 3 && d.magnetization.pattern != Magnetization::Pattern::radial)
       continue; // div M = 0
-    if (d.dim == 2 && !domain_has_charge(d))
+    if (d.dim == 2 && !face_is_loaded(d, false))
       continue;
     kept.push_back(d);
   }
+  return kept;
+}
+
+std::vector<ChargeDomain> current_domains(const AnalyticMagnet& magnet) {
+  check_shape(magnet);
+  std::vector<ChargeDomain> all;
+  if (const auto* s = std::get_if<SphericalSegment>(&magnet.shape))
+    segment_domains(magnet, *s, all);
+  else if (const auto* c = std::get_if<Cylinder>(&magnet.shape))
+    cylinder_domains(magnet, *c, all);
+  else if (const auto* b = std::get_if<Box>(&magnet.shape))
+    box_domains(magnet, *b, all);
+  std::vector<ChargeDomain> kept;
+  for (const ChargeDomain& d : all)
+    if (d.dim == 2 && face_is_loaded(d, true))
+      kept.push_back(d);
   return kept;
 }
 

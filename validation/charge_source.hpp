@@ -18,6 +18,13 @@ struct PointCharge {
   double q;          // charge, A m (sigma dA or rho_m dV)
 };
 
+// Equivalent surface current element K dA = (M x n) dA (A m), for magnetizations without
+// curl (parallel and radial), whose B is then the Biot-Savart field of the face currents.
+struct PointCurrent {
+  Eigen::Vector3d x; // global position, metres
+  Eigen::Vector3d j; // K dA, A m
+};
+
 // Gauss-Legendre rule on [-1, 1].
 struct GaussRule {
   std::vector<double> nodes, weights;
@@ -59,6 +66,9 @@ struct ChargeDomain {
   Eigen::Vector3d point(const std::array<double, 3>& u) const;
   // Appends the point charges of the tensor Gauss rule on `sub` (a sub-box of `box`).
   void quadrature(const ParamBox& sub, const GaussRule& rule, std::vector<PointCharge>& out) const;
+  // Surface domains only: the current elements (M x dA) of the same rule.
+  void current_quadrature(const ParamBox& sub, const GaussRule& rule,
+                          std::vector<PointCurrent>& out) const;
 };
 
 // Throws std::invalid_argument (naming the magnet) for empty or inverted ranges, angles
@@ -69,6 +79,11 @@ void check_shape(const AnalyticMagnet& magnet);
 // charge vanishes identically (e.g. cone faces of a radially magnetized segment) and faces of zero
 // area (theta = 0 cones, the coinciding meridian faces of a full revolution) are dropped.
 std::vector<ChargeDomain> charge_domains(const AnalyticMagnet& magnet);
+
+// The faces of a magnet carrying surface current M x n (no volume current: curl M = 0 for
+// parallel and radial patterns). For radial magnetization about the segment's own centre
+// these are the cone and meridian faces only, which avoids the volume charge altogether.
+std::vector<ChargeDomain> current_domains(const AnalyticMagnet& magnet);
 
 // Sub-box geometry for adaptive quadrature: approximate centre and bounding radius of the
 // image of `sub`, and the parameter axis along which the image is longest.

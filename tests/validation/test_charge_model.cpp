@@ -190,6 +190,27 @@ TEST(ChargeModel, RadialOffCentreShellSegmentNetCharge) {
   EXPECT_LT(std::abs(total), 1e-10 * magnitude);
 }
 
+TEST(ChargeModel, RadialCurrentsEqualRadialCharges) {
+  // Two independent representations of radial magnetization: surface charges on the
+  // spherical faces plus the volume charge -2 M0 / rho, or surface currents M x n on the cone
+  // and meridian faces (curl M = 0). Outside and inside the magnets (B includes M there) they
+  // must agree to the quadrature tolerance, which checks the volume charge's sign and size.
+  ChargeModelOptions charges, currents;
+  charges.radial_as_currents = false;
+  charges.tolerance = currents.tolerance = 1e-7;
+  const auto array = make_benchmark32(Benchmark32Magnetization::radial);
+  const ChargeModel a(array, {}, charges), b(array, {}, currents);
+  const std::vector<Vec3> xs{Vec3(0.03, 0.02, 0.03),    Vec3(0.001, 0.002, 0.054),
+                             Vec3(0.02, -0.04, 0.025),  Vec3(0.0, 0.0, 0.02),
+                             Vec3(0.04, 0.013, -0.037), Vec3(0.05, 0.06, 0.01)};
+  const std::vector<Vec3> ba = a.B(xs), bb = b.B(xs);
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    // Inside the shell |B| ~ 1 T; 1e-6 T is the tolerance-level agreement.
+    EXPECT_LT((ba[i] - bb[i]).norm(), 1e-6) << xs[i].transpose();
+    EXPECT_LT((a.H(xs[i]) - b.H(xs[i])).norm(), 1e-6 / mu0) << xs[i].transpose();
+  }
+}
+
 TEST(ChargeModel, UniformCuboidOnAxis) {
   // Cube-like box (half sides a, b, c) magnetized along z: on the axis the caps are charged
   // rectangles, each seen under the solid angle 4 atan(ab / (d sqrt(a^2 + b^2 + d^2))), so
