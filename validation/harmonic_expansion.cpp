@@ -107,27 +107,38 @@ std::vector<Node> make_nodes(const std::vector<Band>& bands, int n_max, double s
   return nodes;
 }
 
-// Adds the theta-node contributions (sin(theta) is the area element) of one node.
-void accumulate_node(const Node& node, const Band& band, const NormalizedLegendre& legendre,
-                     LegendreValues& lv, ShellExpansion& acc) {
-  legendre.evaluate(node.theta, lv);
-  const double st = std::sin(node.theta), ct = std::cos(node.theta);
-  const double ws = node.weight * st;
-  const TriangularIndex& index = legendre.index();
-  for (int m = 0; m <= index.n_max(); ++m) {
-    const PhiProjection& p = band.proj[static_cast<std::size_t>(m)];
-    const double rc = ws * (st * p.f1c + ct * p.f2c + p.f3c);
-    const double rs = ws * (st * p.f1s + ct * p.f2s + p.f3s);
-    const double tc = ws * (ct * p.f1c - st * p.f2c);
-    const double ts = ws * (ct * p.f1s - st * p.f2s);
-    const double gc = ws * m * p.gc, gs = ws * m * p.gs;
-    const std::size_t begin = index.column_start(m);
-    const std::size_t end = begin + static_cast<std::size_t>(index.n_max() - m + 1);
-    for (std::size_t k = begin; k < end; ++k) {
-      acc.radial_cos[k] += lv.p[k] * rc;
-      acc.radial_sin[k] += lv.p[k] * rs;
-      acc.poloidal_cos[k] += lv.dp[k] * tc - lv.p_over_sin[k] * gs;
-      acc.poloidal_sin[k] += lv.dp[k] * ts + lv.p_over_sin[k] * gc;
+// Quadrature node with its band's weights folded in (sin(theta) is the area element).
+struct NodeFactors {
+  double st, ct, ws;
+  const Band* band;
+};
+
+// Column m of the projections: sum over the nodes of the integrands for n = m..n_max, with
+// the Legendre columns produced on the fly (no table in memory: the loop is compute-bound).
+void project_order(int m, std::vector<LegendreColumn>& columns,
+                   const std::vector<NodeFactors>& nodes, std::vector<double> (&buf)[3],
+                   std::vector<double> (&acc)[4]) {
+  const std::size_t len = buf[0].size() - static_cast<std::size_t>(m);
+  for (std::vector<double>& a : acc) {
+    std::fill(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(len), 0.0);
+  }
+  const double* p = buf[0].data();
+  const double* dp = buf[1].data();
+  const double* q = buf[2].data();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    columns[i].fill(buf[0].data(), buf[1].data(), buf[2].data());
+    const NodeFactors& nf = nodes[i];
+    const PhiProjection& pr = nf.band->proj[static_cast<std::size_t>(m)];
+    const double rc = nf.ws * (nf.st * pr.f1c + nf.ct * pr.f2c + pr.f3c);
+    const double rs = nf.ws * (nf.st * pr.f1s + nf.ct * pr.f2s + pr.f3s);
+    const double tc = nf.ws * (nf.ct * pr.f1c - nf.st * pr.f2c);
+    const double ts = nf.ws * (nf.ct * pr.f1s - nf.st * pr.f2s);
+    const double gc = nf.ws * m * pr.gc, gs = nf.ws * m * pr.gs;
+    for (std::size_t j = 0; j < len; ++j) {
+      acc[0][j] += p[j] * rc;
+      acc[1][j] += p[j] * rs;
+      acc[2][j] += dp[j] * tc - q[j] * gs;
+      acc[3][j] += dp[j] * ts + q[j] * gc;
     }
   }
 }
@@ -166,15 +177,42 @@ ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>&
   const std::vector<Band> bands = make_bands(segments, n_max);
   const std::vector<Node> nodes = make_nodes(bands, n_max, quadrature_scale);
   const NormalizedLegendre legendre(n_max);
-  const int n_workers = std::max(1, std::min<int>(n_threads, static_cast<int>(nodes.size())));
+  std::vector<NodeFactors> factors;
+  for (const Node& node : nodes) {
+    factors.push_back({std::sin(node.theta), std::cos(node.theta),
+                       node.weight * std::sin(node.theta), &bands[node.band]});
+  }
+  ShellExpansion total = zero_expansion(n_max);
+  const int n_workers = std::max(1, std::min(n_threads, n_max + 1));
 
-  std::vector<ShellExpansion> partial(static_cast<std::size_t>(n_workers), zero_expansion(n_max));
+  // Orders are shared out round-robin (columns get shorter with m); each worker advances
+  // every node's Legendre state through all orders and computes only its own columns.
   auto work = [&](int w) {
-    LegendreValues lv;
-    for (std::size_t i = static_cast<std::size_t>(w); i < nodes.size();
-         i += static_cast<std::size_t>(n_workers)) {
-      accumulate_node(nodes[i], bands[nodes[i].band], legendre, lv,
-                      partial[static_cast<std::size_t>(w)]);
+    std::vector<LegendreColumn> columns;
+    columns.reserve(nodes.size());
+    for (const Node& node : nodes) {
+      columns.emplace_back(legendre, node.theta);
+    }
+    const auto size = static_cast<std::size_t>(n_max) + 1;
+    std::vector<double> buf[3] = {std::vector<double>(size), std::vector<double>(size),
+                                  std::vector<double>(size)};
+    std::vector<double> acc[4] = {std::vector<double>(size), std::vector<double>(size),
+                                  std::vector<double>(size), std::vector<double>(size)};
+    for (int m = 0; m <= n_max; ++m) {
+      if (m % n_workers != w) {
+        for (LegendreColumn& c : columns) {
+          c.skip();
+        }
+        continue;
+      }
+      project_order(m, columns, factors, buf, acc);
+      const std::size_t c = total.index.column_start(m);
+      for (std::size_t j = 0; j + static_cast<std::size_t>(m) < size; ++j) {
+        total.radial_cos[c + j] = acc[0][j];
+        total.radial_sin[c + j] = acc[1][j];
+        total.poloidal_cos[c + j] = acc[2][j];
+        total.poloidal_sin[c + j] = acc[3][j];
+      }
     }
   };
   std::vector<std::thread> threads;
@@ -184,16 +222,6 @@ ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>&
   work(0);
   for (std::thread& t : threads) {
     t.join();
-  }
-
-  ShellExpansion total = std::move(partial[0]);
-  for (std::size_t w = 1; w < partial.size(); ++w) {
-    for (std::size_t k = 0; k < total.index.size(); ++k) {
-      total.radial_cos[k] += partial[w].radial_cos[k];
-      total.radial_sin[k] += partial[w].radial_sin[k];
-      total.poloidal_cos[k] += partial[w].poloidal_cos[k];
-      total.poloidal_sin[k] += partial[w].poloidal_sin[k];
-    }
   }
   normalize(total);
   return total;

@@ -208,26 +208,35 @@ struct OrderSums {
   }
 };
 
-void order_sums(const ShellExpansion& e, const LegendreValues& lv,
-                const std::vector<RadialFactors>& f, OrderSums& s) {
+// The Legendre columns are produced on the fly, one order at a time, into `col` (three
+// buffers of n_max + 1).
+void order_sums(const ShellExpansion& e, const NormalizedLegendre& legendre, double theta,
+                const std::vector<RadialFactors>& f, std::vector<double> (&col)[3], OrderSums& s) {
   const TriangularIndex& index = e.index;
-  s.resize(static_cast<std::size_t>(index.n_max()) + 1);
+  const auto size = static_cast<std::size_t>(index.n_max()) + 1;
+  s.resize(size);
+  for (std::vector<double>& c : col) {
+    c.resize(size);
+  }
+  LegendreColumn column(legendre, theta);
   for (int m = 0; m <= index.n_max(); ++m) {
+    column.fill(col[0].data(), col[1].data(), col[2].data());
     const std::size_t begin = index.column_start(m);
     double rc = 0, rs = 0, tc = 0, ts = 0, pc = 0, ps = 0;
     for (int n = m; n <= index.n_max(); ++n) {
-      const std::size_t k = begin + static_cast<std::size_t>(n - m);
+      const auto j = static_cast<std::size_t>(n - m);
+      const std::size_t k = begin + j;
       const RadialFactors& r = f[static_cast<std::size_t>(n)];
       const double c = r.alpha * e.radial_cos[k] + r.beta * e.poloidal_cos[k];
       const double sn = r.alpha * e.radial_sin[k] + r.beta * e.poloidal_sin[k];
       const double dc = r.d_alpha * e.radial_cos[k] + r.d_beta * e.poloidal_cos[k];
       const double ds = r.d_alpha * e.radial_sin[k] + r.d_beta * e.poloidal_sin[k];
-      rc += lv.p[k] * dc;
-      rs += lv.p[k] * ds;
-      tc += lv.dp[k] * c;
-      ts += lv.dp[k] * sn;
-      pc += lv.p_over_sin[k] * c;
-      ps += lv.p_over_sin[k] * sn;
+      rc += col[0][j] * dc;
+      rs += col[0][j] * ds;
+      tc += col[1][j] * c;
+      ts += col[1][j] * sn;
+      pc += col[2][j] * c;
+      ps += col[2][j] * sn;
     }
     const auto mm = static_cast<std::size_t>(m);
     s.rc[mm] = rc;
@@ -265,12 +274,11 @@ Eigen::Vector3d field_at_phi(const OrderSums& s, double rho, double theta, doubl
 
 void HarmonicModel::evaluate_group(const Group& group, const std::vector<Eigen::Vector3d>& x,
                                    std::vector<Eigen::Vector3d>& out) const {
-  thread_local LegendreValues lv;
+  thread_local std::vector<double> columns[3];
   thread_local std::vector<RadialFactors> factors;
   thread_local OrderSums sums;
-  legendre_.evaluate(group.theta, lv);
   radial_.evaluate(group.rho, options_.n_max, factors);
-  order_sums(expansion_, lv, factors, sums);
+  order_sums(expansion_, legendre_, group.theta, factors, columns, sums);
   const double r_tiny = 1e-12 * r_outer_;
   for (std::size_t i : group.points) {
     const Spherical p = to_spherical(x[i], r_tiny);

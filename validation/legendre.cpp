@@ -56,67 +56,97 @@ const double kSmall = std::ldexp(1.0, -kStep);
 
 } // namespace
 
-void NormalizedLegendre::evaluate(double theta, LegendreValues& out) const {
+void NormalizedLegendre::fill_order(int m, double x, double u, double seed, int seed_exp, double* p,
+                                    double* dp, double* q) const {
+  // Q_nm = Pbar_nm / sin(t) obeys the same recurrence in n as Pbar_nm, seeded with
+  // Q_mm = c_m sin^{m-1} t: nothing is divided by sin t and the poles are regular. While the
+  // values are below the double range they are carried as mantissa * 2^e.
   const int nmax = n_max();
-  const std::size_t size = index_.size();
-  out.p.resize(size);
-  out.dp.resize(size);
-  out.p_over_sin.resize(size);
-  const double x = std::cos(theta);
-  const double u = std::abs(std::sin(theta));
-
-  // Orders m >= 1 through Q_nm = Pbar_nm / sin(t): the same recurrence in n, seeded with
-  // Q_mm = c_m sin^{m-1} t, so nothing is divided by sin t and the poles are regular.
-  double seed = std::sqrt(3.0 / 2.0) / std::sqrt(4.0 * pi); // Q_11
-  int seed_exp = 0;
-  for (int m = 1; m <= nmax; ++m) {
-    if (m >= 2) {
-      seed *= sector_[static_cast<std::size_t>(m)] * u;
-      while (seed != 0.0 && std::abs(seed) < kSmall) {
-        seed *= kBig;
-        seed_exp -= kStep;
+  const std::size_t c = index_.column_start(m);
+  double q_prev = 0.0; // Q_{n-2,m} (scaled)
+  double q_cur = seed; // Q_{n-1,m} (scaled), starts as Q_mm
+  int e = seed_exp;
+  double out_prev = 0.0; // unscaled Q_{n-1,m}
+  for (int n = m; n <= nmax; ++n) {
+    const std::size_t j = static_cast<std::size_t>(n - m);
+    if (n > m) {
+      const double q_next = a_[c + j] * x * q_cur - b_[c + j] * q_prev;
+      q_prev = q_cur;
+      q_cur = q_next;
+      if (e < 0 && std::abs(q_cur) > kBig) {
+        q_cur *= kSmall;
+        q_prev *= kSmall;
+        e += kStep;
       }
     }
-    const std::size_t c = index_.column_start(m);
-    double q_prev = 0.0; // Q_{n-2,m} (scaled)
-    double q_cur = seed; // Q_{n-1,m} (scaled), starts as Q_mm
-    int e = seed_exp;
-    double out_prev = 0.0; // unscaled Q_{n-1,m}
-    for (int n = m; n <= nmax; ++n) {
-      const std::size_t k = c + static_cast<std::size_t>(n - m);
-      if (n > m) {
-        const double q_next = a_[k] * x * q_cur - b_[k] * q_prev;
-        q_prev = q_cur;
-        q_cur = q_next;
-        if (e < 0 && std::abs(q_cur) > kBig) {
-          q_cur *= kSmall;
-          q_prev *= kSmall;
-          e += kStep;
-        }
-      }
-      const double q = e == 0 ? q_cur : std::ldexp(q_cur, e);
-      out.p_over_sin[k] = q;
-      out.p[k] = u * q;
-      out.dp[k] = n * x * q - d_[k] * out_prev;
-      out_prev = q;
-    }
+    const double qn = e == 0 ? q_cur : std::ldexp(q_cur, e);
+    q[j] = qn;
+    p[j] = u * qn;
+    // sin(t) dP_n^m/dt = n x P_n^m - (n+m) P_{n-1}^m, normalized.
+    dp[j] = n * x * qn - d_[c + j] * out_prev;
+    out_prev = qn;
   }
+}
 
-  // Order 0: O(1) values, plain recurrence; dPbar_n0/dt = -sqrt(n(n+1)) Pbar_n1.
-  double p_prev = 0.0;
-  double p_cur = 1.0 / std::sqrt(4.0 * pi);
-  for (int n = 0; n <= nmax; ++n) {
-    const std::size_t k = static_cast<std::size_t>(n);
+void NormalizedLegendre::fill_order0(double x, double u, double* p, double* dp, double* q) const {
+  // Pbar_n0 by the plain recurrence (values O(1)); dPbar_n0/dt = -sqrt(n(n+1)) Pbar_n1, with
+  // Pbar_n1 = sin(t) Q_n1 run alongside.
+  const std::size_t c1 = index_.column_start(1);
+  double p_prev = 0.0, p_cur = 1.0 / std::sqrt(4.0 * pi);
+  double q_prev = 0.0, q_cur = std::sqrt(3.0 / 2.0) / std::sqrt(4.0 * pi); // Q_11
+  for (int n = 0; n <= n_max(); ++n) {
+    const auto k = static_cast<std::size_t>(n);
     if (n > 0) {
       const double p_next = a_[k] * x * p_cur - b_[k] * p_prev;
       p_prev = p_cur;
       p_cur = p_next;
-      out.dp[k] = -std::sqrt(static_cast<double>(n) * (n + 1)) * out.p[index_(n, 1)];
+      if (n > 1) {
+        const double q_next = a_[c1 + k - 1] * x * q_cur - b_[c1 + k - 1] * q_prev;
+        q_prev = q_cur;
+        q_cur = q_next;
+      }
+      dp[k] = -std::sqrt(static_cast<double>(n) * (n + 1)) * u * q_cur;
     } else {
-      out.dp[k] = 0.0;
+      dp[k] = 0.0;
     }
-    out.p[k] = p_cur;
-    out.p_over_sin[k] = 0.0;
+    p[k] = p_cur;
+    q[k] = 0.0;
+  }
+}
+
+void NormalizedLegendre::evaluate(double theta, LegendreValues& out) const {
+  const std::size_t size = index_.size();
+  out.p.resize(size);
+  out.dp.resize(size);
+  out.p_over_sin.resize(size);
+  LegendreColumn column(*this, theta);
+  for (int m = 0; m <= n_max(); ++m) {
+    const std::size_t c = index_.column_start(m);
+    column.fill(&out.p[c], &out.dp[c], &out.p_over_sin[c]);
+  }
+}
+
+LegendreColumn::LegendreColumn(const NormalizedLegendre& legendre, double theta)
+    : legendre_(&legendre), x_(std::cos(theta)), u_(std::abs(std::sin(theta))),
+      seed_(std::sqrt(3.0 / 2.0) / std::sqrt(4.0 * pi)) {}
+
+void LegendreColumn::fill(double* p, double* dp, double* q) {
+  if (m_ == 0) {
+    legendre_->fill_order0(x_, u_, p, dp, q);
+  } else {
+    legendre_->fill_order(m_, x_, u_, seed_, seed_exp_, p, dp, q);
+  }
+  skip();
+}
+
+void LegendreColumn::skip() {
+  ++m_;
+  if (m_ >= 2 && m_ <= legendre_->n_max()) {
+    seed_ *= legendre_->sector_[static_cast<std::size_t>(m_)] * u_;
+    while (seed_ != 0.0 && std::abs(seed_) < kSmall) {
+      seed_ *= kBig;
+      seed_exp_ -= kStep;
+    }
   }
 }
 

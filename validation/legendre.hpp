@@ -43,6 +43,8 @@ struct LegendreValues {
   std::vector<double> p_over_sin;
 };
 
+class LegendreColumn;
+
 class NormalizedLegendre {
 public:
   explicit NormalizedLegendre(int n_max);
@@ -56,11 +58,38 @@ public:
   LegendreValues evaluate(double theta) const;
 
 private:
+  friend class LegendreColumn;
+  // Column m >= 1 from the (extended-range) seed Q_mm = seed * 2^seed_exp.
+  void fill_order(int m, double x, double u, double seed, int seed_exp, double* p, double* dp,
+                  double* q) const;
+  void fill_order0(double x, double u, double* p, double* dp, double* q) const;
+
   TriangularIndex index_;
   std::vector<double> a_; // Pbar_nm = a x Pbar_{n-1,m} - b Pbar_{n-2,m}
   std::vector<double> b_;
   std::vector<double> d_;      // dPbar_nm/dt = n x Q_nm - d Q_{n-1,m}, Q = Pbar / sin t
   std::vector<double> sector_; // Pbar_mm = sector_[m] sin t Pbar_{m-1,m-1}
+};
+
+// The columns of one polar angle, produced one order at a time (m = 0, 1, ..., n_max) with
+// O(1) state: loops that run over many angles per order keep one LegendreColumn per angle
+// and never store the triangle.
+class LegendreColumn {
+public:
+  LegendreColumn(const NormalizedLegendre& legendre, double theta);
+
+  int order() const { return m_; } // the order the next fill() or skip() produces
+  // Writes p[j] = Pbar_nm, dp[j] = dPbar_nm/dtheta, q[j] = Pbar_nm / sin(theta) (0 for m = 0)
+  // for n = m + j, j = 0..n_max - m, with m = order(); then advances to m + 1.
+  void fill(double* p, double* dp, double* q);
+  void skip(); // advances without computing the column
+
+private:
+  const NormalizedLegendre* legendre_;
+  double x_, u_;
+  int m_ = 0;
+  double seed_;      // Q_mm of the current order m >= 1 (mantissa)
+  int seed_exp_ = 0; // and its binary exponent
 };
 
 // Gauss-Legendre rule on [a, b]: sum_i w_i f(x_i) is exact for polynomials of degree 2q - 1.
