@@ -130,8 +130,7 @@ void ChargeModel::build_source(const ChargeDomain& domain, const ImageMap& map, 
   const double fraction =
       domain.dim == 3 ? std::min(0.1 * options_.tolerance, 1e-3) : min_radius_fraction;
   s.min_radius = fraction * box_extent(domain, domain.box).radius;
-  s.rule = domain.dim == 3 ? &volume_rule_ : &surface_rule_;
-  s.ratio = acceptance_ratio(options_.tolerance, s.rule->size());
+  s.ratio = acceptance_ratio(options_.tolerance, rule_of(s).size());
   for (const ParamBox& b : root_boxes(domain, options_.max_angle))
     s.roots.push_back(build_node(s, b, 0));
   sources_.push_back(std::move(s));
@@ -147,11 +146,11 @@ int ChargeModel::build_node(Source& s, const ParamBox& box, int depth) {
   node.axis = e.longest_axis;
   if (s.current) {
     node.begin = static_cast<int>(s.currents.size());
-    s.domain.current_quadrature(box, *s.rule, s.currents);
+    s.domain.current_quadrature(box, rule_of(s), s.currents);
     node.end = static_cast<int>(s.currents.size());
   } else {
     node.begin = static_cast<int>(s.charges.size());
-    s.domain.quadrature(box, *s.rule, s.charges);
+    s.domain.quadrature(box, rule_of(s), s.charges);
     if (!s.map.is_identity())
       for (int i = node.begin; i < static_cast<int>(s.charges.size()); ++i)
         s.charges[i] = s.map.apply(s.charges[i]);
@@ -194,6 +193,10 @@ void ChargeModel::add_compensation() {
       point_charges_.push_back({spheres_[k].center, -net[k]});
 }
 
+const GaussRule& ChargeModel::rule_of(const Source& s) const {
+  return s.domain.dim == 3 ? volume_rule_ : surface_rule_;
+}
+
 bool ChargeModel::far_enough(const Source& s, const Vec3& centre, double radius,
                              const Vec3& x_pre) {
   return radius <= s.min_radius || (x_pre - centre).norm() >= s.ratio * radius;
@@ -232,13 +235,13 @@ void ChargeModel::accumulate_box(const Source& s, const ParamBox& box, int axis,
     }
     if (s.current) {
       acc.currents.clear();
-      s.domain.current_quadrature(half, *s.rule, acc.currents);
+      s.domain.current_quadrature(half, rule_of(s), acc.currents);
       add_current_kernel(acc.currents.data(), acc.currents.data() + acc.currents.size(), x,
                          acc.h_currents);
       continue;
     }
     acc.charges.clear();
-    s.domain.quadrature(half, *s.rule, acc.charges);
+    s.domain.quadrature(half, rule_of(s), acc.charges);
     if (!s.map.is_identity())
       for (PointCharge& p : acc.charges)
         p = s.map.apply(p);

@@ -80,8 +80,7 @@ private:
     std::vector<PointCharge> charges;   // image space
     std::vector<PointCurrent> currents; // originals only
     double min_radius = 0;              // boxes smaller than this are never split
-    const GaussRule* rule = nullptr;
-    double ratio = 2; // acceptance distance / radius for `rule`
+    double ratio = 2;                   // acceptance distance / radius for its Gauss rule
   };
 
   void check_spheres() const;
@@ -105,6 +104,8 @@ private:
                       Accumulator& acc) const;
   Accumulator evaluate(const Eigen::Vector3d& x) const;
   std::pair<Eigen::Vector3d, Eigen::Vector3d> split_magnetization(const Eigen::Vector3d& x) const;
+  // By lookup, not a stored pointer, so that the model stays copyable.
+  const GaussRule& rule_of(const Source& s) const;
   static bool far_enough(const Source& s, const Eigen::Vector3d& centre, double radius,
                          const Eigen::Vector3d& x_pre);
   template <class F>

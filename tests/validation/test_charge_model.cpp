@@ -2,6 +2,7 @@
 // cylinder on its axis, divergence theorem for radial magnetization, and the thesis's
 // radial-vs-parallel amplitude statement on the 32-magnet benchmark.
 #include <cmath>
+#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -93,6 +94,18 @@ TEST(ChargeModel, PlacedSphereAndSuperposition) {
     const Vec3 exact = sphere_field(x, c, a, d, 1.2);
     EXPECT_LT((model.B(x) - exact).norm(), sphere_tol * exact.norm()) << p.transpose();
   }
+}
+
+TEST(ChargeModel, CopyOutlivesOriginal) {
+  // Models are values (e.g. stored in containers): a copy must not refer to the original.
+  const double a = 0.01;
+  const Vec3 d = Vec3::UnitZ(), x(0.004, 0.003, 0.012);
+  auto original = std::make_unique<ChargeModel>(
+      std::vector<AnalyticMagnet>{segment(0, a, 0, pi, 0, 2 * pi, d, 1.0)});
+  const Vec3 expected = original->B(x);
+  const ChargeModel copy = *original;
+  original.reset();
+  EXPECT_EQ(copy.B(x), expected);
 }
 
 TEST(ChargeModel, AxialCylinderOnAxis) {
