@@ -2,13 +2,14 @@
 // Where the user wants the field sampled. Coordinates in metres, angles in radians (the case
 // reader converts); the CSV writer converts back to the case's length unit and degrees.
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
 namespace magfem {
 
 struct ProbeSpec {
-  enum class Kind { line, circle, sphere };
+  enum class Kind { line, circle, sphere, points };
   std::string name;
   Kind kind = Kind::line;
   // line: `points` samples from start to end inclusive
@@ -21,6 +22,8 @@ struct ProbeSpec {
   double angle_start = 0, angle_end = 0;
   double theta_min = 0, theta_max = 0, phi_min = 0, phi_max = 0;
   int points = 0;
+  // points (3D): an explicit list of sample points
+  std::vector<Eigen::Vector3d> point_list;
   int theta_steps = 0, phi_steps = 0;
   int line = 0; // line in the case file, for messages
 };

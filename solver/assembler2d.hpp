@@ -40,9 +40,9 @@ private:
   const Problem2D& problem_;
   const DofMap2D& dofs_;
   ShellTransform shell_;
+  int n_eqs_; // set by the initializer of dof_to_eq_, hence declared before it
   std::vector<int> dof_to_eq_;
   std::vector<int> element_eqs_;
-  int n_eqs_ = 0;
   bool linear_ = true;
   SparsePattern pattern_;
   double load_norm_ = 0;

@@ -17,6 +17,9 @@ public:
   Eigen::SparseMatrix<double> zero_matrix() const { return matrix_; }
   // Adds the element matrix ke (per_element x per_element, row major, full) of element e.
   void add(Eigen::SparseMatrix<double>& m, std::size_t e, const double* ke) const;
+  // Scatter table of element e: per_element^2 indices into valuePtr (-1 = not stored), row
+  // major like ke. For callers that scatter concurrently (atomic adds).
+  const int* slots(std::size_t e) const { return &slot_[e * per_element_ * per_element_]; }
 
 private:
   int per_element_;

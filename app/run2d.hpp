@@ -1,0 +1,52 @@
+#pragma once
+// The 2D pipeline, stage by stage: case -> mesh -> problem -> assemble/solve -> postprocess.
+// A library (not just main) so that tests run whole cases in-process.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "casefile/case_spec.hpp"
+#include "mesh/mesh2d.hpp"
+#include "postproc/energy2d.hpp"
+#include "postproc/field2d.hpp"
+#include "postproc/probe_table.hpp"
+#include "solver/dof_map2d.hpp"
+#include "solver/newton.hpp"
+#include "solver/problem2d.hpp"
+
+namespace magfem {
+
+struct Timings {
+  double mesh = 0, assemble = 0, solve = 0, postprocess = 0, total = 0;
+};
+
+// Command-line overrides of case settings (refinement studies, quick checks).
+struct RunOverrides {
+  int order = 0;           // 0 = as in the case
+  double mesh_scale = 0;   // 0 = as in the case; multiplies every mesh size
+  double domain_radius = 0; // metres; 0 = as in the case
+};
+
+struct Run2D {
+  CaseSpec spec;
+  Mesh2D mesh;
+  std::unique_ptr<DofMap2D> dofs;
+  Problem2D problem;
+  std::unique_ptr<Field2D> field;
+  NewtonReport report;
+  EnergySummary2D energy;
+  std::vector<ProbeTable> probes;
+  Timings timings;
+};
+
+// Meshes and solves; throws InputError (bad case), SolveError (no convergence).
+std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});
+
+// Writes summary.json, one CSV per probe and solution.vtu, all-or-nothing.
+void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir);
+
+// Prints the short human summary.
+std::string describe_run_2d(const Run2D& run);
+
+} // namespace magfem

@@ -1,0 +1,46 @@
+#pragma once
+// Everything a case file says, validated and converted to SI units (metres, radians, tesla,
+// A/m^2). Built by read_case(); consumed by the mesh, solver and postprocessing stages.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "materials/magnetization.hpp"
+#include "materials/material.hpp"
+#include "mesh/geometry2d.hpp"
+#include "mesh/geometry3d.hpp"
+#include "postproc/probe_spec.hpp"
+#include "solver/newton.hpp"
+
+namespace magfem {
+
+struct RegionSpec {
+  std::string name;
+  const Material* material = nullptr; // resolved: case materials or the bundled library
+  Magnetization magnetization;
+  double current_density = 0; // A/m^2 along +z
+  double ampere_turns = 0;    // if non-zero, J = ampere_turns / meshed area of the region
+  int line = 0;               // line of the region in the case file
+};
+
+struct CaseSpec {
+  std::string file;
+  int dimension = 2;
+  std::string unit_name = "mm";
+  double length_unit = 1e-3; // metres per case length unit
+  std::map<std::string, Material> materials;
+  std::vector<RegionSpec> regions; // parallel to geometry2d.parts or geometry3d.parts
+  Geometry2D geometry2d;           // dimension 2
+  Geometry3D geometry3d;           // dimension 3
+  int order = 2;
+  NewtonOptions newton;
+  std::vector<ProbeSpec> probes;
+  bool write_vtu = true;
+  double stack_length = 0; // metres; 0 = report per unit length
+  int boundary_line = 0;
+};
+
+// Reads and validates a case file. Every problem is an InputError naming file, line, field.
+CaseSpec read_case(const std::string& path);
+
+} // namespace magfem

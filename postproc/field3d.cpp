@@ -1,0 +1,89 @@
+#include "postproc/field3d.hpp"
+
+#include "core/constants.hpp"
+#include "solver/tet_lagrange.hpp"
+
+namespace magfem {
+
+Field3D::Field3D(const Problem3D& problem, const DofMap3D& dofs, Eigen::VectorXd phi_full)
+    : problem_(problem), dofs_(dofs), phi_(std::move(phi_full)) {}
+
+Eigen::Vector3d Field3D::point(std::size_t t, const std::array<double, 4>& bary) const {
+  const auto& tet = problem_.mesh->tets[t];
+  const auto& p = problem_.mesh->nodes;
+  return bary[0] * p[tet[0]] + bary[1] * p[tet[1]] + bary[2] * p[tet[2]] + bary[3] * p[tet[3]];
+}
+
+double Field3D::potential(std::size_t t, const std::array<double, 4>& bary) const {
+  std::array<double, 10> n{};
+  const int count = tet_values(dofs_.order(), bary, n.data());
+  const int* dof = dofs_.element_dofs(t);
+  double v = 0;
+  for (int i = 0; i < count; ++i) v += phi_[dof[i]] * n[i];
+  return v;
+}
+
+Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) const {
+  const auto& tet = problem_.mesh->tets[t];
+  const auto& p = problem_.mesh->nodes;
+  const auto g = TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]);
+  std::array<Eigen::Vector3d, 10> grad;
+  const int count = tet_gradients(dofs_.order(), g, bary, grad.data());
+  const int* dof = dofs_.element_dofs(t);
+  Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i) grad_phi += phi_[dof[i]] * grad[i];
+  return -grad_phi;
+}
+
+Eigen::Vector3d Field3D::magnetization(std::size_t t, const Eigen::Vector3d& x) const {
+  const auto& phys = problem_.physics(problem_.mesh->tet_part[t]);
+  if (!phys.material->is_magnet()) return Eigen::Vector3d::Zero();
+  return phys.material->B_r / mu0 * phys.magnetization.unit_at(x);
+}
+
+Eigen::Vector3d Field3D::B_of_H(std::size_t t, const Eigen::Vector3d& x,
+                                const Eigen::Vector3d& h) const {
+  const auto& phys = problem_.physics(problem_.mesh->tet_part[t]);
+  double mu = 0, dmu = 0;
+  phys.material->permeability(h.squaredNorm(), mu, dmu);
+  Eigen::Vector3d b = mu * h;
+  if (phys.material->is_magnet()) b += phys.material->B_r * phys.magnetization.unit_at(x);
+  return b;
+}
+
+Eigen::Vector3d Field3D::B(std::size_t t, const std::array<double, 4>& bary) const {
+  return B_of_H(t, point(t, bary), H(t, bary));
+}
+
+std::vector<Eigen::Vector3d> Field3D::recovered_B() const {
+  const auto& mesh = *problem_.mesh;
+  std::vector<Eigen::Vector3d> sum(dofs_.n_dofs(), Eigen::Vector3d::Zero());
+  std::vector<double> weight(dofs_.n_dofs(), 0.0);
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+    if (problem_.is_shell(t)) continue;
+    const auto& tet = mesh.tets[t];
+    const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]],
+                                       mesh.nodes[tet[2]], mesh.nodes[tet[3]])
+                           .volume;
+    const int* dof = dofs_.element_dofs(t);
+    for (int i = 0; i < dofs_.dofs_per_element(); ++i) {
+      sum[dof[i]] += vol * B(t, tet_dof_nodes[i]);
+      weight[dof[i]] += vol;
+    }
+  }
+  for (std::size_t i = 0; i < sum.size(); ++i)
+    if (weight[i] > 0) sum[i] /= weight[i];
+  return sum;
+}
+
+Eigen::Vector3d Field3D::interpolate(const std::vector<Eigen::Vector3d>& nodal, std::size_t t,
+                                     const std::array<double, 4>& bary) const {
+  std::array<double, 10> n{};
+  const int count = tet_values(dofs_.order(), bary, n.data());
+  const int* dof = dofs_.element_dofs(t);
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i) v += n[i] * nodal[dof[i]];
+  return v;
+}
+
+} // namespace magfem

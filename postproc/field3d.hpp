@@ -1,0 +1,50 @@
+#pragma once
+// The solved 3D field: the scalar potential phi at every DOF, evaluated per element as the FE
+// solution itself (H = -grad phi and B = mu H + B_r m_hat are discontinuous across elements)
+// or recovered at the DOF nodes by volume-weighted averaging (smooth, for plots, VTU point
+// data and probes that want a continuous field). Shell tets (mapped exterior) are not
+// physical space: B and H there are not evaluated by the recovery, the locator skips them.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/dof_map3d.hpp"
+#include "solver/problem3d.hpp"
+
+namespace magfem {
+
+class Field3D {
+public:
+  // phi_full: the potential at every DOF (A), e.g. Assembler3D::expand(u).
+  Field3D(const Problem3D& problem, const DofMap3D& dofs, Eigen::VectorXd phi_full);
+
+  const Problem3D& problem() const { return problem_; }
+  const DofMap3D& dofs() const { return dofs_; }
+  const Eigen::VectorXd& phi() const { return phi_; }
+
+  double potential(std::size_t t, const std::array<double, 4>& bary) const;
+  // H = -grad phi in A/m.
+  Eigen::Vector3d H(std::size_t t, const std::array<double, 4>& bary) const;
+  // B = mu(|H|^2) H + B_r m_hat(x) in T, from the region's law.
+  Eigen::Vector3d B(std::size_t t, const std::array<double, 4>& bary) const;
+  Eigen::Vector3d B_of_H(std::size_t t, const Eigen::Vector3d& x, const Eigen::Vector3d& h) const;
+  // Remanent magnetization M0 = B_r m_hat / mu0 (A/m) at x in tet t; zero outside magnets.
+  Eigen::Vector3d magnetization(std::size_t t, const Eigen::Vector3d& x) const;
+  Eigen::Vector3d point(std::size_t t, const std::array<double, 4>& bary) const;
+
+  // Volume-weighted average of the element B values at every DOF point (shell excluded;
+  // DOFs touched only by the shell get zero). Computed once and cached by the caller.
+  std::vector<Eigen::Vector3d> recovered_B() const;
+  // Interpolates nodal values (one per DOF, e.g. recovered_B()) at a point of tet t with the
+  // element's shape functions.
+  Eigen::Vector3d interpolate(const std::vector<Eigen::Vector3d>& nodal, std::size_t t,
+                              const std::array<double, 4>& bary) const;
+
+private:
+  const Problem3D& problem_;
+  const DofMap3D& dofs_;
+  Eigen::VectorXd phi_;
+};
+
+} // namespace magfem

@@ -1,0 +1,89 @@
+#include "postproc/point_locator3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace magfem {
+
+PointLocator3D::PointLocator3D(const Mesh3D& mesh) : mesh_(mesh) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  std::size_t n_physical = 0;
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+    if (mesh.tet_part[t] == region_shell_3d) continue;
+    ++n_physical;
+    for (int k = 0; k < 4; ++k) {
+      lo = lo.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
+      hi = hi.cwiseMax(mesh.nodes[mesh.tets[t][k]]);
+    }
+  }
+  if (n_physical == 0) lo = hi = Eigen::Vector3d::Zero();
+  // About two tets per bucket keeps queries O(1).
+  const double cells = std::max(1.0, static_cast<double>(n_physical) / 2.0);
+  const Eigen::Vector3d extent = (hi - lo).cwiseMax(1e-30);
+  const double h = std::cbrt(extent.prod() / cells);
+  for (int k = 0; k < 3; ++k) n_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, 2048);
+  lo_ = lo;
+  cell_size_ = {extent.x() / n_[0], extent.y() / n_[1], extent.z() / n_[2]};
+
+  // Two passes (count, then fill) into CSR storage: no per-bucket allocations.
+  const std::size_t n_buckets = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
+  start_.assign(n_buckets + 1, 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<int> fill;
+    if (pass == 1) {
+      for (std::size_t b = 0; b < n_buckets; ++b) start_[b + 1] += start_[b];
+      items_.resize(start_[n_buckets]);
+      fill.assign(start_.begin(), start_.end() - 1);
+    }
+    for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+      if (mesh.tet_part[t] == region_shell_3d) continue;
+      Eigen::Vector3d a = mesh.nodes[mesh.tets[t][0]], b = a;
+      for (int k = 1; k < 4; ++k) {
+        a = a.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
+        b = b.cwiseMax(mesh.nodes[mesh.tets[t][k]]);
+      }
+      const auto c0 = cell_of(a), c1 = cell_of(b);
+      for (int k = c0[2]; k <= c1[2]; ++k)
+        for (int j = c0[1]; j <= c1[1]; ++j)
+          for (int i = c0[0]; i <= c1[0]; ++i) {
+            const std::size_t bi = bucket_index({i, j, k});
+            if (pass == 0)
+              ++start_[bi + 1];
+            else
+              items_[fill[bi]++] = static_cast<int>(t);
+          }
+    }
+  }
+}
+
+std::array<int, 3> PointLocator3D::cell_of(const Eigen::Vector3d& x) const {
+  std::array<int, 3> c;
+  for (int k = 0; k < 3; ++k)
+    c[k] = std::clamp(static_cast<int>(std::floor((x[k] - lo_[k]) / cell_size_[k])), 0, n_[k] - 1);
+  return c;
+}
+
+std::optional<PointLocation3D> PointLocator3D::locate(const Eigen::Vector3d& x) const {
+  const std::size_t b = bucket_index(cell_of(x));
+  std::optional<PointLocation3D> best;
+  double best_min = -0.05;
+  for (int i = start_[b]; i < start_[b + 1]; ++i) {
+    const auto& tet = mesh_.tets[items_[i]];
+    const Eigen::Vector3d p0 = mesh_.nodes[tet[0]];
+    Eigen::Matrix3d j;
+    j << mesh_.nodes[tet[1]] - p0, mesh_.nodes[tet[2]] - p0, mesh_.nodes[tet[3]] - p0;
+    const Eigen::Vector3d l = j.inverse() * (x - p0);
+    const double l0 = 1 - l.sum();
+    const double m = std::min({l0, l.x(), l.y(), l.z()});
+    if (m >= best_min) {
+      best_min = m;
+      best = PointLocation3D{static_cast<std::size_t>(items_[i]), {l0, l.x(), l.y(), l.z()}};
+      if (m >= 0) break; // inside: no other tet can do better than a containing one
+    }
+  }
+  return best;
+}
+
+} // namespace magfem

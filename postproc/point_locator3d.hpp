@@ -1,0 +1,38 @@
+#pragma once
+// Finds the tetrahedron containing a point (uniform bucket grid over the bounding box of the
+// physical tets). Shell tets are skipped: probes sample the physical domain only. A point a
+// hair outside the faceted boundary of the domain (a probe on the exact sphere) is given to
+// the nearest tet of its bucket; further out it is reported as not found.
+#include <array>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh/mesh3d.hpp"
+
+namespace magfem {
+
+struct PointLocation3D {
+  std::size_t tet;
+  std::array<double, 4> bary;
+};
+
+class PointLocator3D {
+public:
+  explicit PointLocator3D(const Mesh3D& mesh);
+  std::optional<PointLocation3D> locate(const Eigen::Vector3d& x) const;
+
+private:
+  std::array<int, 3> cell_of(const Eigen::Vector3d& x) const;
+  std::size_t bucket_index(const std::array<int, 3>& c) const {
+    return (static_cast<std::size_t>(c[2]) * n_[1] + c[1]) * n_[0] + c[0];
+  }
+  const Mesh3D& mesh_;
+  Eigen::Vector3d lo_, cell_size_;
+  std::array<int, 3> n_ = {1, 1, 1};
+  std::vector<int> start_; // CSR buckets: tets of bucket b are items_[start_[b]..start_[b+1])
+  std::vector<int> items_;
+};
+
+} // namespace magfem

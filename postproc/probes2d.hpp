@@ -1,0 +1,18 @@
+#pragma once
+// Sampling of the 2D field on line and circle probes. CSV contract (other tools read it):
+//   line:   x,y,Bx,By
+//   circle: angle_deg,x,y,Bx,By,Br,Bt   (Br radial, Bt tangential = counter-clockwise)
+// Coordinates in the case's length unit, B in tesla. Values are the FE field of the element
+// containing the point.
+#include "postproc/field2d.hpp"
+#include "postproc/point_locator2d.hpp"
+#include "postproc/probe_spec.hpp"
+#include "postproc/probe_table.hpp"
+
+namespace magfem {
+
+// Throws std::runtime_error naming the probe if a point lies outside the meshed domain.
+ProbeTable sample_probe_2d(const Field2D& field, const PointLocator2D& locator,
+                           const ProbeSpec& probe, double length_unit);
+
+} // namespace magfem

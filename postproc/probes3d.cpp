@@ -1,0 +1,85 @@
+#include "postproc/probes3d.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/constants.hpp"
+
+namespace magfem {
+namespace {
+
+double sample(double lo, double hi, int i, int n) {
+  return n <= 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (n - 1);
+}
+
+struct SpherePoint {
+  double theta, phi;
+  Eigen::Vector3d e_rho, e_theta, e_phi;
+};
+
+SpherePoint sphere_point(double theta, double phi) {
+  const double st = std::sin(theta), ct = std::cos(theta), sp = std::sin(phi), cp = std::cos(phi);
+  return {theta, phi, {st * cp, st * sp, ct}, {ct * cp, ct * sp, -st}, {-sp, cp, 0}};
+}
+
+std::vector<SpherePoint> sphere_samples(const ProbeSpec& p) {
+  std::vector<SpherePoint> out;
+  for (int i = 0; i < p.theta_steps; ++i)
+    for (int j = 0; j < p.phi_steps; ++j)
+      out.push_back(sphere_point(sample(p.theta_min, p.theta_max, i, p.theta_steps),
+                                 sample(p.phi_min, p.phi_max, j, p.phi_steps)));
+  return out;
+}
+
+} // namespace
+
+std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe) {
+  std::vector<Eigen::Vector3d> pts;
+  switch (probe.kind) {
+  case ProbeSpec::Kind::line:
+    for (int i = 0; i < probe.points; ++i)
+      pts.push_back(probe.start + sample(0, 1, i, probe.points) * (probe.end - probe.start));
+    break;
+  case ProbeSpec::Kind::points:
+    pts = probe.point_list;
+    break;
+  case ProbeSpec::Kind::sphere:
+    for (const auto& s : sphere_samples(probe)) pts.push_back(probe.center + probe.radius * s.e_rho);
+    break;
+  case ProbeSpec::Kind::circle:
+    throw std::invalid_argument("probe '" + probe.name + "': circle probes are 2D only");
+  }
+  return pts;
+}
+
+ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
+                           const ProbeSpec& probe, double length_unit,
+                           const std::vector<Eigen::Vector3d>* recovered_B) {
+  const std::vector<Eigen::Vector3d> pts = probe_points_3d(probe);
+  ProbeTable table;
+  table.name = probe.name;
+  const bool sphere = probe.kind == ProbeSpec::Kind::sphere;
+  if (sphere)
+    table.columns = {"theta_deg", "phi_deg", "x", "y", "z", "Bx", "By", "Bz", "Brho", "Btheta", "Bphi"};
+  else
+    table.columns = {"x", "y", "z", "Bx", "By", "Bz"};
+  const std::vector<SpherePoint> s = sphere ? sphere_samples(probe) : std::vector<SpherePoint>{};
+  table.rows.reserve(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const auto loc = locator.locate(pts[k]);
+    if (!loc) throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
+    const Eigen::Vector3d b = recovered_B ? field.interpolate(*recovered_B, loc->tet, loc->bary)
+                                          : field.B(loc->tet, loc->bary);
+    const Eigen::Vector3d x = pts[k] / length_unit;
+    if (!sphere) {
+      table.rows.push_back({x.x(), x.y(), x.z(), b.x(), b.y(), b.z()});
+      continue;
+    }
+    table.rows.push_back({s[k].theta * rad_to_deg, s[k].phi * rad_to_deg, x.x(), x.y(), x.z(),
+                          b.x(), b.y(), b.z(), b.dot(s[k].e_rho), b.dot(s[k].e_theta),
+                          b.dot(s[k].e_phi)});
+  }
+  return table;
+}
+
+} // namespace magfem

@@ -1,0 +1,47 @@
+#include "postproc/vtu_export2d.hpp"
+
+namespace magfem {
+
+VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_part, int air_material,
+                    const std::vector<std::string>& material_names) {
+  const auto& problem = field.problem();
+  const auto& mesh = *problem.mesh;
+  const auto& dofs = field.dofs();
+  VtuGrid g;
+  g.material_names = material_names;
+  for (const auto& p : dofs.dof_points()) g.points.emplace_back(p.x(), p.y(), 0.0);
+
+  const auto b_nodes = field.recovered_B();
+  VtuArray a{"A_z", 1, {}}, bp{"B", 3, {}}, bpm{"|B|", 1, {}};
+  for (int i = 0; i < dofs.n_dofs(); ++i) {
+    a.values.push_back(field.a()[i]);
+    bp.values.insert(bp.values.end(), {b_nodes[i].x(), b_nodes[i].y(), 0.0});
+    bpm.values.push_back(b_nodes[i].norm());
+  }
+  g.point_data = {a, bp, bpm};
+
+  VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"B", 3, {}},
+      bcm{"|B|", 1, {}}, hc{"H", 3, {}};
+  const int per = dofs.dofs_per_element();
+  const int type = dofs.order() == 1 ? 5 : 22;
+  for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
+    if (problem.is_shell(t)) continue;
+    const int* dof = dofs.element_dofs(t);
+    g.connectivity.insert(g.connectivity.end(), dof, dof + per);
+    g.offsets.push_back(static_cast<int>(g.connectivity.size()));
+    g.cell_types.push_back(type);
+    const int part = mesh.triangle_part[t];
+    region.values.push_back(part);
+    material.values.push_back(part >= 0 ? material_of_part[part] : air_material);
+    const std::array<double, 3> centroid = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+    const Eigen::Vector2d b = field.B(t, centroid);
+    const Eigen::Vector2d h = field.H(t, field.point(t, centroid), b);
+    bc.values.insert(bc.values.end(), {b.x(), b.y(), 0.0});
+    bcm.values.push_back(b.norm());
+    hc.values.insert(hc.values.end(), {h.x(), h.y(), 0.0});
+  }
+  g.cell_data = {region, material, bc, bcm, hc};
+  return g;
+}
+
+} // namespace magfem

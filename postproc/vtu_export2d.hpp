@@ -1,0 +1,18 @@
+#pragma once
+// The 2D solution as a VtuGrid: quadratic triangles for order 2. Point data: A_z, recovered
+// B, |B|; cell data (at the centroid): region_id, material_id, B, |B|, H. The open-boundary
+// shell is left out (its coordinates are not physical).
+#include <string>
+#include <vector>
+
+#include "postproc/field2d.hpp"
+#include "postproc/vtu_writer.hpp"
+
+namespace magfem {
+
+// material_of_part: index into material_names for every part; background air uses
+// air_material.
+VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_part, int air_material,
+                    const std::vector<std::string>& material_names);
+
+} // namespace magfem

@@ -1,0 +1,51 @@
+#include "postproc/vtu_export3d.hpp"
+
+namespace magfem {
+
+VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& recovered_B,
+                    const std::vector<int>& material_of_part, int air_material,
+                    const std::vector<std::string>& material_names) {
+  const auto& problem = field.problem();
+  const auto& mesh = *problem.mesh;
+  const auto& dofs = field.dofs();
+  VtuGrid g;
+  g.material_names = material_names;
+  g.points = dofs.dof_points();
+
+  VtuArray phi{"phi", 1, {}}, bp{"B", 3, {}}, bpm{"|B|", 1, {}};
+  phi.values.assign(field.phi().data(), field.phi().data() + field.phi().size());
+  bp.values.reserve(3 * recovered_B.size());
+  for (const auto& b : recovered_B) {
+    bp.values.insert(bp.values.end(), {b.x(), b.y(), b.z()});
+    bpm.values.push_back(b.norm());
+  }
+  g.point_data = {std::move(phi), std::move(bp), std::move(bpm)};
+
+  VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"B", 3, {}},
+      bcm{"|B|", 1, {}}, hc{"H", 3, {}}, mc{"magnetization", 3, {}};
+  const int per = dofs.dofs_per_element();
+  const int type = dofs.order() == 1 ? 10 : 24;
+  const std::array<double, 4> centroid = {0.25, 0.25, 0.25, 0.25};
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+    if (problem.is_shell(t)) continue;
+    const int* dof = dofs.element_dofs(t);
+    g.connectivity.insert(g.connectivity.end(), dof, dof + per);
+    g.offsets.push_back(static_cast<int>(g.connectivity.size()));
+    g.cell_types.push_back(type);
+    const int part = mesh.tet_part[t];
+    region.values.push_back(part);
+    material.values.push_back(part >= 0 ? material_of_part[part] : air_material);
+    const Eigen::Vector3d x = field.point(t, centroid);
+    const Eigen::Vector3d h = field.H(t, centroid);
+    const Eigen::Vector3d b = field.B_of_H(t, x, h);
+    const Eigen::Vector3d m = field.magnetization(t, x);
+    bc.values.insert(bc.values.end(), {b.x(), b.y(), b.z()});
+    bcm.values.push_back(b.norm());
+    hc.values.insert(hc.values.end(), {h.x(), h.y(), h.z()});
+    mc.values.insert(mc.values.end(), {m.x(), m.y(), m.z()});
+  }
+  g.cell_data = {region, material, bc, bcm, hc, mc};
+  return g;
+}
+
+} // namespace magfem

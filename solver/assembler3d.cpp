@@ -1,0 +1,184 @@
+#include "solver/assembler3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <thread>
+
+#include "core/constants.hpp"
+#include "solver/tet_lagrange.hpp"
+#include "solver/tet_quadrature.hpp"
+
+namespace magfem {
+namespace {
+
+std::vector<int> constrained_dofs(const Problem3D& problem, const DofMap3D& dofs) {
+  if (problem.boundary == OuterKind3D::neumann) return {0}; // gauge: phi up to a constant
+  return dofs.dofs_on_faces(problem.mesh->outer_faces);
+}
+
+bool problem_is_linear(const Problem3D& problem) {
+  for (const auto& p : problem.parts)
+    if (p.material->is_nonlinear()) return false;
+  return !problem.air.material->is_nonlinear();
+}
+
+std::vector<int> number_equations(int n_dofs, const std::vector<int>& constrained, int& n_eqs) {
+  std::vector<int> map(n_dofs, 0);
+  for (int d : constrained) map[d] = -1;
+  n_eqs = 0;
+  for (int& m : map)
+    if (m == 0) m = n_eqs++;
+  return map;
+}
+
+std::vector<int> equations_of_elements(const Mesh3D& mesh, const DofMap3D& dofs,
+                                       const std::vector<int>& dof_to_eq) {
+  const int per = dofs.dofs_per_element();
+  std::vector<int> eqs(mesh.n_tets() * per);
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t)
+    for (int i = 0; i < per; ++i) eqs[t * per + i] = dof_to_eq[dofs.element_dofs(t)[i]];
+  return eqs;
+}
+
+inline void add_to(double& target, double value, bool atomic) {
+  if (atomic)
+    std::atomic_ref<double>(target).fetch_add(value, std::memory_order_relaxed);
+  else
+    target += value;
+}
+
+} // namespace
+
+Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs,
+                         AssemblyOptions3D options)
+    : problem_(problem), dofs_(dofs), options_(options),
+      shell_{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius},
+      dof_to_eq_(number_equations(dofs.n_dofs(), constrained_dofs(problem, dofs), n_eqs_)),
+      element_eqs_(equations_of_elements(*problem.mesh, dofs, dof_to_eq_)),
+      linear_(problem_is_linear(problem)),
+      pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
+  if (options_.threads <= 0)
+    options_.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  // The residual at phi = 0 is minus the external load (the remanence).
+  Eigen::VectorXd r;
+  evaluate(Eigen::VectorXd::Zero(n_eqs_), r, nullptr, TangentKind::newton);
+  load_norm_ = r.norm();
+}
+
+Eigen::VectorXd Assembler3D::expand(const Eigen::VectorXd& u) const {
+  Eigen::VectorXd phi = Eigen::VectorXd::Zero(dofs_.n_dofs());
+  for (int d = 0; d < dofs_.n_dofs(); ++d)
+    if (dof_to_eq_[d] >= 0) phi[d] = u[dof_to_eq_[d]];
+  return phi;
+}
+
+Eigen::VectorXd Assembler3D::restrict_to_free(const Eigen::VectorXd& phi_full) const {
+  Eigen::VectorXd u(n_eqs_);
+  for (int d = 0; d < dofs_.n_dofs(); ++d)
+    if (dof_to_eq_[d] >= 0) u[dof_to_eq_[d]] = phi_full[d];
+  return u;
+}
+
+void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double* re, double* ke,
+                          TangentKind kind) const {
+  const auto& mesh = *problem_.mesh;
+  const auto& tet = mesh.tets[t];
+  const auto& nodes = mesh.nodes;
+  const auto g = TetGeometry::of(nodes[tet[0]], nodes[tet[1]], nodes[tet[2]], nodes[tet[3]]);
+  const int order = dofs_.order();
+  const int n = dofs_.dofs_per_element();
+  const int* dof = dofs_.element_dofs(t);
+  const bool in_shell = problem_.is_shell(t);
+  const RegionPhysics3D& phys = problem_.physics(mesh.tet_part[t]);
+  const Material& mat = *phys.material;
+  const bool radial = mat.is_magnet() && phys.magnetization.pattern == Magnetization::Pattern::radial;
+  // grad N_i . grad N_j has degree 2(order-1); the shell metric, nonlinear laws and radial
+  // remanence are not polynomial and get the degree-5 rule.
+  const int degree = (in_shell || mat.is_nonlinear() || radial) ? 5 : 2 * (order - 1);
+
+  std::fill(re, re + n, 0.0);
+  if (ke) std::fill(ke, ke + n * n, 0.0);
+  std::array<Eigen::Vector3d, 10> grad, dgrad;
+  for (const auto& q : tet_rule(degree)) {
+    tet_gradients(order, g, q.bary, grad.data());
+    const double w = q.weight * g.volume;
+    Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
+    for (int i = 0; i < n; ++i) grad_phi += phi_full[dof[i]] * grad[i];
+    Eigen::Matrix3d d;
+    Eigen::Vector3d flux; // -B (or its shell-metric counterpart)
+    if (in_shell) {
+      Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 4; ++k) x += q.bary[k] * nodes[tet[k]];
+      // Air in the mapped exterior: -B' = mu0 T grad phi, tangent mu0 T.
+      d = mu0 * shell_.metric<3>(x);
+      flux = d * grad_phi;
+    } else {
+      const Eigen::Vector3d h = -grad_phi;
+      double mu = 0, dmu = 0;
+      mat.permeability(h.squaredNorm(), mu, dmu);
+      flux = -mu * h;
+      if (mat.is_magnet()) {
+        Eigen::Vector3d x = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 4; ++k) x += q.bary[k] * nodes[tet[k]];
+        flux -= mat.B_r * phys.magnetization.unit_at(x);
+      }
+      d = mu * Eigen::Matrix3d::Identity();
+      if (kind == TangentKind::newton && dmu != 0) d += 2 * dmu * h * h.transpose();
+    }
+    for (int i = 0; i < n; ++i) re[i] += w * grad[i].dot(flux);
+    if (!ke) continue;
+    for (int j = 0; j < n; ++j) dgrad[j] = w * (d * grad[j]);
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j) ke[i * n + j] += grad[i].dot(dgrad[j]);
+  }
+  if (ke)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < i; ++j) ke[i * n + j] = ke[j * n + i];
+}
+
+void Assembler3D::evaluate_range(std::size_t begin, std::size_t end,
+                                 const Eigen::VectorXd& phi_full, double* residual,
+                                 Eigen::SparseMatrix<double>* matrix, TangentKind kind,
+                                 bool atomic) const {
+  const int n = dofs_.dofs_per_element();
+  std::array<double, 10> re{};
+  std::array<double, 100> ke{};
+  double* values = matrix ? matrix->valuePtr() : nullptr;
+  for (std::size_t t = begin; t < end; ++t) {
+    element(t, phi_full, re.data(), matrix ? ke.data() : nullptr, kind);
+    const int* eq = &element_eqs_[t * n];
+    for (int i = 0; i < n; ++i)
+      if (eq[i] >= 0) add_to(residual[eq[i]], re[i], atomic);
+    if (!matrix) continue;
+    const int* slot = pattern_.slots(t);
+    for (int k = 0; k < n * n; ++k)
+      if (slot[k] >= 0) add_to(values[slot[k]], ke[k], atomic);
+  }
+}
+
+void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
+                           Eigen::SparseMatrix<double>* matrix, TangentKind kind) const {
+  const Eigen::VectorXd phi_full = expand(u);
+  residual = Eigen::VectorXd::Zero(n_eqs_);
+  if (matrix) *matrix = pattern_.zero_matrix();
+  const std::size_t n_tets = problem_.mesh->n_tets();
+  const int n_threads =
+      static_cast<int>(std::min<std::size_t>(options_.threads, 1 + n_tets / 20000));
+  if (n_threads <= 1) {
+    evaluate_range(0, n_tets, phi_full, residual.data(), matrix, kind, false);
+    return;
+  }
+  // Threads over contiguous element chunks; concurrent adds to shared rows are atomic (two
+  // threads rarely touch the same entry, so the adds are uncontended).
+  std::vector<std::thread> pool;
+  for (int k = 0; k < n_threads; ++k) {
+    const std::size_t b = n_tets * k / n_threads, e = n_tets * (k + 1) / n_threads;
+    pool.emplace_back([&, b, e] {
+      evaluate_range(b, e, phi_full, residual.data(), matrix, kind, true);
+    });
+  }
+  for (auto& th : pool) th.join();
+}
+
+} // namespace magfem

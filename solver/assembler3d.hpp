@@ -1,0 +1,67 @@
+#pragma once
+// Weak form of the 3D magnetostatic problem in the total scalar potential phi:
+//   H = -grad phi,   B(H) = mu(|H|^2) H + B_r m_hat   (magnets: linear recoil mu0 mu_r),
+//   div B = 0  ->  find phi:  r_i(phi) = -integral B(H) . grad N_i = 0  for all N_i,
+// i.e. integral mu grad phi . grad N_i = integral B_r m_hat . grad N_i. The remanence enters
+// as a source (equivalent to the magnet's surface and volume charges); B . n = 0 is natural.
+// Newton tangent: dr_i/dphi_j = integral grad N_i . (mu I + 2 mu' H H^T) grad N_j, symmetric
+// positive definite for monotone B-H curves (Picard: mu I).
+// In the open-boundary shell the air term carries the shell-transformation metric and the
+// outer faces are infinity (phi = 0); `dirichlet` also sets phi = 0 there; `neumann`
+// (B . n = 0 everywhere) fixes one gauge DOF instead.
+// Unknowns are the free DOFs; constrained DOFs are eliminated.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/dof_map3d.hpp"
+#include "solver/nonlinear_system.hpp"
+#include "solver/problem3d.hpp"
+#include "solver/shell_transform.hpp"
+#include "solver/sparse_pattern.hpp"
+
+namespace magfem {
+
+struct AssemblyOptions3D {
+  int threads = 0; // element loop threads; 0 = std::thread::hardware_concurrency()
+};
+
+class Assembler3D : public NonlinearSystem {
+public:
+  Assembler3D(const Problem3D& problem, const DofMap3D& dofs, AssemblyOptions3D options = {});
+
+  int n_unknowns() const override { return n_eqs_; }
+  bool is_linear() const override { return linear_; }
+  void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
+                Eigen::SparseMatrix<double>* matrix, TangentKind kind) const override;
+  double load_norm() const override { return load_norm_; }
+
+  // Free-DOF vector -> all DOFs (constrained ones are zero) and back.
+  Eigen::VectorXd expand(const Eigen::VectorXd& u) const;
+  Eigen::VectorXd restrict_to_free(const Eigen::VectorXd& phi_full) const;
+  const SparsePattern& pattern() const { return pattern_; }
+  const std::vector<int>& dof_to_equation() const { return dof_to_eq_; }
+
+  // Element residual re (n) and, if ke != nullptr, tangent ke (n x n, row major) of tet t at
+  // the full DOF vector phi_full. Public for tests.
+  void element(std::size_t t, const Eigen::VectorXd& phi_full, double* re, double* ke,
+               TangentKind kind) const;
+
+private:
+  void evaluate_range(std::size_t begin, std::size_t end, const Eigen::VectorXd& phi_full,
+                      double* residual, Eigen::SparseMatrix<double>* matrix, TangentKind kind,
+                      bool atomic) const;
+
+  const Problem3D& problem_;
+  const DofMap3D& dofs_;
+  AssemblyOptions3D options_;
+  ShellTransform shell_;
+  int n_eqs_ = 0; // declared before dof_to_eq_, whose initializer sets it
+  std::vector<int> dof_to_eq_;
+  std::vector<int> element_eqs_;
+  bool linear_ = true;
+  SparsePattern pattern_;
+  double load_norm_ = 0;
+};
+
+} // namespace magfem
