@@ -6,6 +6,8 @@
 #include <thread>
 #include <utility>
 
+#include "core/constants.hpp"
+
 namespace magfem {
 
 std::vector<double> ShellExpansion::degree_amplitude() const {
@@ -84,40 +86,103 @@ std::vector<Band> make_bands(const std::vector<ShellSegmentSource>& segments, in
   return bands;
 }
 
-struct Node {
-  double theta, weight;
-  std::size_t band;
+// Quadrature node of one band with its weight times sin(theta) (the area element).
+struct NodeFactors {
+  double st = 0, ct = 0, ws = 0;
+  const Band* band = nullptr;
+};
+
+// A polar angle at which the Legendre columns are generated, used by its own band's node and
+// possibly by the mirror node pi - theta of a band mirrored about the equator:
+// Pbar_nm(pi - t) = (-1)^(n+m) Pbar_nm(t), so one column serves both.
+struct EvalNode {
+  double theta = 0;
+  NodeFactors direct;
+  NodeFactors mirror; // band == nullptr: none
 };
 
 // The integrand is a trigonometric polynomial of degree n_max + 2 in theta; on a band of
 // width h that is a frequency omega = (n_max + 2) h / 2 on the reference interval, whose
 // Legendre coefficients vanish to round-off beyond degree omega + O(omega^(1/3)). A q-node
 // rule integrates degrees up to 2q - 1 exactly.
-std::vector<Node> make_nodes(const std::vector<Band>& bands, int n_max, double scale) {
-  std::vector<Node> nodes;
-  for (std::size_t b = 0; b < bands.size(); ++b) {
-    const double omega = 0.5 * (n_max + 2) * (bands[b].theta_max - bands[b].theta_min);
-    const int q =
-        static_cast<int>(std::ceil(scale * (0.5 * omega + 3.0 * std::cbrt(omega) + 10.0)));
-    const QuadratureRule rule = gauss_legendre(q, bands[b].theta_min, bands[b].theta_max);
-    for (std::size_t i = 0; i < rule.x.size(); ++i) {
-      nodes.push_back({rule.x[i], rule.w[i], b});
+QuadratureRule band_rule(const Band& band, int n_max, double scale) {
+  const double omega = 0.5 * (n_max + 2) * (band.theta_max - band.theta_min);
+  const int q = static_cast<int>(std::ceil(scale * (0.5 * omega + 3.0 * std::cbrt(omega) + 10.0)));
+  return gauss_legendre(q, band.theta_min, band.theta_max);
+}
+
+NodeFactors factors(const Band& band, const QuadratureRule& rule, std::size_t i) {
+  const double st = std::sin(rule.x[i]);
+  return {st, std::cos(rule.x[i]), rule.w[i] * st, &band};
+}
+
+bool mirrored(const Band& a, const Band& b) {
+  constexpr double tol = 1e-14;
+  return std::abs(a.theta_min + b.theta_max - pi) < tol &&
+         std::abs(a.theta_max + b.theta_min - pi) < tol;
+}
+
+std::vector<EvalNode> make_nodes(const std::vector<Band>& bands, int n_max, double scale) {
+  std::vector<EvalNode> nodes;
+  std::vector<bool> used(bands.size(), false);
+  for (std::size_t a = 0; a < bands.size(); ++a) {
+    if (used[a]) {
+      continue;
+    }
+    used[a] = true;
+    const QuadratureRule ra = band_rule(bands[a], n_max, scale);
+    const std::size_t q = ra.x.size();
+    std::size_t b = a + 1;
+    while (b < bands.size() && (used[b] || !mirrored(bands[a], bands[b]))) {
+      ++b;
+    }
+    if (b < bands.size()) { // a mirror band: its node q-1-i is pi minus node i of a
+      used[b] = true;
+      const QuadratureRule rb = band_rule(bands[b], n_max, scale);
+      for (std::size_t i = 0; i < q; ++i) {
+        nodes.push_back({ra.x[i], factors(bands[a], ra, i), factors(bands[b], rb, q - 1 - i)});
+      }
+    } else if (mirrored(bands[a], bands[a])) { // symmetric about the equator itself
+      for (std::size_t i = 0; i < q / 2; ++i) {
+        nodes.push_back({ra.x[i], factors(bands[a], ra, i), factors(bands[a], ra, q - 1 - i)});
+      }
+      if (q % 2 == 1) {
+        nodes.push_back({ra.x[q / 2], factors(bands[a], ra, q / 2), {}});
+      }
+    } else {
+      for (std::size_t i = 0; i < q; ++i) {
+        nodes.push_back({ra.x[i], factors(bands[a], ra, i), {}});
+      }
     }
   }
   return nodes;
 }
 
-// Quadrature node with its band's weights folded in (sin(theta) is the area element).
-struct NodeFactors {
-  double st, ct, ws;
-  const Band* band;
+// Integrand weights of one node for order m: radial (cos, sin), theta part of the poloidal
+// projection (cos, sin) and phi part (g_cos, g_sin).
+struct OrderWeights {
+  double rc = 0, rs = 0, tc = 0, ts = 0, gc = 0, gs = 0;
 };
+
+OrderWeights order_weights(const NodeFactors& nf, int m) {
+  if (nf.band == nullptr) {
+    return {};
+  }
+  const PhiProjection& pr = nf.band->proj[static_cast<std::size_t>(m)];
+  return {nf.ws * (nf.st * pr.f1c + nf.ct * pr.f2c + pr.f3c),
+          nf.ws * (nf.st * pr.f1s + nf.ct * pr.f2s + pr.f3s),
+          nf.ws * (nf.ct * pr.f1c - nf.st * pr.f2c),
+          nf.ws * (nf.ct * pr.f1s - nf.st * pr.f2s),
+          nf.ws * m * pr.gc,
+          nf.ws * m * pr.gs};
+}
 
 // Column m of the projections: sum over the nodes of the integrands for n = m..n_max, with
 // the Legendre columns produced on the fly (no table in memory: the loop is compute-bound).
-void project_order(int m, std::vector<LegendreColumn>& columns,
-                   const std::vector<NodeFactors>& nodes, std::vector<double> (&buf)[3],
-                   std::vector<double> (&acc)[4]) {
+// At the mirror node p and q pick up (-1)^(n-m), dp/dtheta -(-1)^(n-m): even and odd n - m
+// get the sum and the difference of the two nodes' weights.
+void project_order(int m, std::vector<LegendreColumn>& columns, const std::vector<EvalNode>& nodes,
+                   std::vector<double> (&buf)[3], std::vector<double> (&acc)[4]) {
   const std::size_t len = buf[0].size() - static_cast<std::size_t>(m);
   for (std::vector<double>& a : acc) {
     std::fill(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(len), 0.0);
@@ -127,18 +192,17 @@ void project_order(int m, std::vector<LegendreColumn>& columns,
   const double* q = buf[2].data();
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     columns[i].fill(buf[0].data(), buf[1].data(), buf[2].data());
-    const NodeFactors& nf = nodes[i];
-    const PhiProjection& pr = nf.band->proj[static_cast<std::size_t>(m)];
-    const double rc = nf.ws * (nf.st * pr.f1c + nf.ct * pr.f2c + pr.f3c);
-    const double rs = nf.ws * (nf.st * pr.f1s + nf.ct * pr.f2s + pr.f3s);
-    const double tc = nf.ws * (nf.ct * pr.f1c - nf.st * pr.f2c);
-    const double ts = nf.ws * (nf.ct * pr.f1s - nf.st * pr.f2s);
-    const double gc = nf.ws * m * pr.gc, gs = nf.ws * m * pr.gs;
+    const OrderWeights d = order_weights(nodes[i].direct, m);
+    const OrderWeights r = order_weights(nodes[i].mirror, m);
+    const OrderWeights w[2] = {
+        {d.rc + r.rc, d.rs + r.rs, d.tc - r.tc, d.ts - r.ts, d.gc + r.gc, d.gs + r.gs},
+        {d.rc - r.rc, d.rs - r.rs, d.tc + r.tc, d.ts + r.ts, d.gc - r.gc, d.gs - r.gs}};
     for (std::size_t j = 0; j < len; ++j) {
-      acc[0][j] += p[j] * rc;
-      acc[1][j] += p[j] * rs;
-      acc[2][j] += dp[j] * tc - q[j] * gs;
-      acc[3][j] += dp[j] * ts + q[j] * gc;
+      const OrderWeights& e = w[j & 1U];
+      acc[0][j] += p[j] * e.rc;
+      acc[1][j] += p[j] * e.rs;
+      acc[2][j] += dp[j] * e.tc - q[j] * e.gs;
+      acc[3][j] += dp[j] * e.ts + q[j] * e.gc;
     }
   }
 }
@@ -175,13 +239,8 @@ void normalize(ShellExpansion& e) {
 ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>& segments,
                                           int n_max, double quadrature_scale, int n_threads) {
   const std::vector<Band> bands = make_bands(segments, n_max);
-  const std::vector<Node> nodes = make_nodes(bands, n_max, quadrature_scale);
+  const std::vector<EvalNode> nodes = make_nodes(bands, n_max, quadrature_scale);
   const NormalizedLegendre legendre(n_max);
-  std::vector<NodeFactors> factors;
-  for (const Node& node : nodes) {
-    factors.push_back({std::sin(node.theta), std::cos(node.theta),
-                       node.weight * std::sin(node.theta), &bands[node.band]});
-  }
   ShellExpansion total = zero_expansion(n_max);
   const int n_workers = std::max(1, std::min(n_threads, n_max + 1));
 
@@ -190,7 +249,7 @@ ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>&
   auto work = [&](int w) {
     std::vector<LegendreColumn> columns;
     columns.reserve(nodes.size());
-    for (const Node& node : nodes) {
+    for (const EvalNode& node : nodes) {
       columns.emplace_back(legendre, node.theta);
     }
     const auto size = static_cast<std::size_t>(n_max) + 1;
@@ -205,7 +264,7 @@ ShellExpansion expand_shell_magnetization(const std::vector<ShellSegmentSource>&
         }
         continue;
       }
-      project_order(m, columns, factors, buf, acc);
+      project_order(m, columns, nodes, buf, acc);
       const std::size_t c = total.index.column_start(m);
       for (std::size_t j = 0; j + static_cast<std::size_t>(m) < size; ++j) {
         total.radial_cos[c + j] = acc[0][j];
