@@ -1,0 +1,44 @@
+#pragma once
+// Linear tetrahedral mesh of a 3D domain with a part index per tetrahedron, as built by
+// build_mesh_3d (mesh/mesher3d.hpp). Higher-order nodes are created by the solver's DOF map.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace magfem {
+
+inline constexpr int region_background_3d = -1; // air not covered by any part
+inline constexpr int region_shell_3d = -2;      // exterior shell of an open boundary
+
+struct MeshQuality3D {
+  double min_dihedral_deg = 0;
+  double max_dihedral_deg = 0;
+  double max_radius_edge = 0; // circumradius / shortest edge (regular tet: 0.612)
+};
+
+struct Mesh3D {
+  std::vector<Eigen::Vector3d> nodes;          // metres
+  std::vector<std::array<int, 4>> tets;        // positive orientation (det > 0)
+  std::vector<int> tet_part;                   // Geometry3D::parts index or region_*_3d
+  std::vector<std::array<int, 3>> outer_faces; // faces on the outermost sphere, normal outward
+  double shell_inner_radius = 0;               // set when the boundary is open
+  double shell_outer_radius = 0;
+  MeshQuality3D quality;
+  std::vector<double> part_volumes; // per Geometry3D part, m^3 (sum of its tet volumes)
+
+  std::size_t n_nodes() const { return nodes.size(); }
+  std::size_t n_tets() const { return tets.size(); }
+};
+
+// A sphere patch where probes will be evaluated: centre, radius (m) and the theta/phi ranges
+// (rad, about the centre, theta polar from +z). build_mesh_3d keeps elements within
+// MeshOptions3D::probe_size of the patch no larger than probe_size.
+struct ProbeSurface {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0;
+  double theta_min = 0, theta_max = 0;
+  double phi_min = 0, phi_max = 0;
+};
+
+} // namespace magfem

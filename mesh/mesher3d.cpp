@@ -1,0 +1,382 @@
+// The only translation unit that includes tetgen.h (TetGen is AGPL-3.0: keep it fenced here).
+#include "mesh/mesher3d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+#include <tetgen.h>
+
+#include "mesh/face_chart3d.hpp"
+#include "mesh/face_soup3d.hpp"
+#include "mesh/grid_frame3d.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesh_quality3d.hpp"
+#include "mesh/size_field3d.hpp"
+#include "mesh/surface_mesher3d.hpp"
+
+namespace magfem {
+namespace {
+
+constexpr double grading = 0.3;         // size growth per unit distance from a feature
+constexpr double sample_fraction = 0.5; // source spacing as a fraction of the local size
+// Field sources carry slightly smaller sizes than required so that the field between sources
+// (which grows by grading * distance) still meets the requirement.
+constexpr double chord_margin = 0.9;
+// Gap sources: spacing w/L along and across the gap, so any point of the gap is within
+// 0.87 w/L of a source; (h_s + grading * 0.87 w/L) / (1 - slack) <= w/L needs
+// h_s <= (0.95 - 0.26) w/L.
+constexpr double gap_source_factor = 1 - size_field_slack - grading * 0.87;
+constexpr double min_dihedral_request_deg = 10; // TetGen -q second argument
+
+// Region and chord size rules (all in metres, already multiplied by size_scale).
+struct SizeRules {
+  const Geometry3D& geo;
+  double default_size = 0;
+  double scale = 1;
+  double tol = 0;
+
+  explicit SizeRules(const Geometry3D& g) : geo(g) {
+    const MeshOptions3D& o = g.options;
+    scale = o.size_scale > 0 ? o.size_scale : 1.0;
+    default_size = (o.default_size > 0 ? o.default_size : g.outer.radius / 8);
+    tol = o.chord_tolerance;
+  }
+  double region(int label) const {
+    if (label == region_exterior_3d)
+      return std::numeric_limits<double>::infinity();
+    if (label >= 0 && geo.parts[label].max_size > 0)
+      return scale * geo.parts[label].max_size;
+    return scale * default_size;
+  }
+  // Sagitta of a triangle of edge h on a surface of curvature radius R is about h^2 / (6 R).
+  double chord(double radius) const {
+    if (tol <= 0 || !std::isfinite(radius))
+      return std::numeric_limits<double>::infinity();
+    return chord_margin * std::sqrt(6 * radius * tol) * std::min(scale, 1.0);
+  }
+  double face(const GridFace3D& f) const {
+    return std::min(region(f.label_low), region(f.label_high));
+  }
+  // The chord tolerance is a property of the parts' surfaces; the outer spheres only need
+  // their nodes on the sphere, which they have exactly.
+  double face_chord(const GridFace3D& f, double radius) const {
+    return (f.label_low >= 0 || f.label_high >= 0) ? chord(radius)
+                                                   : std::numeric_limits<double>::infinity();
+  }
+};
+
+// Smallest curvature radius a face's chord size uses: cones are clamped at a tenth of their
+// largest radius so that the apex does not ask for infinitely small elements.
+double curvature_floor(const FaceChart3D& chart, const FaceSamples3D& s) {
+  double r_max = 0;
+  for (const Vec3& x : s.points) {
+    const double r = chart.curvature_radius(x);
+    if (std::isfinite(r))
+      r_max = std::max(r_max, r);
+  }
+  return 0.1 * r_max;
+}
+
+struct FaceSizing {
+  std::vector<double> spacing; // per face
+  std::vector<double> floor;   // curvature floor per face
+};
+
+// Sample spacing of each face: a fraction of the smallest intrinsic size on it.
+FaceSizing face_sizing(const GridDecomposition3D& dec, const SizeRules& rules) {
+  FaceSizing fs;
+  for (const GridFace3D& face : dec.faces) {
+    const GridFrame3D& fr = dec.frames[face.frame];
+    const FaceChart3D chart(fr, face);
+    const FaceSamples3D corners = sample_face(fr, face, std::numeric_limits<double>::max());
+    const double floor = curvature_floor(chart, corners);
+    double h = rules.face(face);
+    for (const Vec3& x : corners.points)
+      h = std::min(h, rules.face_chord(face, std::max(chart.curvature_radius(x), floor)));
+    fs.spacing.push_back(sample_fraction * h);
+    fs.floor.push_back(floor);
+  }
+  return fs;
+}
+
+bool is_air(int label) {
+  return label == region_background_3d;
+}
+
+// Adds point sources for every face sample (its intrinsic size) and for narrow air gaps.
+void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
+                         const FaceSizing& fs, const FaceSoup3D& soup, SizeField3D& field) {
+  const int layers = std::max(1, rules.geo.options.gap_layers);
+  const double eps = 1e-7 * rules.geo.outer.radius;
+  for (std::size_t f = 0; f < dec.faces.size(); ++f) {
+    const GridFace3D& face = dec.faces[f];
+    const GridFrame3D& fr = dec.frames[face.frame];
+    const FaceChart3D chart(fr, face);
+    auto intrinsic = [&](const Vec3& x) {
+      return std::min(rules.face(face),
+                      rules.face_chord(face, std::max(chart.curvature_radius(x), fs.floor[f])));
+    };
+    for (const Vec3& x : soup.samples()[f].points)
+      field.add_source(x, intrinsic(x));
+    if (!is_air(face.label_low) && !is_air(face.label_high))
+      continue;
+    const double side = is_air(face.label_high) ? 1.0 : -1.0;
+    // Gaps narrower than a tenth of the sample spacing are below the resolution of the coarse
+    // triangles the rays are cast against.
+    const double min_gap = 0.1 * fs.spacing[f];
+    auto gap = [&](const Vec3& x) {
+      const Vec3 n = side * face_normal(fr, face, x);
+      return std::pair{soup.distance_to_face(x + eps * n, n, min_gap) + eps, n};
+    };
+    // Coarse pass: the narrowest gap seen from this face decides the fine sample spacing.
+    double narrowest = std::numeric_limits<double>::infinity();
+    for (const Vec3& x : soup.samples()[f].points) {
+      const double w = gap(x).first;
+      if (rules.scale * w / layers < intrinsic(x))
+        narrowest = std::min(narrowest, w);
+    }
+    if (!std::isfinite(narrowest))
+      continue;
+    const double step = narrowest / layers;
+    for (const Vec3& x : sample_face(fr, face, std::min(step, fs.spacing[f])).points) {
+      const auto [w, n] = gap(x);
+      const double h = rules.scale * w / layers;
+      if (h >= intrinsic(x))
+        continue;
+      for (int k = 0; k <= layers; ++k)
+        field.add_source(x + n * (w * k / layers), gap_source_factor * h);
+    }
+  }
+}
+
+// --- TetGen ------------------------------------------------------------------------------
+
+// TetGen's refinement callback carries no user pointer; the field in use is published here for
+// the duration of one tetrahedralize() call on this thread.
+thread_local const SizeField3D* active_field = nullptr;
+
+bool tet_unsuitable(REAL* a, REAL* b, REAL* c, REAL* d, REAL*, REAL) {
+  const Vec3 p[4] = {Vec3(a[0], a[1], a[2]), Vec3(b[0], b[1], b[2]), Vec3(c[0], c[1], c[2]),
+                     Vec3(d[0], d[1], d[2])};
+  double longest2 = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      longest2 = std::max(longest2, (p[i] - p[j]).squaredNorm());
+  const double hmin = active_field->min_size();
+  if (longest2 <= hmin * hmin)
+    return false;
+  const double h = (*active_field)((p[0] + p[1] + p[2] + p[3]) / 4);
+  return longest2 > h * h;
+}
+
+struct ActiveField {
+  explicit ActiveField(const SizeField3D& f) { active_field = &f; }
+  ~ActiveField() { active_field = nullptr; }
+  ActiveField(const ActiveField&) = delete;
+  ActiveField& operator=(const ActiveField&) = delete;
+};
+
+double attribute_of(int label) {
+  return label >= 0 ? label + 1 : label;
+}
+
+int label_of(double attribute) {
+  const int a = static_cast<int>(std::lround(attribute));
+  if (a >= 1)
+    return a - 1;
+  if (a == region_background_3d || a == region_shell_3d)
+    return a;
+  throw MeshError("", "", "internal: a region of the tetrahedral mesh has no label");
+}
+
+std::string tetgen_failure(int code) {
+  switch (code) {
+  case 1:
+    return "out of memory";
+  case 3:
+    return "the surface mesh intersects itself (parts too close or overlapping)";
+  case 4:
+    return "a very small input feature (parts or bounds closer than the tolerance)";
+  case 5:
+    return "two nearly coincident surface facets";
+  case 10:
+    return "invalid input";
+  default:
+    return "internal error " + std::to_string(code);
+  }
+}
+
+// Seeds one region point on each side of every interface face, just off its first triangle,
+// with the region's label and volume bound (that of a regular tet of the region size).
+void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
+                      const SizeRules& rules, tetgenio& in) {
+  std::vector<std::array<double, 5>> seeds;
+  std::vector<bool> seen(dec.faces.size(), false);
+  for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
+    const int f = surf.triangle_face[t];
+    if (seen[f])
+      continue;
+    seen[f] = true;
+    const GridFace3D& face = dec.faces[f];
+    const auto& tri = surf.triangles[t];
+    const Vec3 a = surf.points[tri[0]], b = surf.points[tri[1]], c = surf.points[tri[2]];
+    const Vec3 centre = (a + b + c) / 3;
+    Vec3 n = (b - a).cross(c - a).normalized();
+    if (n.dot(face_normal(dec.frames[face.frame], face, centre)) < 0)
+      n = -n;
+    const double eps = 1e-3 * std::min({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    for (int side : {-1, 1}) {
+      const int label = side < 0 ? face.label_low : face.label_high;
+      if (label == region_exterior_3d)
+        continue;
+      const double h = rules.region(label);
+      const Vec3 x = centre + side * eps * n;
+      seeds.push_back({x.x(), x.y(), x.z(), attribute_of(label), h * h * h / (6 * std::sqrt(2.0))});
+    }
+  }
+  in.numberofregions = static_cast<int>(seeds.size());
+  in.regionlist = new REAL[5 * seeds.size()];
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    std::copy(seeds[i].begin(), seeds[i].end(), in.regionlist + 5 * i);
+}
+
+void fill_plc(const SurfaceMesh3D& surf, tetgenio& in) {
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(surf.points.size());
+  in.pointlist = new REAL[3 * surf.points.size()];
+  for (std::size_t i = 0; i < surf.points.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      in.pointlist[3 * i + k] = surf.points[i][k];
+  in.numberoffacets = static_cast<int>(surf.triangles.size());
+  in.facetlist = new tetgenio::facet[surf.triangles.size()];
+  in.facetmarkerlist = new int[surf.triangles.size()];
+  for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
+    tetgenio::facet& f = in.facetlist[t];
+    tetgenio::init(&f);
+    f.numberofpolygons = 1;
+    f.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&f.polygonlist[0]);
+    f.polygonlist[0].numberofvertices = 3;
+    f.polygonlist[0].vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k)
+      f.polygonlist[0].vertexlist[k] = surf.triangles[t][k];
+    in.facetmarkerlist[t] = surf.triangle_face[t] + 1;
+  }
+}
+
+void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeField3D& field) {
+  const double ratio = geo.options.radius_edge_ratio > 0 ? geo.options.radius_edge_ratio : 1.6;
+  // p: PLC, Y: keep the surface mesh (nodes stay on the curved surfaces, shared faces stay
+  // shared), q: quality, A/a: region labels and volume bounds, M: no facet merging (the
+  // facets are curved-surface triangles), z: zero-based, Q: quiet.
+  std::string switches =
+      "pYAaMzQq" + std::to_string(ratio) + "/" + std::to_string(min_dihedral_request_deg);
+  in.tetunsuitable = &tet_unsuitable;
+  tetgenbehavior b;
+  if (!b.parse_commandline(switches.data()))
+    throw MeshError("", "radius_edge_ratio", "invalid TetGen switches " + switches);
+  const ActiveField guard(field);
+  try {
+    tetrahedralize(&b, &in, &out);
+  } catch (int code) {
+    throw MeshError("", "", "TetGen failed: " + tetgen_failure(code));
+  }
+}
+
+Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
+                    const SurfaceMesh3D& surf, const tetgenio& out) {
+  Mesh3D m;
+  m.nodes.resize(out.numberofpoints);
+  for (int i = 0; i < out.numberofpoints; ++i)
+    m.nodes[i] = Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
+  m.part_volumes.assign(geo.parts.size(), 0.0);
+  m.tets.resize(out.numberoftetrahedra);
+  m.tet_part.resize(out.numberoftetrahedra);
+  for (int t = 0; t < out.numberoftetrahedra; ++t) {
+    std::array<int, 4> v;
+    for (int k = 0; k < 4; ++k)
+      v[k] = out.tetrahedronlist[out.numberofcorners * t + k];
+    double vol = tet_volume(m.nodes[v[0]], m.nodes[v[1]], m.nodes[v[2]], m.nodes[v[3]]);
+    if (vol < 0) {
+      std::swap(v[2], v[3]);
+      vol = -vol;
+    }
+    m.tets[t] = v;
+    const int label = label_of(out.tetrahedronattributelist[out.numberoftetrahedronattributes * t]);
+    m.tet_part[t] = label;
+    if (label >= 0)
+      m.part_volumes[label] += vol;
+  }
+  // -Y keeps every input point, in input order, at the front of the output.
+  for (std::size_t i = 0; i < surf.points.size(); ++i)
+    if ((m.nodes[i] - surf.points[i]).norm() > 1e-12 * geo.outer.radius)
+      throw MeshError("", "", "internal: TetGen renumbered the surface points");
+  for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
+    const GridFace3D& face = dec.faces[surf.triangle_face[t]];
+    if (face.label_high != region_exterior_3d)
+      continue;
+    auto tri = surf.triangles[t];
+    const Vec3 a = m.nodes[tri[0]], b = m.nodes[tri[1]], c = m.nodes[tri[2]];
+    if ((b - a).cross(c - a).dot(a + b + c) < 0)
+      std::swap(tri[1], tri[2]);
+    m.outer_faces.push_back(tri);
+  }
+  if (geo.outer.kind == OuterKind3D::open) {
+    m.shell_inner_radius = geo.outer.radius;
+    m.shell_outer_radius = geo.outer.shell_ratio * geo.outer.radius;
+  }
+  m.quality = compute_quality_3d(m.nodes, m.tets);
+  return m;
+}
+
+} // namespace
+
+Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& refine) {
+  const bool verbose = std::getenv("MAGFEM_MESH3D_VERBOSE") != nullptr;
+  auto t0 = std::chrono::steady_clock::now();
+  auto lap = [&](const char* what) {
+    const auto t1 = std::chrono::steady_clock::now();
+    if (verbose)
+      std::fprintf(stderr, "mesh3d: %-10s %.3f s\n", what,
+                   std::chrono::duration<double>(t1 - t0).count());
+    t0 = t1;
+  };
+  const GridDecomposition3D dec = decompose_geometry_3d(geo);
+  const SizeRules rules(geo);
+  const FaceSizing fs = face_sizing(dec, rules);
+  const FaceSoup3D soup(dec, fs.spacing);
+  soup.check_parts(geo);
+  lap("soup");
+
+  SizeField3D field(grading);
+  add_surface_sources(dec, rules, fs, soup, field);
+  if (geo.options.probe_size > 0)
+    for (const ProbeSurface& p : refine)
+      field.add_probe(p, rules.scale * geo.options.probe_size);
+  field.build();
+  lap("field");
+  if (verbose)
+    std::fprintf(stderr, "mesh3d: %zu sources\n", field.n_sources());
+
+  const SurfaceMesh3D surf =
+      mesh_surfaces_3d(dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio);
+  lap("surface");
+  if (verbose)
+    std::fprintf(stderr, "mesh3d: %zu surface points %zu triangles\n", surf.points.size(),
+                 surf.triangles.size());
+  tetgenio in, out;
+  fill_plc(surf, in);
+  add_region_seeds(dec, surf, rules, in);
+  run_tetgen(geo, in, out, field);
+  lap("tetgen");
+  Mesh3D m = collect_mesh(geo, dec, surf, out);
+  lap("collect");
+  return m;
+}
+
+} // namespace magfem

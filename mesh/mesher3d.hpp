@@ -1,0 +1,30 @@
+#pragma once
+// 3D mesher: Geometry3D -> conforming tetrahedral Mesh3D (TetGen for the volume; the surface
+// triangulation is built here so that faces shared by adjacent parts appear exactly once).
+//
+// How the domain is described to TetGen: parts of the same kind and frame (spherical segments
+// about one centre, coaxial cylinders, boxes with one orientation) are cut into the cells of a
+// common curvilinear grid; every grid face with different labels on its two sides (part, air,
+// shell, exterior) is triangulated once. Two parts claiming the same cell intersect; parts in
+// different frames must neither intersect nor touch (both are rejected with a MeshError naming
+// both parts).
+//
+// Sizes: the local size h(x) is the minimum of the region sizes (Part3D::max_size or
+// MeshOptions3D::default_size) of the regions touching a surface, the chord-tolerance size of
+// curved surfaces (sagitta <= chord_tolerance), gap sizes (gap width / gap_layers across thin
+// air gaps) and probe_size within probe_size of each ProbeSurface, growing away from those
+// features by a fixed grading (0.3 m per m). Everything except the chord limit is multiplied
+// by size_scale. default_size <= 0 means outer.radius / 8; chord_tolerance <= 0 means no
+// chord limit.
+#include <vector>
+
+#include "mesh/geometry3d.hpp"
+#include "mesh/mesh3d.hpp"
+
+namespace magfem {
+
+// Throws MeshError naming the offending part(s) for degenerate primitives, parts outside the
+// domain ball, intersecting parts and TetGen failures.
+Mesh3D build_mesh_3d(const Geometry3D& geometry, const std::vector<ProbeSurface>& refine = {});
+
+} // namespace magfem

@@ -1,0 +1,377 @@
+// Tests of the 3D mesher: exact volumes of every primitive, conformity of segment arrays,
+// element validity and quality, the open-boundary shell, rejection of bad geometry, gap layers
+// and probe refinement. Meshes are coarse to keep the suite fast.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include <Eigen/Geometry>
+#include <numbers>
+
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesh_quality3d.hpp"
+#include "mesh/mesher3d.hpp"
+
+namespace magfem {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double mm = 1e-3;
+
+Part3D segment(const std::string& name, double r1, double r2, double t1, double t2, double p1,
+               double p2) {
+  Part3D p;
+  p.name = name;
+  p.shape = SphericalSegment{r1, r2, t1, t2, p1, p2};
+  return p;
+}
+
+double segment_volume(double r1, double r2, double t1, double t2, double p1, double p2) {
+  return (std::pow(r2, 3) - std::pow(r1, 3)) / 3 * (std::cos(t1) - std::cos(t2)) * (p2 - p1);
+}
+
+Geometry3D domain(double radius, double default_size, double chord_tol) {
+  Geometry3D g;
+  g.outer.kind = OuterKind3D::open;
+  g.outer.radius = radius;
+  g.outer.shell_ratio = 1.5;
+  g.options.default_size = default_size;
+  g.options.chord_tolerance = chord_tol;
+  return g;
+}
+
+// Every face of every tet is either shared by exactly two tets or lies on the outer boundary.
+// Returns the number of faces between tets of different labels.
+// Calls on_interface(face, part_a, part_b) for faces between two tets of different labels.
+template <class OnInterface> void check_conforming(const Mesh3D& m, OnInterface on_interface) {
+  struct Face {
+    std::array<int, 3> v;
+    int tet;
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * m.tets.size());
+  for (std::size_t t = 0; t < m.tets.size(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      std::array<int, 3> key{m.tets[t][(f + 1) % 4], m.tets[t][(f + 2) % 4],
+                             m.tets[t][(f + 3) % 4]};
+      std::sort(key.begin(), key.end());
+      faces.push_back({key, static_cast<int>(t)});
+    }
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.v < b.v; });
+  std::vector<std::array<int, 3>> outer;
+  for (auto f : m.outer_faces) {
+    std::sort(f.begin(), f.end());
+    outer.push_back(f);
+  }
+  std::sort(outer.begin(), outer.end());
+  std::size_t boundary = 0, non_manifold = 0, stray = 0;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i;
+    while (j < faces.size() && faces[j].v == faces[i].v)
+      ++j;
+    if (j - i > 2)
+      ++non_manifold;
+    if (j - i == 1) {
+      ++boundary;
+      stray += !std::binary_search(outer.begin(), outer.end(), faces[i].v);
+    } else if (m.tet_part[faces[i].tet] != m.tet_part[faces[i + 1].tet]) {
+      on_interface(faces[i].v, m.tet_part[faces[i].tet], m.tet_part[faces[i + 1].tet]);
+    }
+    i = j;
+  }
+  EXPECT_EQ(non_manifold, 0u) << "faces shared by more than two tets";
+  EXPECT_EQ(stray, 0u) << "boundary faces not on the outer sphere (gaps in the mesh)";
+  EXPECT_EQ(boundary, m.outer_faces.size());
+}
+
+void check_conforming(const Mesh3D& m) {
+  check_conforming(m, [](const std::array<int, 3>&, int, int) {});
+}
+
+void check_elements(const Mesh3D& m, double min_dihedral_bound_deg) {
+  ASSERT_EQ(m.tets.size(), m.tet_part.size());
+  double min_vol = std::numeric_limits<double>::infinity();
+  for (const auto& t : m.tets)
+    min_vol =
+        std::min(min_vol, tet_volume(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]));
+  EXPECT_GT(min_vol, 0);
+  EXPECT_GT(m.quality.min_dihedral_deg, min_dihedral_bound_deg);
+  EXPECT_LT(m.quality.max_dihedral_deg, 180 - min_dihedral_bound_deg);
+}
+
+TEST(Mesher3D, SolidSphereVolumeShellAndOuterFaces) {
+  Geometry3D g = domain(30 * mm, 8 * mm, 0.02 * mm);
+  g.parts.push_back(segment("ball", 0, 10 * mm, 0, pi, 0, 2 * pi));
+  g.parts[0].max_size = 3 * mm;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Mesh3D m = build_mesh_3d(g);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("sphere: %zu nodes %zu tets in %.2f s, dihedral %.1f..%.1f, radius-edge %.2f\n",
+              m.nodes.size(), m.tets.size(), secs, m.quality.min_dihedral_deg,
+              m.quality.max_dihedral_deg, m.quality.max_radius_edge);
+  const double exact = 4.0 / 3 * pi * std::pow(10 * mm, 3);
+  // Inscribed facets lose at most sagitta * area / V = 3 * 0.02 mm / 10 mm = 0.6 %, on average
+  // about half that; 0.5 % is the volume requirement.
+  EXPECT_NEAR(m.part_volumes[0], exact, 0.005 * exact);
+  check_elements(m, 5.0);
+  check_conforming(m);
+  EXPECT_DOUBLE_EQ(m.shell_inner_radius, 30 * mm);
+  EXPECT_DOUBLE_EQ(m.shell_outer_radius, 45 * mm);
+  EXPECT_GT(std::count(m.tet_part.begin(), m.tet_part.end(), region_shell_3d), 0);
+  for (const auto& f : m.outer_faces)
+    for (int v : f)
+      EXPECT_NEAR(m.nodes[v].norm(), 45 * mm, 1e-12);
+}
+
+// Largest edge of a tet.
+double longest_edge(const Mesh3D& m, const std::array<int, 4>& t) {
+  double l = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      l = std::max(l, (m.nodes[t[i]] - m.nodes[t[j]]).norm());
+  return l;
+}
+
+Eigen::Vector3d centroid(const Mesh3D& m, const std::array<int, 4>& t) {
+  return (m.nodes[t[0]] + m.nodes[t[1]] + m.nodes[t[2]] + m.nodes[t[3]]) / 4;
+}
+
+// The thesis benchmark: full shell 40..55 mm cut into 4 x 8 segments of 45 x 45 deg.
+Geometry3D benchmark32(double magnet_size, double default_size, double chord_tol) {
+  Geometry3D g = domain(100 * mm, default_size, chord_tol);
+  const double q = pi / 4;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 8; ++j) {
+      g.parts.push_back(segment("m" + std::to_string(i + 1) + "_" + std::to_string(j + 1), 40 * mm,
+                                55 * mm, i * q, (i + 1) * q, j * q, (j + 1) * q));
+      g.parts.back().max_size = magnet_size;
+    }
+  return g;
+}
+
+TEST(Mesher3D, SegmentArrayConformsAndKeepsVolumes) {
+  const Geometry3D g = benchmark32(6 * mm, 25 * mm, 0.1 * mm);
+  const Mesh3D m = build_mesh_3d(g);
+  std::printf("benchmark32 coarse: %zu tets, dihedral %.1f..%.1f, radius-edge %.2f\n",
+              m.tets.size(), m.quality.min_dihedral_deg, m.quality.max_dihedral_deg,
+              m.quality.max_radius_edge);
+  check_elements(m, 5.0);
+  // Interfaces between two magnets must lie on a cut: a plane phi = k 45 deg, the cone
+  // theta = 45 / 135 deg or the plane theta = 90 deg.
+  std::size_t between_parts = 0, off_cut = 0;
+  check_conforming(m, [&](const std::array<int, 3>& f, int a, int b) {
+    if (a < 0 || b < 0)
+      return;
+    ++between_parts;
+    for (int v : f) {
+      const Eigen::Vector3d x = m.nodes[v];
+      const double theta = std::acos(x.z() / x.norm());
+      const double phi = std::atan2(x.y(), x.x());
+      const double dphi = std::abs(std::remainder(phi, pi / 4)) * x.head<2>().norm();
+      const double dtheta = std::abs(std::remainder(theta, pi / 4)) * x.norm();
+      off_cut += std::min(dphi, dtheta) > 1e-9;
+    }
+  });
+  EXPECT_GT(between_parts, 0u);
+  EXPECT_EQ(off_cut, 0u);
+  double total = 0;
+  for (std::size_t p = 0; p < g.parts.size(); ++p) {
+    const auto& s = std::get<SphericalSegment>(g.parts[p].shape);
+    const double exact =
+        segment_volume(s.r_inner, s.r_outer, s.theta_min, s.theta_max, s.phi_min, s.phi_max);
+    // Chord tolerance 0.1 mm: net facet error (outer loss minus inner gain) ~0.2 %.
+    EXPECT_NEAR(m.part_volumes[p], exact, 0.005 * exact) << g.parts[p].name;
+    total += m.part_volumes[p];
+  }
+  const double shell = 4 * pi / 3 * (std::pow(55 * mm, 3) - std::pow(40 * mm, 3));
+  EXPECT_NEAR(total, shell, 0.005 * shell);
+  for (int p = 0; p < 32; ++p)
+    EXPECT_GT(std::count(m.tet_part.begin(), m.tet_part.end(), p), 0);
+}
+
+// Scaled gravity compensator (R 29 mm in a 30..43 mm shell): solid hemisphere R 3 mm inside a
+// hemispherical shell 4..6 mm, flat faces in the xy-plane, the same 1 mm air gap.
+TEST(Mesher3D, HemispheresWithGapLayers) {
+  Geometry3D g = domain(20 * mm, 6 * mm, 0.02 * mm);
+  g.options.gap_layers = 3;
+  g.parts.push_back(segment("inner", 0, 3 * mm, 0, pi / 2, 0, 2 * pi));
+  g.parts.push_back(segment("outer", 4 * mm, 6 * mm, 0, pi / 2, 0, 2 * pi));
+  const Mesh3D m = build_mesh_3d(g);
+  std::printf("hemispheres: %zu tets, dihedral %.1f..%.1f\n", m.tets.size(),
+              m.quality.min_dihedral_deg, m.quality.max_dihedral_deg);
+  check_elements(m, 5.0);
+  check_conforming(m);
+  const double v_in = 2 * pi / 3 * std::pow(3 * mm, 3);
+  const double v_out = 2 * pi / 3 * (std::pow(6 * mm, 3) - std::pow(4 * mm, 3));
+  EXPECT_NEAR(m.part_volumes[0], v_in, 0.005 * v_in);
+  EXPECT_NEAR(m.part_volumes[1], v_out, 0.005 * v_out);
+  // Air tets inside the gap (away from the rim at z = 0): at least 3 layers, i.e. no edge
+  // longer than gap / 3.
+  double worst = 0;
+  std::size_t n_gap = 0;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    if (m.tet_part[t] != region_background_3d)
+      continue;
+    const Eigen::Vector3d c = centroid(m, m.tets[t]);
+    if (c.norm() < 3 * mm || c.norm() > 4 * mm || c.z() < 1 * mm)
+      continue;
+    ++n_gap;
+    worst = std::max(worst, longest_edge(m, m.tets[t]));
+  }
+  EXPECT_GT(n_gap, 100u);
+  EXPECT_LE(worst, (1 * mm) / 3 * (1 + 1e-9));
+}
+
+// Cylinders of any placement, hollow and solid, a ring of them pointing radially on a sphere
+// (as the thesis's outer magnet of 178 cylinders) and a rotated box.
+TEST(Mesher3D, CylindersOnSphereAndBoxVolumes) {
+  Geometry3D g = domain(60 * mm, 15 * mm, 0.02 * mm);
+  const int n = 6;
+  for (int k = 0; k < n; ++k) {
+    const double theta = pi / 2 + 0.3 * std::sin(k);
+    const double phi = 2 * pi * k / n;
+    const Eigen::Vector3d dir(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                              std::cos(theta));
+    Part3D c;
+    c.name = "cyl" + std::to_string(k);
+    c.shape = Cylinder{k % 2 ? 3 * mm : 0.0, 6 * mm, 6 * mm};
+    c.placement.rotation =
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), dir).toRotationMatrix();
+    c.placement.translation = 35 * mm * dir;
+    g.parts.push_back(c);
+  }
+  Part3D b;
+  b.name = "box";
+  b.shape = Box{Eigen::Vector3d(6 * mm, 4 * mm, 3 * mm)};
+  b.placement = b.placement.rotated(Eigen::Vector3d(1, 2, 3), 0.7, Eigen::Vector3d::Zero());
+  g.parts.push_back(b);
+  const Mesh3D m = build_mesh_3d(g);
+  std::printf("cylinders+box: %zu tets, dihedral %.1f..%.1f\n", m.tets.size(),
+              m.quality.min_dihedral_deg, m.quality.max_dihedral_deg);
+  check_elements(m, 5.0);
+  check_conforming(m);
+  for (int k = 0; k < n; ++k) {
+    const auto& c = std::get<Cylinder>(g.parts[k].shape);
+    const double exact = pi * (c.r_outer * c.r_outer - c.r_inner * c.r_inner) * c.height;
+    // Facets on the 3 and 6 mm radii lose 2 * (mean sagitta) / r, with sagitta <= 0.02 mm
+    // about 0.3 %.
+    EXPECT_NEAR(m.part_volumes[k], exact, 0.005 * exact) << g.parts[k].name;
+  }
+  const double v_box = 6 * 4 * 3 * std::pow(mm, 3);
+  EXPECT_NEAR(m.part_volumes[n], v_box, 1e-9 * v_box);
+}
+
+TEST(Mesher3D, RejectsIntersectingPartsNamingBoth) {
+  Geometry3D g = domain(100 * mm, 20 * mm, 0.5 * mm);
+  g.parts.push_back(segment("shell_a", 40 * mm, 55 * mm, 0, pi / 2, 0, pi / 2));
+  g.parts.push_back(segment("shell_b", 50 * mm, 60 * mm, pi / 4, pi / 2, 0, pi / 4));
+  try {
+    build_mesh_3d(g);
+    FAIL() << "overlapping segments accepted";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("shell_a"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("shell_b"), std::string::npos) << e.what();
+  }
+  // Different frames: a box cutting through a segment.
+  g.parts.pop_back();
+  Part3D b;
+  b.name = "brick";
+  b.shape = Box{Eigen::Vector3d(10 * mm, 10 * mm, 10 * mm)};
+  b.placement.translation = Eigen::Vector3d(30 * mm, 30 * mm, 30 * mm);
+  g.parts.push_back(b);
+  try {
+    build_mesh_3d(g);
+    FAIL() << "box through a segment accepted";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("shell_a"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("brick"), std::string::npos) << e.what();
+  }
+  // A part entirely inside another part of a different frame.
+  g.parts.back().shape = Box{Eigen::Vector3d(2 * mm, 2 * mm, 2 * mm)};
+  g.parts.back().placement.translation = Eigen::Vector3d(25 * mm, 25 * mm, 25 * mm);
+  EXPECT_THROW(build_mesh_3d(g), MeshError);
+}
+
+TEST(Mesher3D, RejectsDegenerateAndOutsideParts) {
+  auto error_of = [](const Geometry3D& g) {
+    try {
+      build_mesh_3d(g);
+    } catch (const MeshError& e) {
+      return e.part + "/" + e.field;
+    }
+    return std::string("accepted");
+  };
+  Geometry3D g = domain(100 * mm, 20 * mm, 0.5 * mm);
+  g.parts.push_back(segment("flat", 40 * mm, 40 * mm, 0, pi / 2, 0, pi / 2));
+  EXPECT_EQ(error_of(g), "flat/r_outer");
+  g.parts[0] = segment("thin", 40 * mm, 50 * mm, pi / 2, pi / 2, 0, pi / 2);
+  EXPECT_EQ(error_of(g), "thin/theta_max");
+  g.parts[0] = segment("wide", 40 * mm, 50 * mm, 0, pi / 2, 0, 3 * pi);
+  EXPECT_EQ(error_of(g), "wide/phi_max");
+  g.parts[0].name = "can";
+  g.parts[0].shape = Cylinder{0, 5 * mm, 0};
+  EXPECT_EQ(error_of(g), "can/height");
+  g.parts[0].name = "brick";
+  g.parts[0].shape = Box{Eigen::Vector3d(1 * mm, 0, 1 * mm)};
+  EXPECT_EQ(error_of(g), "brick/size");
+  g.parts[0] = segment("big", 40 * mm, 120 * mm, 0, pi / 2, 0, pi / 2);
+  EXPECT_EQ(error_of(g), "big/");
+  g.parts[0].name = "far";
+  g.parts[0].shape = Box{Eigen::Vector3d(10 * mm, 10 * mm, 10 * mm)};
+  g.parts[0].placement.translation = Eigen::Vector3d(97 * mm, 0, 0);
+  EXPECT_EQ(error_of(g), "far/");
+}
+
+TEST(Mesher3D, ProbeSphereRefinement) {
+  Geometry3D g = domain(30 * mm, 8 * mm, 0.05 * mm);
+  g.options.probe_size = 0.8 * mm;
+  g.parts.push_back(segment("ball", 0, 10 * mm, 0, pi, 0, 2 * pi));
+  g.parts[0].max_size = 3 * mm;
+  ProbeSurface probe;
+  probe.radius = 12 * mm;
+  probe.theta_min = 0;
+  probe.theta_max = pi / 2;
+  probe.phi_min = 0;
+  probe.phi_max = pi / 2;
+  const Mesh3D m = build_mesh_3d(g, {probe});
+  std::printf("probe: %zu tets\n", m.tets.size());
+  check_elements(m, 5.0);
+  double worst = 0;
+  std::size_t n_band = 0;
+  for (const auto& t : m.tets) {
+    const Eigen::Vector3d c = centroid(m, t);
+    if (std::abs(c.norm() - 12 * mm) > 0.4 * mm || c.minCoeff() < 0.5 * mm)
+      continue;
+    ++n_band;
+    worst = std::max(worst, longest_edge(m, t));
+  }
+  EXPECT_GT(n_band, 1000u);
+  EXPECT_LE(worst, 0.8 * mm * (1 + 1e-9));
+}
+
+// Figures for the report (run with --gtest_also_run_disabled_tests): the 32-magnet benchmark
+// at increasing resolution with the observation patch r = 56 mm, theta, phi in [0, 90] deg.
+TEST(Mesher3D, DISABLED_Benchmark32Timing) {
+  for (double scale : {2.0, 1.4, 1.0, 0.7}) {
+    Geometry3D g = benchmark32(2 * mm, 12 * mm, 0.02 * mm);
+    g.options.probe_size = 1 * mm;
+    g.options.size_scale = scale;
+    ProbeSurface probe;
+    probe.radius = 56 * mm;
+    probe.theta_max = pi / 2;
+    probe.phi_max = pi / 2;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Mesh3D m = build_mesh_3d(g, {probe});
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("benchmark32 scale %.2f: %zu nodes, %zu tets, %.2f s, %.0f tets/s, dihedral "
+                "%.1f..%.1f, radius-edge %.2f\n",
+                scale, m.nodes.size(), m.tets.size(), s, m.tets.size() / s,
+                m.quality.min_dihedral_deg, m.quality.max_dihedral_deg, m.quality.max_radius_edge);
+  }
+}
+
+} // namespace
+} // namespace magfem
