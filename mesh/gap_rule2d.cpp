@@ -118,6 +118,8 @@ GapHit cast(const SegmentGrid& grid, const std::vector<AirBoundary2D>& edges, in
   const int h = grid.first_hit(g.from, e.normal, max_width, k, t);
   if (h < 0 || edges[h].owner == e.owner || e.normal.dot(edges[h].normal) > facing_cos)
     return g;
+  if (t < opt.min_width)
+    return g;
   g.to = g.from + t * e.normal;
   g.size = std::min(1.0, opt.size_scale) * t / opt.layers;
   return g;

@@ -10,6 +10,9 @@
 //     boundary: a slot inside one part is not a gap by this rule), and
 //   - the two boundaries face each other: the angle between the normals exceeds 120 degrees
 //     (so corners and junctions where boundaries merely meet are not gaps).
+// Gaps narrower than min_width (the mesher passes 3 chord tolerances: each outline may be off
+// by one, so such a width is not known) count as contact, not as gaps; without this the cusp
+// between two tangent circles would be refined without end.
 // Each such gap needs an element size h_gap = min(1, size_scale) * d / layers there; gaps so wide
 // that h_gap >= air_size (the background size) are ignored. Samples along a segment are spaced at
 // most h_gap / 2 wherever a gap is seen, and each detected gap becomes a size source: the
@@ -36,6 +39,7 @@ struct GapRuleOptions {
   double size_scale = 1.0;
   double air_size = 0;  // target size of background air (already scaled), metres
   double grading = 0.5; // slope of the size field the sources will feed
+  double min_width = 0; // narrower gaps are taken as contact (the outlines are not exact)
 };
 
 // Size sources (segments across every detected gap); empty when there is no thin gap.

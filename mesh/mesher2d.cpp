@@ -22,6 +22,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include "core/constants.hpp"
+#include "mesh/constraint_set2d.hpp"
 #include "mesh/gap_rule2d.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_finish2d.hpp"
@@ -46,6 +47,10 @@ using VertexHandle = CDT::Vertex_handle;
 
 constexpr double grading = 0.5;            // size-field slope (see size_field2d.hpp)
 constexpr double max_min_angle_deg = 30.0; // cap of the quality bound (terminates in practice)
+// CGAL is asked for this much more than the promised bound: moving the vertices it adds on an
+// outer chord onto the circle (by up to the sagitta) tilts the triangles there slightly.
+constexpr double angle_margin_deg = 1.0;
+constexpr double min_gap_tolerances = 3.0; // narrower gaps count as contact (gap_rule2d.hpp)
 constexpr std::size_t max_vertices = 5'000'000;
 constexpr int steps_between_checks = 4096;
 
@@ -108,21 +113,14 @@ private:
   const SizeField2D* field_;
 };
 
-void insert_loops(CDT& cdt, const std::vector<std::vector<Vec2>>& loops) {
-  for (const auto& loop : loops) {
-    std::vector<VertexHandle> vs;
-    FaceHandle hint;
-    for (const Vec2& v : loop) {
-      vs.push_back(cdt.insert(to_point(v), hint));
-      hint = vs.back()->face();
-    }
-    for (std::size_t i = 0; i < vs.size(); ++i)
-      if (vs[i] != vs[(i + 1) % vs.size()])
-        cdt.insert_constraint(vs[i], vs[(i + 1) % vs.size()]);
-  }
+// Vertices of different outlines closer than this are one vertex (see constraint_set2d.hpp):
+// a hundredth of the smallest size the field can ask for.
+double merge_distance(const Geometry2D& g) {
+  const MeshOptions2D& o = g.options;
+  return 0.01 * std::min(1.0, o.size_scale) * o.chord_tolerance / o.gap_layers;
 }
 
-void insert_outlines(CDT& cdt, const RegionMap2D& map) {
+void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge) {
   // A square frame around the outermost circle keeps that circle off the convex hull: a point
   // CGAL puts on a hull edge by rounding lands just outside it and leaves a flat triangle.
   const Outline2D& outer = map.shell() ? *map.shell() : map.domain();
@@ -130,11 +128,22 @@ void insert_outlines(CDT& cdt, const RegionMap2D& map) {
   for (const Vec2& corner :
        {Vec2(-frame, -frame), Vec2(frame, -frame), Vec2(frame, frame), Vec2(-frame, frame)})
     cdt.insert(to_point(corner));
-  insert_loops(cdt, map.domain().loops());
+  std::vector<std::vector<Vec2>> loops = map.domain().loops();
   if (map.shell())
-    insert_loops(cdt, map.shell()->loops());
+    loops.push_back(map.shell()->loops().front());
   for (std::size_t i = 0; i < map.n_parts(); ++i)
-    insert_loops(cdt, map.part(i).loops());
+    for (const auto& loop : map.part(i).loops())
+      loops.push_back(loop);
+  const ConstraintSet2D set = build_constraint_set(loops, merge);
+  std::vector<VertexHandle> vs;
+  FaceHandle hint;
+  for (const Vec2& p : set.points) {
+    vs.push_back(cdt.insert(to_point(p), hint));
+    hint = vs.back()->face();
+  }
+  for (const auto& s : set.segments)
+    if (vs[s[0]] != vs[s[1]])
+      cdt.insert_constraint(vs[s[0]], vs[s[1]]);
 }
 
 // Faces separated by no constraint share a region. Each such component is classified once, at
@@ -208,13 +217,14 @@ void collect_interfaces(const CDT& cdt, const RegionMap2D& map, std::vector<Size
 // Pass 1: the size field from interfaces and gaps of the outlines at their own sizes.
 SizeField2D build_size_field(const Geometry2D& g, const RegionMap2D& coarse) {
   CDT cdt;
-  insert_outlines(cdt, coarse);
+  insert_outlines(cdt, coarse, merge_distance(g));
   classify(cdt, coarse);
   std::vector<SizeSource2D> sources;
   std::vector<AirBoundary2D> air;
   collect_interfaces(cdt, coarse, sources, air);
   const MeshOptions2D& o = g.options;
-  const GapRuleOptions gap{o.gap_layers, o.size_scale, coarse.size_of(region_background), grading};
+  const GapRuleOptions gap{o.gap_layers, o.size_scale, coarse.size_of(region_background), grading,
+                           min_gap_tolerances * o.chord_tolerance};
   const auto gaps = gap_sources(air, gap);
   sources.insert(sources.end(), gaps.begin(), gaps.end());
   const double floor = std::min(1.0, o.size_scale) * o.chord_tolerance / o.gap_layers;
@@ -249,7 +259,8 @@ void drop_hidden_constraints(CDT& cdt) {
 }
 
 void refine(CDT& cdt, const Geometry2D& g, const SizeField2D& field) {
-  const double angle = std::min(g.options.min_angle_deg, max_min_angle_deg) * deg_to_rad;
+  const double angle =
+      (std::min(g.options.min_angle_deg, max_min_angle_deg) + angle_margin_deg) * deg_to_rad;
   const FieldCriteria criteria(std::sin(angle) * std::sin(angle), field);
   CGAL::Delaunay_mesher_2<CDT, FieldCriteria> mesher(cdt, criteria);
   mesher.init();
@@ -335,7 +346,7 @@ Mesh2D build_mesh_2d(const Geometry2D& g) {
       coarse.shell_size());
   try {
     CDT cdt;
-    insert_outlines(cdt, map);
+    insert_outlines(cdt, map, merge_distance(g));
     classify(cdt, map);
     drop_hidden_constraints(cdt);
     refine(cdt, g, field);

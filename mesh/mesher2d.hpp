@@ -3,34 +3,38 @@
 // Mesh2D with a part index per triangle. CGAL stays inside mesher2d.cpp.
 //
 // What the mesh promises (SI metres):
-// - Boundaries: every arc is cut into chords at uniform angles with sagitta <= chord_tolerance
-//   and chord length <= the local target size (the smaller of the two sides' sizes, including
-//   the gap rule); the achieved maximum sagitta is Mesh2D::quality.max_sagitta. Straight edges
-//   are split to the local size. CGAL may split boundary chords further (never off the chord).
-// - Regions: a triangle belongs to the last part whose polygonal outline contains its centroid,
-//   else region_background inside the domain disk, else region_shell. The polygons are exactly
-//   the inserted constraints, so each region's area equals its polygon's area up to round-off
-//   (and differs from the exact area by at most perimeter * max_sagitta). Parts overridden
-//   where later parts lie on them keep no constraint there.
+// - Boundaries: every arc is cut into chords with sagitta <= chord_tolerance and chord length
+//   <= the local target size (the smaller of the two sides' sizes, including the gap rule);
+//   Mesh2D::quality.max_sagitta is the achieved maximum. A circle alone is cut at uniformly
+//   spaced angles from angle 0; parts meeting on a circle share its vertices, and sector
+//   corners on it replace the nearest uniform angle (circle_set2d.hpp). Straight edges are split
+//   to the local size. CGAL may split boundary chords further (on the chord).
+// - Regions: a triangle belongs to the last part whose polygonal outline contains it, else
+//   region_background inside the domain disk, else region_shell. The polygons are exactly the
+//   inserted constraints, so each region's area equals its polygon's area up to round-off and
+//   differs from the exact area by at most (arc length * max_sagitta). Edges of parts hidden
+//   under later parts are not constraints. Vertices of different parts closer than 1 % of the
+//   smallest possible size are merged (touching parts, constraint_set2d.hpp).
 // - Sizes: the longest edge of a triangle is at most h(centroid), where h is the region's size
 //   (part max_size or default_size, times size_scale), lowered near finer neighbours and graded
-//   away from them with slope 0.5 (neighbouring elements differ by about 1.5x at most), and
-//   lowered by the air-gap rule (see gap_rule2d.hpp): at least gap_layers elements across every
-//   air gap between two different parts or between a part and the domain boundary. Sizes never
-//   drop below min(1, size_scale) * chord_tolerance / gap_layers.
-// - Quality: minimum angle >= min(min_angle_deg, 30) degrees except next to input corners and
-//   constraint crossings sharper than that (CGAL proves termination up to 20.7 degrees; up to 30
-//   it terminates in practice; 28 is the default).
-// - Open boundary: the shell R1 <= r <= R2 = shell_ratio R1 is meshed with size
-//   min(R1 chord length, (R2 - R1) / 4), so at least 4 layers radially; the R1 circle is one
-//   constraint shared by both sides (conforming). Vertices on the outer circles lie exactly on
-//   them: a vertex CGAL adds on an outer chord is moved radially onto the circle (by at most
-//   the sagitta). outer_edges are the R2 edges (open) or the R1 edges (dirichlet/neumann),
-//   oriented counter-clockwise (domain on the left).
-// - Triangles are counter-clockwise; quality holds the min/max angle and the min area.
+//   away from them with slope 0.5 (size_field2d.hpp), and lowered by the air-gap rule
+//   (gap_rule2d.hpp): at least gap_layers elements across every air gap between two different
+//   parts, or a part and the domain boundary, that is wider than 3 chord tolerances (narrower
+//   ones count as contact). h never drops below min(1, size_scale) * chord_tolerance / gap_layers.
+// - Quality: minimum angle >= min(min_angle_deg, 30) degrees (CGAL is asked for 1 degree more to
+//   absorb the snapping below; it proves termination up to 20.7 degrees and terminates in
+//   practice up to ~33), except next to sharper input corners, crossings and tangencies.
+// - Open boundary: the shell R1 <= r <= R2 = shell_ratio R1 gets the size
+//   min(R1 chord length, (R2 - R1) / 4 * min(1, size_scale)), hence at least 4 layers radially;
+//   the R1 circle is one constraint shared by both sides (conforming). Vertices on the outer
+//   circles lie exactly on them: a vertex CGAL adds on an outer chord is moved radially onto
+//   the circle (by at most the sagitta). outer_edges are the R2 edges (open) or the R1 edges
+//   (dirichlet/neumann), oriented counter-clockwise (domain on the left).
+// - Triangles are counter-clockwise; quality holds the min/max angle, the min area and the max
+//   sagitta. Nothing is printed.
 // Throws MeshError naming the part (and field) for invalid input, a part reaching beyond the
 // domain, a part with no element (covered by later parts), a mesh of more than 5 million
-// vertices, or a mesh CGAL cannot build. Prints nothing.
+// vertices, or a mesh CGAL cannot build.
 #include "mesh/geometry2d.hpp"
 #include "mesh/mesh2d.hpp"
 
