@@ -347,6 +347,14 @@ std::vector<Eigen::Vector3d> HarmonicModel::B(const std::vector<Eigen::Vector3d>
   return out;
 }
 
+std::vector<Eigen::Vector3d> HarmonicModel::H(const std::vector<Eigen::Vector3d>& x) const {
+  std::vector<Eigen::Vector3d> h = B(x);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    h[i] = h[i] / mu0 - magnetization_at(x[i]);
+  }
+  return h;
+}
+
 Eigen::Vector3d HarmonicModel::B(const Eigen::Vector3d& x) const {
   return B(std::vector<Eigen::Vector3d>{x}).front();
 }

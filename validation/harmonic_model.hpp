@@ -64,6 +64,10 @@ public:
   // std::domain_error.
   Eigen::Vector3d B(const Eigen::Vector3d& x) const;
   std::vector<Eigen::Vector3d> B(const std::vector<Eigen::Vector3d>& x) const;
+  // Field strength H = B / mu0 - M (A/m), same rules.
+  std::vector<Eigen::Vector3d> H(const std::vector<Eigen::Vector3d>& x) const;
+  // Magnetization (A/m) at x: that of the segment containing x (faces belong to one side).
+  Eigen::Vector3d magnetization(const Eigen::Vector3d& x) const { return magnetization_at(x); }
 
   int n_max() const { return options_.n_max; }
   double r_inner() const { return r_inner_; }

@@ -113,6 +113,14 @@ TEST(HarmonicModel, UniformShellInPermeableSphereAddsUniformImageField) {
     }
   }
   EXPECT_THROW(model.B(Eigen::Vector3d(0, 0, 1.01 * r_s)), std::domain_error);
+  // In the magnet H is the exact field strength B_exact / mu0 - M (-M/3 of the big sphere,
+  // the cavity's dipole and the image field), M the segment's own magnetization.
+  const Eigen::Vector3d xm(0.0, 0.047, 0.0);
+  const Eigen::Vector3d h_exact =
+      (uniform_shell_B(xm, Eigen::Vector3d::Zero(), r_in, r_out, B_r * dir) + image) / mu0 -
+      B_r / mu0 * dir;
+  EXPECT_LT((model.H({xm}).front() - h_exact).norm(), 1e-11 * B_r / mu0);
+  EXPECT_LT((model.magnetization(xm) - B_r / mu0 * dir).norm(), 1e-9);
 }
 
 // A closed shell magnetized radially with one sign has B = 0 everywhere (H = -M in the
