@@ -24,26 +24,6 @@ std::uint64_t key(int a, int b) {
   return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
 }
 
-// Neighbour of each triangle across each edge k (from vertex k to vertex k + 1), -1 on the
-// boundary. Sorting the edge keys is cheaper than a hash map at these sizes.
-std::vector<std::array<int, 3>> neighbours(const Mesh2D& m) {
-  std::vector<std::pair<std::uint64_t, int>> half; // (edge key, 3 * triangle + k)
-  half.reserve(3 * m.triangles.size());
-  for (int t = 0; t < int(m.triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k)
-      half.emplace_back(key(m.triangles[t][k], m.triangles[t][(k + 1) % 3]), 3 * t + k);
-  std::sort(half.begin(), half.end());
-  std::vector<std::array<int, 3>> nb(m.triangles.size(), {-1, -1, -1});
-  for (std::size_t i = 0; i + 1 < half.size(); ++i)
-    if (half[i].first == half[i + 1].first) {
-      const int p = half[i].second, q = half[i + 1].second;
-      nb[p / 3][p % 3] = q / 3;
-      nb[q / 3][q % 3] = p / 3;
-      ++i;
-    }
-  return nb;
-}
-
 // Index k of the edge from u to v (either direction) in triangle t, -1 when absent.
 int edge_index(const std::array<int, 3>& t, int u, int v) {
   for (int k = 0; k < 3; ++k)
@@ -54,7 +34,25 @@ int edge_index(const std::array<int, 3>& t, int u, int v) {
 
 } // namespace
 
-int remove_slivers(Mesh2D& m) {
+Neighbours2D neighbours(const Mesh2D& m) {
+  std::vector<std::pair<std::uint64_t, int>> half; // (edge key, 3 * triangle + k)
+  half.reserve(3 * m.triangles.size());
+  for (int t = 0; t < int(m.triangles.size()); ++t)
+    for (int k = 0; k < 3; ++k)
+      half.emplace_back(key(m.triangles[t][k], m.triangles[t][(k + 1) % 3]), 3 * t + k);
+  std::sort(half.begin(), half.end());
+  Neighbours2D nb(m.triangles.size(), {-1, -1, -1});
+  for (std::size_t i = 0; i + 1 < half.size(); ++i)
+    if (half[i].first == half[i + 1].first) {
+      const int p = half[i].second, q = half[i + 1].second;
+      nb[p / 3][p % 3] = q / 3;
+      nb[q / 3][q % 3] = p / 3;
+      ++i;
+    }
+  return nb;
+}
+
+int remove_slivers(Mesh2D& m, Neighbours2D& nb) {
   const auto flat = [&m](const std::array<int, 3>& v) {
     double l2 = 0;
     for (int k = 0; k < 3; ++k)
@@ -67,14 +65,20 @@ int remove_slivers(Mesh2D& m) {
       slivers.push_back(t);
   if (slivers.empty())
     return 0;
-  const auto nb = neighbours(m);
-  const std::size_t n_original = m.triangles.size();
-  std::vector<char> dead(n_original, 0);
+  // Points the neighbour of t across edge u-v (if any) from `from` to `to`.
+  const auto repoint = [&](int t, int u, int v, int from, int to) {
+    if (t < 0)
+      return;
+    const int k = edge_index(m.triangles[t], u, v);
+    if (k >= 0 && nb[t][k] == from)
+      nb[t][k] = to;
+  };
+  std::vector<char> dead(m.triangles.size(), 0);
   for (int s : slivers) {
     const auto v = m.triangles[s];
     if (!flat(v))
       continue; // rebuilt by a neighbouring sliver's split
-    // Middle vertex c opposite the longest edge a-b.
+    // Middle vertex c opposite the longest edge a-b: v = (c, a, b) rotated.
     int k = 0;
     double best = -1;
     for (int j = 0; j < 3; ++j) {
@@ -83,39 +87,52 @@ int remove_slivers(Mesh2D& m) {
         best = l2, k = j;
     }
     const int c = v[k], a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+    const int t_ca = nb[s][k], n = nb[s][(k + 1) % 3], t_bc = nb[s][(k + 2) % 3];
     dead[s] = 1;
-    // The neighbour across a-b; an earlier split may have moved that edge to an added triangle.
-    int n = nb[s][(k + 1) % 3];
-    if (n >= 0 && (dead[n] || edge_index(m.triangles[n], a, b) < 0)) {
-      n = -1;
-      for (std::size_t t = n_original; t < m.triangles.size(); ++t)
-        if (!dead[t] && edge_index(m.triangles[t], a, b) >= 0)
-          n = int(t);
+    if (n < 0) { // a-b is on the boundary: c already lies on it, b-c and c-a become boundary
+      repoint(t_bc, b, c, s, -1);
+      repoint(t_ca, c, a, s, -1);
+      continue;
     }
-    if (n < 0)
-      continue; // a-b is on the boundary: c already lies on it
     // Split the neighbour (b, a, y) at c into (b, c, y) and (c, a, y); orientation is kept.
     auto tn = m.triangles[n];
-    std::rotate(tn.begin(), tn.begin() + edge_index(tn, a, b), tn.end());
-    const int y = tn[2];
+    auto nbn = nb[n];
+    const int j = edge_index(tn, a, b);
+    std::rotate(tn.begin(), tn.begin() + j, tn.end());
+    std::rotate(nbn.begin(), nbn.begin() + j, nbn.end()); // nbn: across b-a, a-y, y-b
+    const int y = tn[2], fresh = int(m.triangles.size());
     m.triangles[n] = {b, c, y};
+    nb[n] = {t_bc, fresh, nbn[2]};
     m.triangles.push_back({c, a, y});
+    nb.push_back({t_ca, nbn[1], n});
     m.triangle_part.push_back(m.triangle_part[n]);
     dead.push_back(0);
+    repoint(t_bc, b, c, s, n);
+    repoint(t_ca, c, a, s, fresh);
+    repoint(nbn[1], a, y, n, fresh);
   }
-  std::size_t w = 0;
+  // Compact, renumbering the neighbours.
+  std::vector<int> new_index(m.triangles.size(), -1);
+  int w = 0;
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    if (!dead[t]) {
-      m.triangles[w] = m.triangles[t];
-      m.triangle_part[w++] = m.triangle_part[t];
-    }
+    if (!dead[t])
+      new_index[t] = w++;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    if (dead[t])
+      continue;
+    const int i = new_index[t];
+    m.triangles[i] = m.triangles[t];
+    m.triangle_part[i] = m.triangle_part[t];
+    for (int e = 0; e < 3; ++e)
+      nb[i][e] = nb[t][e] < 0 ? -1 : new_index[nb[t][e]];
+  }
   m.triangles.resize(w);
   m.triangle_part.resize(w);
+  nb.resize(w);
   return int(slivers.size());
 }
 
-std::vector<std::array<int, 2>> boundary_edges(const Mesh2D& m) {
-  const auto nb = neighbours(m);
+std::vector<std::array<int, 2>> boundary_edges(const Mesh2D& m, const Neighbours2D& nb) {
   std::vector<std::array<int, 2>> out;
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
@@ -124,8 +141,8 @@ std::vector<std::array<int, 2>> boundary_edges(const Mesh2D& m) {
   return out;
 }
 
-std::vector<std::array<int, 2>> interface_edges(const Mesh2D& m, int region) {
-  const auto nb = neighbours(m);
+std::vector<std::array<int, 2>> interface_edges(const Mesh2D& m, const Neighbours2D& nb,
+                                                int region) {
   std::vector<std::array<int, 2>> out;
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     if (m.triangle_part[t] != region)

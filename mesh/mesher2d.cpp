@@ -293,20 +293,33 @@ Mesh2D export_mesh(CDT& cdt, const Geometry2D& g, const RegionMap2D& map) {
     }
     return v->info();
   };
+  // Kept faces get their triangle index as info (regions move to triangle_part), so that the
+  // adjacency comes straight from CGAL.
+  std::vector<FaceHandle> faces;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if (f->info() == region_outside)
+    if (f->info() == region_outside) {
+      f->info() = -1;
       continue;
+    }
     mesh.triangles.push_back({index(f->vertex(0)), index(f->vertex(1)), index(f->vertex(2))});
     mesh.triangle_part.push_back(f->info());
+    f->info() = int(faces.size());
+    faces.push_back(f);
   }
-  remove_slivers(mesh);
-  mesh.outer_edges = boundary_edges(mesh);
+  Neighbours2D nb(faces.size());
+  for (std::size_t t = 0; t < faces.size(); ++t)
+    for (int k = 0; k < 3; ++k) { // edge k runs from vertex k to k + 1, opposite vertex k + 2
+      const FaceHandle n = faces[t]->neighbor((k + 2) % 3);
+      nb[t][k] = cdt.is_infinite(n) ? -1 : n->info();
+    }
+  remove_slivers(mesh, nb);
+  mesh.outer_edges = boundary_edges(mesh, nb);
   const double r1 = g.outer.radius;
   if (g.outer.kind == OuterKind::open) {
     mesh.shell_inner_radius = r1;
     mesh.shell_outer_radius = g.outer.shell_ratio * r1;
     snap_to_circle(mesh, mesh.outer_edges, mesh.shell_outer_radius);
-    snap_to_circle(mesh, interface_edges(mesh, region_shell), r1);
+    snap_to_circle(mesh, interface_edges(mesh, nb, region_shell), r1);
   } else {
     snap_to_circle(mesh, mesh.outer_edges, r1);
   }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <map>
 #include <numbers>
 #include <string>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh/mesh_error.hpp"
+#include "mesh/mesh_finish2d.hpp"
 #include "mesh/mesher2d.hpp"
 
 namespace magfem {
@@ -302,6 +304,22 @@ TEST(Mesher2D, SizesGradeAwayFromAFinePart) {
   EXPECT_GT(n_far, 0); // the air does coarsen to its own size far away
 }
 
+TEST(Mesher2D, TouchingPartsStayCheap) {
+  // A disk resting on a rectangle: their outlines touch at one point, where the rectangle's
+  // split point and the disk's lowest chord vertex are a hair apart. They are merged, and the
+  // cusp narrower than 3 chord tolerances counts as contact, so the mesh stays small.
+  Geometry2D g = base_geometry(OuterKind::open, 25 * mm);
+  g.parts.push_back({"plate", Rectangle{Vec2(0, -3 * mm), 10 * mm, 6 * mm, 0}, 0.5 * mm});
+  g.parts.push_back({"disk", Disk{Vec2(0, 2 * mm), 2 * mm}, 0.5 * mm});
+  const Mesh2D m = build_mesh_2d(g);
+  EXPECT_LT(m.n_triangles(), 60000u); // ~43k; unmerged, femtometre features cost millions
+  EXPECT_GT(m.quality.min_area, 0.0);
+  const auto areas = region_areas(m);
+  // The merge moves a vertex by < 1e-9 m, changing areas by far less than 1e-8 relative.
+  EXPECT_NEAR(areas.at(0), 60 * mm * mm, 1e-8 * 60 * mm * mm);
+  EXPECT_NEAR(areas.at(1), pi * 4 * mm * mm, 2 * pi * 2 * mm * m.quality.max_sagitta);
+}
+
 // Share of a segment's length inside a triangle (Cyrus-Beck clipping).
 double clipped_length(const Mesh2D& m, std::size_t t, const Vec2& p, const Vec2& q) {
   double t0 = 0, t1 = 1;
@@ -370,6 +388,27 @@ TEST(Mesher2D, HalvingSizeScaleRoughlyQuadruplesTriangles) {
   // 4 for a self-similar mesh; boundary layers and CGAL's refinement order move it slightly.
   EXPECT_GT(ratio, 3.4);
   EXPECT_LT(ratio, 4.6);
+}
+
+TEST(MeshFinish2D, SliverIsRemovedBySplittingItsNeighbour) {
+  // c lies a hair above edge a-b: the flat triangle (a, b, c) goes, (b, a, y) is split at c.
+  Mesh2D m;
+  m.nodes = {Vec2(0, 0), Vec2(2, 0), Vec2(1, 1e-13), Vec2(1, -1), Vec2(1, 1)}; // a b c y x
+  m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 2, 4}, {2, 1, 4}};
+  m.triangle_part = {7, 5, 6, 6};
+  Neighbours2D nb = neighbours(m);
+  EXPECT_EQ(remove_slivers(m, nb), 1);
+  ASSERT_EQ(m.n_triangles(), 4u);
+  double area = 0;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    EXPECT_GT(triangle_area(m, t), 0.25);
+    EXPECT_NE(m.triangle_part[t], 7);
+    area += triangle_area(m, t);
+  }
+  EXPECT_NEAR(area, 2.0, 1e-12);
+  EXPECT_EQ(nb, neighbours(m)); // the adjacency was kept up to date
+  EXPECT_EQ(boundary_edges(m, nb).size(), 4u);
+  EXPECT_EQ(interface_edges(m, nb, 5).size(), 2u); // the two halves of a-b
 }
 
 template <class F>
@@ -442,17 +481,22 @@ TEST(Mesher2D, BadInputThrowsMeshErrorNamingThePart) {
   expect_mesh_error([&] { build_mesh_2d(g); }, "", "default_size");
 }
 
-// Speed figure (run with --gtest_also_run_disabled_tests): about 50k triangles.
+// Speed figure (run with --gtest_also_run_disabled_tests): about 50k triangles. CPU time is
+// asserted because the wall time depends on what else the shared machine runs.
 TEST(Mesher2D, DISABLED_Benchmark50kTriangles) {
   Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
   g.options.default_size = 0.5 * mm;
   g.parts.push_back({"magnet", Disk{Vec2::Zero(), 10 * mm}, 0});
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   const Mesh2D m = build_mesh_2d(g);
+  const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("mesher2d: %zu nodes, %zu triangles in %.3f s, min angle %.2f deg, max %.2f deg\n",
-              m.n_nodes(), m.n_triangles(), s, m.quality.min_angle_deg, m.quality.max_angle_deg);
-  EXPECT_LT(s, 1.0);
+  std::printf("mesher2d: %zu nodes, %zu triangles in %.3f s wall, %.3f s CPU, min angle %.2f "
+              "deg, max %.2f deg\n",
+              m.n_nodes(), m.n_triangles(), s, cpu, m.quality.min_angle_deg,
+              m.quality.max_angle_deg);
+  EXPECT_LT(cpu, 1.0);
 }
 
 } // namespace
