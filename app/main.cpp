@@ -8,21 +8,30 @@
 #include <vector>
 
 #include "app/run2d.hpp"
+#include "app/run_analytic.hpp"
 #include "core/input_error.hpp"
+#include "postproc/probe_compare.hpp"
 
 namespace {
 
 constexpr const char* usage =
     "usage: magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]\n"
+    "       magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] [--n-max N]\n"
+    "       magfem compare REFERENCE.csv TEST.csv\n"
     "\n"
-    "  solve    mesh and solve a case, write summary.json, one CSV per probe and\n"
-    "           solution.vtu into DIR (default: out/<case name>)\n";
+    "  solve     mesh and solve a case (FE), write summary.json, one CSV per probe and\n"
+    "            solution.vtu into DIR (default: out/<case name>)\n"
+    "  analytic  the same probes from the analytic models (3D magnets in air, permeable\n"
+    "            spheres): charge model with imaging, or spherical harmonics\n"
+    "  compare   per field component: eq. 3.117 rms discrepancy and pointwise rms error\n";
 
 struct Args {
   std::string command;
   std::string case_file;
   std::string out_dir;
+  std::vector<std::string> positional;
   magfem::RunOverrides overrides;
+  magfem::AnalyticOptions analytic;
 };
 
 double parse_number(const std::string& option, const char* text) {
@@ -49,11 +58,16 @@ Args parse_args(int argc, char** argv) {
     if (arg == "--out") a.out_dir = value();
     else if (arg == "--order") a.overrides.order = static_cast<int>(parse_number(arg, value()));
     else if (arg == "--mesh-scale") a.overrides.mesh_scale = parse_number(arg, value());
+    else if (arg == "--model") a.analytic.model = value();
+    else if (arg == "--tolerance") a.analytic.tolerance = parse_number(arg, value());
+    else if (arg == "--n-max") a.analytic.n_max = static_cast<int>(parse_number(arg, value()));
     else if (arg.rfind("--", 0) == 0) throw magfem::InputError("<command line>", 0, arg, "unknown option");
     else positional.push_back(arg);
   }
-  if (positional.size() != 1)
-    throw magfem::InputError("<command line>", 0, "", std::string("expected one case file\n") + usage);
+  a.positional = positional;
+  const std::size_t wanted = a.command == "compare" ? 2 : 1;
+  if (positional.size() != wanted)
+    throw magfem::InputError("<command line>", 0, "", std::string("wrong number of arguments\n") + usage);
   a.case_file = positional[0];
   if (a.out_dir.empty())
     a.out_dir = (std::filesystem::path("out") / std::filesystem::path(a.case_file).stem()).string();
@@ -74,6 +88,34 @@ int run_solve(const Args& args) {
   return 0;
 }
 
+int run_analytic(const Args& args) {
+  auto run = magfem::run_case_analytic(magfem::read_case(args.case_file), args.analytic);
+  std::cout << magfem::describe_analytic(*run);
+  magfem::write_outputs_analytic(*run, args.out_dir);
+  std::cout << "wrote    " << args.out_dir << "/summary.json";
+  for (const auto& p : run->probes) std::cout << ", " << p.name << ".csv";
+  std::cout << "\n";
+  return 0;
+}
+
+int run_compare(const Args& args) {
+  const auto ref = magfem::read_probe_csv(args.positional[0]);
+  const auto test = magfem::read_probe_csv(args.positional[1]);
+  std::vector<magfem::ComponentComparison> rows;
+  try {
+    rows = magfem::compare_probes(ref, test);
+  } catch (const std::invalid_argument& e) {
+    throw magfem::InputError(args.positional[1], 0, "", e.what());
+  }
+  std::printf("%zu points; reference %s\n", ref.rows.size(), args.positional[0].c_str());
+  std::printf("%-8s %12s %12s %16s %16s %12s\n", "comp", "rms_ref_T", "rms_test_T",
+              "eq3.117_pct", "pointwise_pct", "max_diff_T");
+  for (const auto& c : rows)
+    std::printf("%-8s %12.6g %12.6g %16.4f %16.4f %12.4g\n", c.component.c_str(), c.rms_reference,
+                c.rms_test, 100 * c.discrepancy_3117, 100 * c.pointwise_rms, c.max_abs_difference);
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -84,6 +126,8 @@ int main(int argc, char** argv) {
     }
     const Args args = parse_args(argc, argv);
     if (args.command == "solve") return run_solve(args);
+    if (args.command == "analytic") return run_analytic(args);
+    if (args.command == "compare") return run_compare(args);
     throw magfem::InputError("<command line>", 0, "", "unknown command '" + args.command + "'\n" + usage);
   } catch (const magfem::InputError& e) {
     std::cerr << "magfem: error: " << e.what() << "\n";

@@ -1,0 +1,34 @@
+#pragma once
+// `magfem analytic`: the same case file and probes, answered by the analytic models
+// (charge model with imaging by default, spherical harmonic model on request), written as
+// the same CSVs, so FE and analytic results can be compared point by point.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/analytic_scene.hpp"
+#include "postproc/probe_table.hpp"
+
+namespace magfem {
+
+struct AnalyticOptions {
+  std::string model = "charge"; // charge | harmonic
+  double tolerance = 1e-6;      // charge model: relative quadrature tolerance
+  int n_max = 150;              // harmonic model: highest degree
+};
+
+struct AnalyticRun {
+  CaseSpec spec;
+  AnalyticScene scene;
+  AnalyticOptions options;
+  std::vector<ProbeTable> probes;
+  std::size_t n_points = 0;
+  double setup_s = 0, evaluate_s = 0, total_s = 0;
+};
+
+std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOptions& options);
+void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path& out_dir);
+std::string describe_analytic(const AnalyticRun& run);
+
+} // namespace magfem

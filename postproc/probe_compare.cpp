@@ -1,0 +1,105 @@
+#include "postproc/probe_compare.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/input_error.hpp"
+
+namespace magfem {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(cell);
+  return out;
+}
+
+bool is_field_component(const std::string& c) { return !c.empty() && c[0] == 'B'; }
+
+} // namespace
+
+ProbeTable read_probe_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "", "cannot open the file");
+  ProbeTable t;
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(path, 1, "", "empty file");
+  t.columns = split(line);
+  int n = 1;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty()) continue;
+    const auto cells = split(line);
+    if (cells.size() != t.columns.size())
+      throw InputError(path, n, "", "expected " + std::to_string(t.columns.size()) + " values");
+    std::vector<double> row;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      try {
+        std::size_t used = 0;
+        row.push_back(std::stod(cells[i], &used));
+        if (used != cells[i].size()) throw std::invalid_argument(cells[i]);
+      } catch (const std::exception&) {
+        throw InputError(path, n, t.columns[i], "not a number: '" + cells[i] + "'");
+      }
+    }
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+std::vector<ComponentComparison> compare_probes(const ProbeTable& ref, const ProbeTable& test) {
+  if (ref.rows.size() != test.rows.size())
+    throw std::invalid_argument("the probes have different numbers of points (" +
+                                std::to_string(ref.rows.size()) + " and " + std::to_string(test.rows.size()) + ")");
+  // Same sample points: compare the coordinate columns both tables have.
+  double extent = 0, mismatch = 0;
+  for (const char* c : {"x", "y", "z"}) {
+    std::size_t a = 0, b = 0;
+    try {
+      a = ref.column(c);
+      b = test.column(c);
+    } catch (const std::out_of_range&) {
+      continue;
+    }
+    for (std::size_t i = 0; i < ref.rows.size(); ++i) {
+      extent = std::max(extent, std::abs(ref.rows[i][a]));
+      mismatch = std::max(mismatch, std::abs(ref.rows[i][a] - test.rows[i][b]));
+    }
+  }
+  if (mismatch > 1e-6 * std::max(extent, 1e-30))
+    throw std::invalid_argument("the probes do not sample the same points");
+
+  std::vector<ComponentComparison> out;
+  for (std::size_t k = 0; k < ref.columns.size(); ++k) {
+    if (!is_field_component(ref.columns[k])) continue;
+    std::size_t kt = 0;
+    try {
+      kt = test.column(ref.columns[k]);
+    } catch (const std::out_of_range&) {
+      continue;
+    }
+    ComponentComparison c;
+    c.component = ref.columns[k];
+    double sr = 0, st = 0, sd = 0;
+    for (std::size_t i = 0; i < ref.rows.size(); ++i) {
+      const double r = ref.rows[i][k], t = test.rows[i][kt];
+      sr += r * r;
+      st += t * t;
+      sd += (t - r) * (t - r);
+      c.max_abs_difference = std::max(c.max_abs_difference, std::abs(t - r));
+    }
+    const double n = static_cast<double>(ref.rows.size());
+    c.rms_reference = std::sqrt(sr / n);
+    c.rms_test = std::sqrt(st / n);
+    c.discrepancy_3117 = c.rms_reference > 0 ? (c.rms_reference - c.rms_test) / c.rms_reference : 0;
+    c.pointwise_rms = c.rms_reference > 0 ? std::sqrt(sd / n) / c.rms_reference : 0;
+    out.push_back(c);
+  }
+  return out;
+}
+
+} // namespace magfem

@@ -1,0 +1,17 @@
+#pragma once
+// A 3D probe's CSV table from field values already computed at probe_points_3d(probe), for
+// field sources other than the FE solution (the analytic models). Same columns as
+// sample_probe_3d: line/points x,y,z,Bx,By,Bz; sphere theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "postproc/probe_spec.hpp"
+#include "postproc/probe_table.hpp"
+
+namespace magfem {
+
+ProbeTable tabulate_probe_3d(const ProbeSpec& probe, const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<Eigen::Vector3d>& B, double length_unit);
+
+} // namespace magfem
