@@ -47,17 +47,6 @@ void add_current_kernel(const PointCurrent* begin, const PointCurrent* end, cons
   sum += acc;
 }
 
-// Distance/radius ratio at which a Gauss rule of `order` points has relative error about
-// `tolerance` for a 1/r^2-type singularity: Bernstein ellipse parameter
-// rho_B = (1 / tol)^(1/(2n)), distance in half-lengths cosh(ln rho_B), with the box radius
-// standing in for the half-length. The margins this leaves (the radius exceeds the
-// half-length, the worst direction is rare) were calibrated on the benchmark: the maximum
-// field error relative to the peak field then stays below `tolerance` (tested).
-double acceptance_ratio(double tolerance, int order) {
-  const double t = std::log(1.0 / tolerance) / (2.0 * order);
-  return std::max(1.0, std::cosh(t));
-}
-
 } // namespace
 
 ChargeModel::ChargeModel(std::vector<AnalyticMagnet> magnets, std::vector<PermeableSphere> spheres,

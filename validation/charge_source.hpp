@@ -99,6 +99,11 @@ BoxExtent box_extent(const ChargeDomain& domain, const ParamBox& sub);
 // singularity, which for large arcs is much less than the chord distance suggests.
 std::vector<ParamBox> root_boxes(const ChargeDomain& domain, double max_angle);
 
+// Distance / box radius beyond which a Gauss rule of `order` points per direction integrates
+// a field with a 1/r^2-type singularity at that distance to about `tolerance` (Bernstein
+// ellipse: cosh(ln(1/tol) / (2 order)), at least 1).
+double acceptance_ratio(double tolerance, int order);
+
 // Halves `sub` along `axis`.
 std::array<ParamBox, 2> split_box(const ParamBox& sub, int axis);
 
