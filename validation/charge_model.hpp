@@ -2,7 +2,13 @@
 // Magnetic charge model (thesis sec. 3.4): the field of permanent magnets with mu_r = 1 from
 // their surface charges sigma = M.n and volume charges rho_m = -div M,
 //   H(x) = (1/4 pi) [ int sigma (x - x')/|x - x'|^3 dS' + int rho_m (x - x')/|x - x'|^3 dV' ],
-// plus images in infinitely permeable spheres (sec. 3.5, see spherical_imaging.hpp).
+// plus images in infinitely permeable spheres (sec. 3.5, see spherical_imaging.hpp). Image
+// charges live only on the iron side, so fields are meaningful on the air side only.
+// Radial magnets in unbounded problems are modelled by their equivalent surface currents
+// (B by Biot-Savart; see ChargeModelOptions::radial_as_currents) - the same field without the
+// volume integral; a test checks the two representations against each other.
+// Inner permeable spheres (iron cores) also get a point charge at their centre that cancels
+// the net image charge inside them (no net flux into the iron).
 //
 // Quadrature: every face (and volume) is a binary tree of parameter boxes with a tensor
 // Gauss-Legendre rule on each; a box is used as is when the observation point is farther than
@@ -59,7 +65,7 @@ public:
 
   const std::vector<AnalyticMagnet>& magnets() const { return magnets_; }
   const ChargeModelOptions& options() const { return options_; }
-  // Number of charge sources (faces and volumes, originals and images).
+  // Number of sources (faces and volumes, originals and images).
   int n_sources() const { return static_cast<int>(sources_.size()); }
 
 private:
