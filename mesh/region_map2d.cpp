@@ -13,6 +13,10 @@ namespace magfem {
 namespace {
 
 constexpr int min_shell_layers = 4;
+// The outer circles get at least this many chords: the mesher moves the vertices CGAL adds on
+// their chords onto the circle, which tilts the triangles there by about a quarter of the
+// chord angle (< 0.7 degrees here, within the 1 degree margin asked of CGAL).
+constexpr int min_outer_chords = 128;
 // No triangle has all angles above 60 degrees.
 constexpr double max_min_angle_deg = 60.0;
 
@@ -33,16 +37,21 @@ RegionMap2D::RegionMap2D(const Geometry2D& g, const Limit& limit, double shell_s
   const auto limit_of = [&limit](int region) {
     return [&limit, region](const Vec2& x) { return limit(region, x); };
   };
+  // Scaled with size_scale like every size, so that refinement studies stay uniform.
+  const auto outer_limit = [&limit, &o](int region, double r) {
+    const double longest = 2.0 * pi * r / min_outer_chords * std::min(1.0, o.size_scale);
+    return [&limit, region, longest](const Vec2& x) { return std::min(longest, limit(region, x)); };
+  };
   std::vector<OutlineBuilder2D> builders;
   for (std::size_t i = 0; i < g.parts.size(); ++i)
     builders.emplace_back(g.parts[i], o.chord_tolerance, limit_of(int(i)), *circles);
   const double r1 = g.outer.radius, r2 = g.outer.shell_ratio * r1;
   const bool open = g.outer.kind == OuterKind::open;
   builders.emplace_back(Part2D{"", Disk{Vec2::Zero(), r1}, 0}, o.chord_tolerance,
-                        limit_of(region_background), *circles);
+                        outer_limit(region_background, r1), *circles);
   if (open)
     builders.emplace_back(Part2D{"", Disk{Vec2::Zero(), r2}, 0}, o.chord_tolerance,
-                          limit_of(region_shell), *circles);
+                          outer_limit(region_shell, r2), *circles);
   circles->finalize();
   // Phase 2: loops on the shared circles.
   for (std::size_t i = 0; i < g.parts.size(); ++i)
