@@ -286,7 +286,25 @@ Outline2D OutlineBuilder2D::build(const std::shared_ptr<const CircleSet2D>& circ
       o.lo_ = o.lo_.cwiseMin(v);
       o.hi_ = o.hi_.cwiseMax(v);
     }
+  if (const auto* poly = std::get_if<Polygon>(&part_.shape))
+    bin_edges(o, poly->vertices);
   return o;
+}
+
+// Horizontal bands of the bounding box, each listing the polygon edges that overlap it, so that
+// a containment query visits a few edges instead of all.
+void OutlineBuilder2D::bin_edges(Outline2D& o, const std::vector<Vec2>& v) {
+  const std::size_t n_bands = std::max<std::size_t>(1, v.size() / 4);
+  o.edge_bands_.assign(n_bands, {});
+  const double y0 = o.lo_.y(), dy = (o.hi_.y() - o.lo_.y()) / double(n_bands);
+  const auto band = [&](double y) {
+    return std::min(n_bands - 1, std::size_t(std::max(0.0, (y - y0) / dy)));
+  };
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec2 &a = v[i], &b = v[(i + 1) % v.size()];
+    for (std::size_t k = band(std::min(a.y(), b.y())); k <= band(std::max(a.y(), b.y())); ++k)
+      o.edge_bands_[k].push_back(int(i));
+  }
 }
 
 // ---- queries ---------------------------------------------------------------------------------
@@ -299,11 +317,16 @@ bool Outline2D::contains(const Vec2& p) const {
     return std::abs(q.x()) < 0.5 * r->width && std::abs(q.y()) < 0.5 * r->height;
   }
   if (const auto* poly = std::get_if<Polygon>(&shape_)) {
-    bool inside = false; // crossing number on the original vertices
+    // Crossing number on the original vertices, over the edges of p's horizontal band only.
     const auto& v = poly->vertices;
-    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
-      if ((v[i].y() > p.y()) != (v[j].y() > p.y()) &&
-          p.x() < v[j].x() + (p.y() - v[j].y()) * (v[i].x() - v[j].x()) / (v[i].y() - v[j].y()))
+    const std::size_t band =
+        std::min(edge_bands_.size() - 1,
+                 std::size_t((p.y() - lo_.y()) / (hi_.y() - lo_.y()) * double(edge_bands_.size())));
+    bool inside = false;
+    for (const int i : edge_bands_[band]) {
+      const Vec2 &a = v[std::size_t(i)], &b = v[(std::size_t(i) + 1) % v.size()];
+      if ((a.y() > p.y()) != (b.y() > p.y()) &&
+          p.x() < b.x() + (p.y() - b.y()) * (a.x() - b.x()) / (a.y() - b.y()))
         inside = !inside;
     }
     return inside;

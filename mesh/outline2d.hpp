@@ -51,6 +51,7 @@ private:
   Vec2 sector_center_ = Vec2::Zero();
   double sector_start_ = 0, sector_span_ = 0;
   std::vector<std::vector<Vec2>> loops_;
+  std::vector<std::vector<int>> edge_bands_; // polygon edges by horizontal band (contains())
   double max_sagitta_ = 0;
   Vec2 lo_ = Vec2::Zero(), hi_ = Vec2::Zero();
 };
@@ -74,6 +75,7 @@ private:
   void append_segment(std::vector<Vec2>& loop, Vec2 a, Vec2 b) const;
   std::vector<Vec2> close_polyline(const std::vector<Vec2>& corners) const;
   void add_arcs(Outline2D& o, const CircleSet2D& circles) const;
+  static void bin_edges(Outline2D& o, const std::vector<Vec2>& v);
 
   Part2D part_;
   double tol_;

@@ -234,15 +234,26 @@ TEST(Mesher2D, EveryPrimitiveMatchesItsExactAreaWithinTheChordalBound) {
   g.parts.push_back({"bar", Rectangle{Vec2(25 * mm, 20 * mm), 10 * mm, 4 * mm, 0.5}, 0});
   g.parts.push_back(
       {"tri", Polygon{{Vec2(30 * mm, -5 * mm), Vec2(40 * mm, -5 * mm), Vec2(35 * mm, 5 * mm)}}, 0});
+  // A clockwise 20-point star (tips of 34 deg): exercises the banded containment test.
+  Polygon star;
+  double star_area = 0;
+  for (int k = 0; k < 40; ++k) {
+    const double a = -2 * pi * k / 40, r = (k % 2 ? 4 : 6) * mm;
+    star.vertices.push_back(Vec2(-25 * mm, 25 * mm) + r * Vec2(std::cos(a), std::sin(a)));
+  }
+  for (int k = 0; k < 40; ++k)
+    star_area -= 0.5 * cross(star.vertices[k], star.vertices[(k + 1) % 40]) / (mm * mm);
+  g.parts.push_back({"star", star, 0});
   const Mesh2D m = build_mesh_2d(g);
   // The pie's apex angle (1.5 rad = 86 deg) and the sector's corners (90 deg) are not sharp.
   expect_ccw_and_quality(m, 28.0);
   const auto areas = region_areas(m);
   const double s = m.quality.max_sagitta;
   // Exact areas and the arc lengths that bound the chordal deficit (arc length * sagitta).
-  const double exact[] = {pi * 36, pi * (49 - 9), 0.5 * 1.8 * (144 - 16), 0.5 * 1.5 * 64, 40, 50};
-  const double arcs[] = {2 * pi * 6, 2 * pi * 10, 1.8 * 16, 1.5 * 8, 0, 0};
-  for (int i = 0; i < 6; ++i) // outer chords cut area off, inner chords (holes) add some
+  const double exact[] = {pi * 36, pi * (49 - 9), 0.5 * 1.8 * (144 - 16), 0.5 * 1.5 * 64, 40,
+                          50,      star_area};
+  const double arcs[] = {2 * pi * 6, 2 * pi * 10, 1.8 * 16, 1.5 * 8, 0, 0, 0};
+  for (int i = 0; i < 7; ++i) // outer chords cut area off, inner chords (holes) add some
     EXPECT_NEAR(areas.at(i) / (mm * mm), exact[i], arcs[i] * s / mm + area_rel_tol * exact[i])
         << g.parts[i].name;
 }
