@@ -45,6 +45,7 @@ using Point = CDT::Point;
 using FaceHandle = CDT::Face_handle;
 using VertexHandle = CDT::Vertex_handle;
 
+constexpr int frame_vertex = -2;           // vertex info of the frame corners
 constexpr double grading = 0.5;            // size-field slope (see size_field2d.hpp)
 constexpr double max_min_angle_deg = 30.0; // cap of the quality bound (terminates in practice)
 // CGAL is asked for this much more than the promised bound: moving the vertices it adds on an
@@ -127,7 +128,7 @@ void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge) {
   const double frame = 1.5 * outer.box_max().cwiseAbs().maxCoeff();
   for (const Vec2& corner :
        {Vec2(-frame, -frame), Vec2(frame, -frame), Vec2(frame, frame), Vec2(-frame, frame)})
-    cdt.insert(to_point(corner));
+    cdt.insert(to_point(corner))->info() = frame_vertex;
   std::vector<std::vector<Vec2>> loops = map.domain().loops();
   if (map.shell())
     loops.push_back(map.shell()->loops().front());
@@ -139,6 +140,7 @@ void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge) {
   FaceHandle hint;
   for (const Vec2& p : set.points) {
     vs.push_back(cdt.insert(to_point(p), hint));
+    vs.back()->info() = 0;
     hint = vs.back()->face();
   }
   for (const auto& s : set.segments)
@@ -252,7 +254,7 @@ void drop_hidden_constraints(CDT& cdt) {
   }
   std::vector<VertexHandle> loose;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if (!cdt.are_there_incident_constraints(v))
+    if (v->info() != frame_vertex && !cdt.are_there_incident_constraints(v))
       loose.push_back(v);
   for (const VertexHandle& v : loose)
     cdt.remove(v);
