@@ -20,7 +20,8 @@
 //   away from them with slope 0.5 (size_field2d.hpp), and lowered by the air-gap rule
 //   (gap_rule2d.hpp): at least gap_layers elements across every air gap between two different
 //   parts, or a part and the domain boundary, that is wider than 3 chord tolerances (narrower
-//   ones count as contact). h never drops below min(1, size_scale) * chord_tolerance / gap_layers.
+//   ones count as contact). "Air" is the background region: a part filled with air is a part,
+//   sized by its max_size. h never drops below min(1, size_scale) * chord_tolerance / gap_layers.
 // - Quality: minimum angle >= min(min_angle_deg, 30) degrees (CGAL is asked for 1 degree more to
 //   absorb the snapping below; it proves termination up to 20.7 degrees and terminates in
 //   practice up to ~33), except next to sharper input corners, crossings and tangencies.
