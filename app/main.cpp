@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/run2d.hpp"
+#include "app/run3d.hpp"
 #include "app/run_analytic.hpp"
 #include "core/input_error.hpp"
 #include "postproc/probe_compare.hpp"
@@ -76,8 +77,20 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
+int run_solve_3d(const Args& args, magfem::CaseSpec spec) {
+  auto run = magfem::run_case_3d(std::move(spec), args.overrides);
+  std::cout << magfem::describe_run_3d(*run);
+  magfem::write_outputs_3d(*run, args.out_dir);
+  std::cout << "wrote    " << args.out_dir << "/summary.json";
+  for (const auto& p : run->probes) std::cout << ", " << p.name << ".csv";
+  if (run->spec.write_vtu) std::cout << ", solution.vtu";
+  std::cout << "\n";
+  return 0;
+}
+
 int run_solve(const Args& args) {
   auto spec = magfem::read_case(args.case_file);
+  if (spec.dimension == 3) return run_solve_3d(args, std::move(spec));
   auto run = magfem::run_case_2d(std::move(spec), args.overrides);
   std::cout << magfem::describe_run_2d(*run);
   magfem::write_outputs_2d(*run, args.out_dir);

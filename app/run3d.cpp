@@ -1,0 +1,173 @@
+#include "app/run3d.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "app/resource_usage.hpp"
+#include "core/output_stage.hpp"
+#include "materials/material_library.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesher3d.hpp"
+#include "postproc/point_locator3d.hpp"
+#include "postproc/probes3d.hpp"
+#include "postproc/vtu_export3d.hpp"
+#include "solver/assembler3d.hpp"
+
+namespace magfem {
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Sphere probes tell the mesher where to refine (MeshOptions3D::probe_size).
+std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
+  std::vector<ProbeSurface> out;
+  if (spec.geometry3d.options.probe_size <= 0) return out;
+  for (const auto& p : spec.probes)
+    if (p.kind == ProbeSpec::Kind::sphere)
+      out.push_back({p.center, p.radius, p.theta_min, p.theta_max, p.phi_min, p.phi_max});
+  return out;
+}
+
+Mesh3D mesh_case(const CaseSpec& spec) {
+  try {
+    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec));
+  } catch (const MeshError& e) {
+    for (const auto& r : spec.regions)
+      if (r.name == e.part)
+        throw InputError(spec.file, r.line, "regions." + r.name + (e.field.empty() ? "" : "." + e.field),
+                         e.what());
+    throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field, e.what());
+  }
+}
+
+Problem3D build_problem(const CaseSpec& spec, const Mesh3D& mesh) {
+  Problem3D p;
+  p.mesh = &mesh;
+  p.order = spec.order;
+  p.boundary = spec.geometry3d.outer.kind;
+  p.air.material = MaterialLibrary::bundled().find("air");
+  for (const auto& r : spec.regions) p.parts.push_back(RegionPhysics3D{r.material, r.magnetization});
+  return p;
+}
+
+} // namespace
+
+std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
+  const auto t_start = Clock::now();
+  auto run = std::make_unique<Run3D>();
+  if (ov.order) spec.order = ov.order;
+  if (ov.mesh_scale > 0) spec.geometry3d.options.size_scale *= ov.mesh_scale;
+  if (ov.domain_radius > 0) spec.geometry3d.outer.radius = ov.domain_radius;
+  run->spec = std::move(spec);
+
+  auto t0 = Clock::now();
+  run->mesh = mesh_case(run->spec);
+  run->timings.mesh = since(t0);
+
+  run->problem = build_problem(run->spec, run->mesh);
+  t0 = Clock::now();
+  run->dofs = std::make_unique<DofMap3D>(run->mesh, run->spec.order);
+  Assembler3D assembler(run->problem, *run->dofs);
+  const double setup = since(t0);
+
+  Eigen::VectorXd u;
+  run->report = solve_nonlinear(assembler, u, run->spec.newton);
+  run->timings.assemble = setup + run->report.assemble_s;
+  run->timings.solve = run->report.solve_s;
+  if (!run->report.converged) throw SolveError("the solver did not converge: " + run->report.message);
+
+  t0 = Clock::now();
+  run->field = std::make_unique<Field3D>(run->problem, *run->dofs, assembler.expand(u));
+  std::vector<std::string> names;
+  for (const auto& r : run->spec.regions) names.push_back(r.name);
+  run->energy = summarize_energy_3d(*run->field, names);
+  const PointLocator3D locator(run->mesh);
+  for (const auto& probe : run->spec.probes)
+    run->probes.push_back(sample_probe_3d(*run->field, locator, probe, run->spec.length_unit));
+  run->timings.postprocess = since(t0);
+  run->timings.total = since(t_start);
+  return run;
+}
+
+void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  for (const auto& p : run.probes) stage.write_text(p.name + ".csv", p.to_csv());
+  if (run.spec.write_vtu) {
+    std::vector<std::string> material_names = {"air"};
+    std::map<std::string, int> index = {{"air", 0}};
+    std::vector<int> material_of_part;
+    for (const auto& r : run.spec.regions) {
+      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
+      if (fresh) material_names.push_back(r.material->name);
+      material_of_part.push_back(it->second);
+    }
+    write_vtu(stage.path_for("solution.vtu").string(),
+              make_vtu_3d(*run.field, run.field->recovered_B(), material_of_part, 0, material_names));
+  }
+  nlohmann::ordered_json j;
+  j["case"] = run.spec.file;
+  j["dimension"] = 3;
+  j["order"] = run.spec.order;
+  j["elements"] = run.mesh.n_tets();
+  j["nodes"] = run.mesh.n_nodes();
+  j["unknowns"] = run.dofs->n_dofs();
+  j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
+                       {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
+                       {"max_radius_edge", run.mesh.quality.max_radius_edge}};
+  j["energy_J"] = run.energy.total_J;
+  j["converged"] = run.report.converged;
+  j["iterations"] = run.report.iterations;
+  j["residual_history"] = run.report.residual_history;
+  j["linear_solver"] = run.report.linear_solver;
+  j["linear_iterations"] = run.report.linear_iterations;
+  j["timings_s"] = {{"mesh", run.timings.mesh},
+                    {"assemble", run.timings.assemble},
+                    {"solve", run.timings.solve},
+                    {"postprocess", run.timings.postprocess},
+                    {"total", run.timings.total}};
+  j["peak_memory_MB"] = peak_memory_mb();
+  auto& regions = j["regions"];
+  for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
+    const auto& r = run.energy.regions[i];
+    if (r.volume_m3 == 0) continue;
+    nlohmann::ordered_json reg = {{"name", r.name},
+                                  {"volume_m3", r.volume_m3},
+                                  {"energy_J", r.energy_J},
+                                  {"peak_B_T", r.peak_B_T},
+                                  {"nonlinear", r.nonlinear}};
+    if (i < run.mesh.part_volumes.size()) reg["meshed_volume_m3"] = run.mesh.part_volumes[i];
+    regions.push_back(reg);
+  }
+  for (const auto& p : run.probes) j["probes"].push_back(p.name + ".csv");
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+}
+
+std::string describe_run_3d(const Run3D& run) {
+  char buf[640];
+  std::snprintf(buf, sizeof buf,
+                "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
+                "solve    order %d, %d unknowns, %s, %d iteration(s), residual %.2e\n"
+                "energy   %.6g J\n",
+                run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+                run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
+                run.report.linear_solver.c_str(), run.report.iterations,
+                run.report.residual_history.back(), run.energy.total_J);
+  std::string s = buf;
+  for (const auto& r : run.energy.regions)
+    if (r.nonlinear && r.volume_m3 > 0) {
+      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(), r.peak_B_T);
+      s += buf;
+    }
+  std::snprintf(buf, sizeof buf,
+                "time     mesh %.2f s, assemble %.2f s, solve %.2f s, post %.2f s, total %.2f s, peak %.0f MB\n",
+                run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
+                run.timings.total, peak_memory_mb());
+  return s + buf;
+}
+
+} // namespace magfem

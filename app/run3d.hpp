@@ -1,0 +1,34 @@
+#pragma once
+// The 3D pipeline: case -> TetGen mesh -> scalar-potential problem -> Newton -> probes,
+// energy, VTU. Mirrors run2d.hpp.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/run2d.hpp"
+#include "mesh/mesh3d.hpp"
+#include "postproc/energy3d.hpp"
+#include "postproc/field3d.hpp"
+#include "solver/dof_map3d.hpp"
+#include "solver/problem3d.hpp"
+
+namespace magfem {
+
+struct Run3D {
+  CaseSpec spec;
+  Mesh3D mesh;
+  std::unique_ptr<DofMap3D> dofs;
+  Problem3D problem;
+  std::unique_ptr<Field3D> field;
+  NewtonReport report;
+  EnergySummary3D energy;
+  std::vector<ProbeTable> probes;
+  Timings timings;
+};
+
+std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides = {});
+void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
+std::string describe_run_3d(const Run3D& run);
+
+} // namespace magfem
