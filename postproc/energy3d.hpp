@@ -16,7 +16,7 @@ namespace magfem {
 
 struct RegionSummary3D {
   std::string name;
-  int part = 0;        // part index, or region_background_3d / region_shell_3d
+  int part = 0; // part index, or region_background_3d / region_shell_3d
   double volume_m3 = 0;
   double energy_J = 0;
   double peak_B_T = 0; // max |B| over the DOF nodes of the region's tets (0 for the shell)

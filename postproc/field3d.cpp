@@ -19,7 +19,8 @@ double Field3D::potential(std::size_t t, const std::array<double, 4>& bary) cons
   const int count = tet_values(dofs_.order(), bary, n.data());
   const int* dof = dofs_.element_dofs(t);
   double v = 0;
-  for (int i = 0; i < count; ++i) v += phi_[dof[i]] * n[i];
+  for (int i = 0; i < count; ++i)
+    v += phi_[dof[i]] * n[i];
   return v;
 }
 
@@ -31,13 +32,15 @@ Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) con
   const int count = tet_gradients(dofs_.order(), g, bary, grad.data());
   const int* dof = dofs_.element_dofs(t);
   Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i) grad_phi += phi_[dof[i]] * grad[i];
+  for (int i = 0; i < count; ++i)
+    grad_phi += phi_[dof[i]] * grad[i];
   return -grad_phi;
 }
 
 Eigen::Vector3d Field3D::magnetization(std::size_t t, const Eigen::Vector3d& x) const {
   const auto& phys = problem_.physics(problem_.mesh->tet_part[t]);
-  if (!phys.material->is_magnet()) return Eigen::Vector3d::Zero();
+  if (!phys.material->is_magnet())
+    return Eigen::Vector3d::Zero();
   return phys.material->B_r / mu0 * phys.magnetization.unit_at(x);
 }
 
@@ -47,7 +50,8 @@ Eigen::Vector3d Field3D::B_of_H(std::size_t t, const Eigen::Vector3d& x,
   double mu = 0, dmu = 0;
   phys.material->permeability(h.squaredNorm(), mu, dmu);
   Eigen::Vector3d b = mu * h;
-  if (phys.material->is_magnet()) b += phys.material->B_r * phys.magnetization.unit_at(x);
+  if (phys.material->is_magnet())
+    b += phys.material->B_r * phys.magnetization.unit_at(x);
   return b;
 }
 
@@ -60,10 +64,11 @@ std::vector<Eigen::Vector3d> Field3D::recovered_B() const {
   std::vector<Eigen::Vector3d> sum(dofs_.n_dofs(), Eigen::Vector3d::Zero());
   std::vector<double> weight(dofs_.n_dofs(), 0.0);
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    if (problem_.is_shell(t)) continue;
+    if (problem_.is_shell(t))
+      continue;
     const auto& tet = mesh.tets[t];
-    const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]],
-                                       mesh.nodes[tet[2]], mesh.nodes[tet[3]])
+    const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]], mesh.nodes[tet[2]],
+                                       mesh.nodes[tet[3]])
                            .volume;
     const int* dof = dofs_.element_dofs(t);
     for (int i = 0; i < dofs_.dofs_per_element(); ++i) {
@@ -72,7 +77,8 @@ std::vector<Eigen::Vector3d> Field3D::recovered_B() const {
     }
   }
   for (std::size_t i = 0; i < sum.size(); ++i)
-    if (weight[i] > 0) sum[i] /= weight[i];
+    if (weight[i] > 0)
+      sum[i] /= weight[i];
   return sum;
 }
 
@@ -82,7 +88,8 @@ Eigen::Vector3d Field3D::interpolate(const std::vector<Eigen::Vector3d>& nodal, 
   const int count = tet_values(dofs_.order(), bary, n.data());
   const int* dof = dofs_.element_dofs(t);
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i) v += n[i] * nodal[dof[i]];
+  for (int i = 0; i < count; ++i)
+    v += n[i] * nodal[dof[i]];
   return v;
 }
 

@@ -11,19 +11,22 @@ PointLocator3D::PointLocator3D(const Mesh3D& mesh) : mesh_(mesh) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
   std::size_t n_physical = 0;
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    if (mesh.tet_part[t] == region_shell_3d) continue;
+    if (mesh.tet_part[t] == region_shell_3d)
+      continue;
     ++n_physical;
     for (int k = 0; k < 4; ++k) {
       lo = lo.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
       hi = hi.cwiseMax(mesh.nodes[mesh.tets[t][k]]);
     }
   }
-  if (n_physical == 0) lo = hi = Eigen::Vector3d::Zero();
+  if (n_physical == 0)
+    lo = hi = Eigen::Vector3d::Zero();
   // About two tets per bucket keeps queries O(1).
   const double cells = std::max(1.0, static_cast<double>(n_physical) / 2.0);
   const Eigen::Vector3d extent = (hi - lo).cwiseMax(1e-30);
   const double h = std::cbrt(extent.prod() / cells);
-  for (int k = 0; k < 3; ++k) n_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, 2048);
+  for (int k = 0; k < 3; ++k)
+    n_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / h)), 1, 2048);
   lo_ = lo;
   cell_size_ = {extent.x() / n_[0], extent.y() / n_[1], extent.z() / n_[2]};
 
@@ -33,12 +36,14 @@ PointLocator3D::PointLocator3D(const Mesh3D& mesh) : mesh_(mesh) {
   for (int pass = 0; pass < 2; ++pass) {
     std::vector<int> fill;
     if (pass == 1) {
-      for (std::size_t b = 0; b < n_buckets; ++b) start_[b + 1] += start_[b];
+      for (std::size_t b = 0; b < n_buckets; ++b)
+        start_[b + 1] += start_[b];
       items_.resize(start_[n_buckets]);
       fill.assign(start_.begin(), start_.end() - 1);
     }
     for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-      if (mesh.tet_part[t] == region_shell_3d) continue;
+      if (mesh.tet_part[t] == region_shell_3d)
+        continue;
       Eigen::Vector3d a = mesh.nodes[mesh.tets[t][0]], b = a;
       for (int k = 1; k < 4; ++k) {
         a = a.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
@@ -80,7 +85,8 @@ std::optional<PointLocation3D> PointLocator3D::locate(const Eigen::Vector3d& x) 
     if (m >= best_min) {
       best_min = m;
       best = PointLocation3D{static_cast<std::size_t>(items_[i]), {l0, l.x(), l.y(), l.z()}};
-      if (m >= 0) break; // inside: no other tet can do better than a containing one
+      if (m >= 0)
+        break; // inside: no other tet can do better than a containing one
     }
   }
   return best;

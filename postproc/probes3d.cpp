@@ -44,7 +44,8 @@ std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe) {
     pts = probe.point_list;
     break;
   case ProbeSpec::Kind::sphere:
-    for (const auto& s : sphere_samples(probe)) pts.push_back(probe.center + probe.radius * s.e_rho);
+    for (const auto& s : sphere_samples(probe))
+      pts.push_back(probe.center + probe.radius * s.e_rho);
     break;
   case ProbeSpec::Kind::circle:
     throw std::invalid_argument("probe '" + probe.name + "': circle probes are 2D only");
@@ -60,14 +61,16 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
   table.name = probe.name;
   const bool sphere = probe.kind == ProbeSpec::Kind::sphere;
   if (sphere)
-    table.columns = {"theta_deg", "phi_deg", "x", "y", "z", "Bx", "By", "Bz", "Brho", "Btheta", "Bphi"};
+    table.columns = {"theta_deg", "phi_deg", "x",    "y",      "z",   "Bx",
+                     "By",        "Bz",      "Brho", "Btheta", "Bphi"};
   else
     table.columns = {"x", "y", "z", "Bx", "By", "Bz"};
   const std::vector<SpherePoint> s = sphere ? sphere_samples(probe) : std::vector<SpherePoint>{};
   table.rows.reserve(pts.size());
   for (std::size_t k = 0; k < pts.size(); ++k) {
     const auto loc = locator.locate(pts[k]);
-    if (!loc) throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
+    if (!loc)
+      throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
     const Eigen::Vector3d b = recovered_B ? field.interpolate(*recovered_B, loc->tet, loc->bary)
                                           : field.B(loc->tet, loc->bary);
     const Eigen::Vector3d x = pts[k] / length_unit;

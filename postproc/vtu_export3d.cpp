@@ -27,7 +27,8 @@ VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& re
   const int type = dofs.order() == 1 ? 10 : 24;
   const std::array<double, 4> centroid = {0.25, 0.25, 0.25, 0.25};
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    if (problem.is_shell(t)) continue;
+    if (problem.is_shell(t))
+      continue;
     const int* dof = dofs.element_dofs(t);
     g.connectivity.insert(g.connectivity.end(), dof, dof + per);
     g.offsets.push_back(static_cast<int>(g.connectivity.size()));

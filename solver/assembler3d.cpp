@@ -13,22 +13,26 @@ namespace magfem {
 namespace {
 
 std::vector<int> constrained_dofs(const Problem3D& problem, const DofMap3D& dofs) {
-  if (problem.boundary == OuterKind3D::neumann) return {0}; // gauge: phi up to a constant
+  if (problem.boundary == OuterKind3D::neumann)
+    return {0}; // gauge: phi up to a constant
   return dofs.dofs_on_faces(problem.mesh->outer_faces);
 }
 
 bool problem_is_linear(const Problem3D& problem) {
   for (const auto& p : problem.parts)
-    if (p.material->is_nonlinear()) return false;
+    if (p.material->is_nonlinear())
+      return false;
   return !problem.air.material->is_nonlinear();
 }
 
 std::vector<int> number_equations(int n_dofs, const std::vector<int>& constrained, int& n_eqs) {
   std::vector<int> map(n_dofs, 0);
-  for (int d : constrained) map[d] = -1;
+  for (int d : constrained)
+    map[d] = -1;
   n_eqs = 0;
   for (int& m : map)
-    if (m == 0) m = n_eqs++;
+    if (m == 0)
+      m = n_eqs++;
   return map;
 }
 
@@ -37,7 +41,8 @@ std::vector<int> equations_of_elements(const Mesh3D& mesh, const DofMap3D& dofs,
   const int per = dofs.dofs_per_element();
   std::vector<int> eqs(mesh.n_tets() * per);
   for (std::size_t t = 0; t < mesh.n_tets(); ++t)
-    for (int i = 0; i < per; ++i) eqs[t * per + i] = dof_to_eq[dofs.element_dofs(t)[i]];
+    for (int i = 0; i < per; ++i)
+      eqs[t * per + i] = dof_to_eq[dofs.element_dofs(t)[i]];
   return eqs;
 }
 
@@ -50,14 +55,12 @@ inline void add_to(double& target, double value, bool atomic) {
 
 } // namespace
 
-Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs,
-                         AssemblyOptions3D options)
-    : problem_(problem), dofs_(dofs), options_(options),
-      shell_{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius},
+Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs, AssemblyOptions3D options)
+    : problem_(problem), dofs_(dofs),
+      options_(options), shell_{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius},
       dof_to_eq_(number_equations(dofs.n_dofs(), constrained_dofs(problem, dofs), n_eqs_)),
       element_eqs_(equations_of_elements(*problem.mesh, dofs, dof_to_eq_)),
-      linear_(problem_is_linear(problem)),
-      pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
+      linear_(problem_is_linear(problem)), pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
   if (options_.threads <= 0)
     options_.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   // The residual at phi = 0 is minus the external load (the remanence).
@@ -69,14 +72,16 @@ Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs,
 Eigen::VectorXd Assembler3D::expand(const Eigen::VectorXd& u) const {
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(dofs_.n_dofs());
   for (int d = 0; d < dofs_.n_dofs(); ++d)
-    if (dof_to_eq_[d] >= 0) phi[d] = u[dof_to_eq_[d]];
+    if (dof_to_eq_[d] >= 0)
+      phi[d] = u[dof_to_eq_[d]];
   return phi;
 }
 
 Eigen::VectorXd Assembler3D::restrict_to_free(const Eigen::VectorXd& phi_full) const {
   Eigen::VectorXd u(n_eqs_);
   for (int d = 0; d < dofs_.n_dofs(); ++d)
-    if (dof_to_eq_[d] >= 0) u[dof_to_eq_[d]] = phi_full[d];
+    if (dof_to_eq_[d] >= 0)
+      u[dof_to_eq_[d]] = phi_full[d];
   return u;
 }
 
@@ -92,24 +97,28 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
   const bool in_shell = problem_.is_shell(t);
   const RegionPhysics3D& phys = problem_.physics(mesh.tet_part[t]);
   const Material& mat = *phys.material;
-  const bool radial = mat.is_magnet() && phys.magnetization.pattern == Magnetization::Pattern::radial;
+  const bool radial =
+      mat.is_magnet() && phys.magnetization.pattern == Magnetization::Pattern::radial;
   // grad N_i . grad N_j has degree 2(order-1); the shell metric, nonlinear laws and radial
   // remanence are not polynomial and get the degree-5 rule.
   const int degree = (in_shell || mat.is_nonlinear() || radial) ? 5 : 2 * (order - 1);
 
   std::fill(re, re + n, 0.0);
-  if (ke) std::fill(ke, ke + n * n, 0.0);
+  if (ke)
+    std::fill(ke, ke + n * n, 0.0);
   std::array<Eigen::Vector3d, 10> grad, dgrad;
   for (const auto& q : tet_rule(degree)) {
     tet_gradients(order, g, q.bary, grad.data());
     const double w = q.weight * g.volume;
     Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
-    for (int i = 0; i < n; ++i) grad_phi += phi_full[dof[i]] * grad[i];
+    for (int i = 0; i < n; ++i)
+      grad_phi += phi_full[dof[i]] * grad[i];
     Eigen::Matrix3d d;
     Eigen::Vector3d flux; // -B (or its shell-metric counterpart)
     if (in_shell) {
       Eigen::Vector3d x = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k) x += q.bary[k] * nodes[tet[k]];
+      for (int k = 0; k < 4; ++k)
+        x += q.bary[k] * nodes[tet[k]];
       // Air in the mapped exterior: -B' = mu0 T grad phi, tangent mu0 T.
       d = mu0 * shell_.metric<3>(x);
       flux = d * grad_phi;
@@ -120,21 +129,28 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
       flux = -mu * h;
       if (mat.is_magnet()) {
         Eigen::Vector3d x = Eigen::Vector3d::Zero();
-        for (int k = 0; k < 4; ++k) x += q.bary[k] * nodes[tet[k]];
+        for (int k = 0; k < 4; ++k)
+          x += q.bary[k] * nodes[tet[k]];
         flux -= mat.B_r * phys.magnetization.unit_at(x);
       }
       d = mu * Eigen::Matrix3d::Identity();
-      if (kind == TangentKind::newton && dmu != 0) d += 2 * dmu * h * h.transpose();
+      if (kind == TangentKind::newton && dmu != 0)
+        d += 2 * dmu * h * h.transpose();
     }
-    for (int i = 0; i < n; ++i) re[i] += w * grad[i].dot(flux);
-    if (!ke) continue;
-    for (int j = 0; j < n; ++j) dgrad[j] = w * (d * grad[j]);
     for (int i = 0; i < n; ++i)
-      for (int j = i; j < n; ++j) ke[i * n + j] += grad[i].dot(dgrad[j]);
+      re[i] += w * grad[i].dot(flux);
+    if (!ke)
+      continue;
+    for (int j = 0; j < n; ++j)
+      dgrad[j] = w * (d * grad[j]);
+    for (int i = 0; i < n; ++i)
+      for (int j = i; j < n; ++j)
+        ke[i * n + j] += grad[i].dot(dgrad[j]);
   }
   if (ke)
     for (int i = 0; i < n; ++i)
-      for (int j = 0; j < i; ++j) ke[i * n + j] = ke[j * n + i];
+      for (int j = 0; j < i; ++j)
+        ke[i * n + j] = ke[j * n + i];
 }
 
 void Assembler3D::evaluate_range(std::size_t begin, std::size_t end,
@@ -149,11 +165,14 @@ void Assembler3D::evaluate_range(std::size_t begin, std::size_t end,
     element(t, phi_full, re.data(), matrix ? ke.data() : nullptr, kind);
     const int* eq = &element_eqs_[t * n];
     for (int i = 0; i < n; ++i)
-      if (eq[i] >= 0) add_to(residual[eq[i]], re[i], atomic);
-    if (!matrix) continue;
+      if (eq[i] >= 0)
+        add_to(residual[eq[i]], re[i], atomic);
+    if (!matrix)
+      continue;
     const int* slot = pattern_.slots(t);
     for (int k = 0; k < n * n; ++k)
-      if (slot[k] >= 0) add_to(values[slot[k]], ke[k], atomic);
+      if (slot[k] >= 0)
+        add_to(values[slot[k]], ke[k], atomic);
   }
 }
 
@@ -161,7 +180,8 @@ void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                            Eigen::SparseMatrix<double>* matrix, TangentKind kind) const {
   const Eigen::VectorXd phi_full = expand(u);
   residual = Eigen::VectorXd::Zero(n_eqs_);
-  if (matrix) *matrix = pattern_.zero_matrix();
+  if (matrix)
+    *matrix = pattern_.zero_matrix();
   const std::size_t n_tets = problem_.mesh->n_tets();
   const int n_threads =
       static_cast<int>(std::min<std::size_t>(options_.threads, 1 + n_tets / 20000));
@@ -174,11 +194,11 @@ void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   std::vector<std::thread> pool;
   for (int k = 0; k < n_threads; ++k) {
     const std::size_t b = n_tets * k / n_threads, e = n_tets * (k + 1) / n_threads;
-    pool.emplace_back([&, b, e] {
-      evaluate_range(b, e, phi_full, residual.data(), matrix, kind, true);
-    });
+    pool.emplace_back(
+        [&, b, e] { evaluate_range(b, e, phi_full, residual.data(), matrix, kind, true); });
   }
-  for (auto& th : pool) th.join();
+  for (auto& th : pool)
+    th.join();
 }
 
 } // namespace magfem

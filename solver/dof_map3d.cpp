@@ -8,13 +8,15 @@
 namespace magfem {
 namespace {
 long long edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
+  if (a > b)
+    std::swap(a, b);
   return (static_cast<long long>(a) << 32) | static_cast<unsigned>(b);
 }
 } // namespace
 
 DofMap3D::DofMap3D(const Mesh3D& mesh, int order) : order_(order) {
-  if (order != 1 && order != 2) throw std::invalid_argument("element order must be 1 or 2");
+  if (order != 1 && order != 2)
+    throw std::invalid_argument("element order must be 1 or 2");
   n_vertices_ = static_cast<int>(mesh.n_nodes());
   points_ = mesh.nodes;
   n_dofs_ = n_vertices_;
@@ -22,8 +24,10 @@ DofMap3D::DofMap3D(const Mesh3D& mesh, int order) : order_(order) {
   const std::size_t n_tets = mesh.n_tets();
   element_dofs_.resize(n_tets * per);
   for (std::size_t t = 0; t < n_tets; ++t)
-    for (int i = 0; i < 4; ++i) element_dofs_[t * per + i] = mesh.tets[t][i];
-  if (order == 1) return;
+    for (int i = 0; i < 4; ++i)
+      element_dofs_[t * per + i] = mesh.tets[t][i];
+  if (order == 1)
+    return;
 
   // Sort (edge key, slot) pairs once: numbers the edges deterministically and fills the
   // element tables without a search per element edge.
@@ -49,7 +53,8 @@ DofMap3D::DofMap3D(const Mesh3D& mesh, int order) : order_(order) {
 int DofMap3D::edge_dof(int a, int b) const {
   const long long k = edge_key(a, b);
   auto it = std::lower_bound(edge_keys_.begin(), edge_keys_.end(), k);
-  if (it == edge_keys_.end() || *it != k) throw std::logic_error("edge not in mesh");
+  if (it == edge_keys_.end() || *it != k)
+    throw std::logic_error("edge not in mesh");
   return n_vertices_ + static_cast<int>(it - edge_keys_.begin());
 }
 
@@ -59,7 +64,8 @@ std::vector<int> DofMap3D::dofs_on_faces(const std::vector<std::array<int, 3>>& 
   for (const auto& f : faces) {
     out.insert(out.end(), f.begin(), f.end());
     if (order_ == 2)
-      for (int k = 0; k < 3; ++k) out.push_back(edge_dof(f[k], f[(k + 1) % 3]));
+      for (int k = 0; k < 3; ++k)
+        out.push_back(edge_dof(f[k], f[(k + 1) % 3]));
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -6,6 +6,29 @@
 #include "core/input_error.hpp"
 
 namespace magfem {
+namespace {
+
+// Factorization flops and nnz(L) that CHOLMOD predicts with an AMD ordering: a quick
+// symbolic analysis (no METIS) to decide whether a direct solve is affordable. AMD fills
+// somewhat more than the METIS ordering used for the real factorization, so this errs on
+// the side of CG.
+std::pair<double, double> predicted_cholesky_cost(const Eigen::SparseMatrix<double>& lower) {
+  cholmod_common c;
+  cholmod_start(&c);
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_AMD;
+  c.supernodal = CHOLMOD_SUPERNODAL;
+  Eigen::SparseMatrix<double> copy = lower; // viewAsCholmod needs a mutable view
+  cholmod_sparse a = Eigen::viewAsCholmod(copy);
+  a.stype = -1; // symmetric, lower triangle stored
+  cholmod_factor* l = cholmod_analyze(&a, &c);
+  const std::pair<double, double> cost{c.fl, c.lnz};
+  cholmod_free_factor(&l, &c);
+  cholmod_finish(&c);
+  return cost;
+}
+
+} // namespace
 
 struct LinearSolver::Impl {
   bool use_direct = true;
@@ -23,12 +46,18 @@ LinearSolver::~LinearSolver() = default;
 
 void LinearSolver::factorize(const Eigen::SparseMatrix<double>& lower) {
   if (!impl_->analyzed) {
+    const bool automatic = options_.kind == LinearSolverKind::automatic;
     impl_->use_direct = options_.kind == LinearSolverKind::cholmod ||
-                        (options_.kind == LinearSolverKind::automatic &&
-                         lower.rows() <= options_.direct_limit);
+                        (automatic && lower.rows() <= options_.direct_limit);
+    if (impl_->use_direct && automatic && options_.direct_max_gflop > 0) {
+      const auto [flops, lnz] = predicted_cholesky_cost(lower);
+      predicted_gflop_ = flops * 1e-9;
+      predicted_factor_gb_ = lnz * 12e-9; // value + row index
+      impl_->use_direct = predicted_gflop_ <= options_.direct_max_gflop;
+    }
+    if (impl_->use_direct) impl_->direct.analyzePattern(lower);
   }
   if (impl_->use_direct) {
-    if (!impl_->analyzed) impl_->direct.analyzePattern(lower);
     impl_->direct.factorize(lower);
     if (impl_->direct.info() != Eigen::Success)
       throw SolveError("the system matrix is not positive definite (CHOLMOD); check that every "

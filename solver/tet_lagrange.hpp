@@ -25,13 +25,16 @@ struct TetGeometry {
     g.volume = det / 6.0;
     // Rows of J^-1 are the gradients of L1, L2, L3; L0 = 1 - L1 - L2 - L3.
     const Eigen::Matrix3d inv = j.inverse();
-    for (int k = 0; k < 3; ++k) g.grad_L[k + 1] = inv.row(k).transpose();
+    for (int k = 0; k < 3; ++k)
+      g.grad_L[k + 1] = inv.row(k).transpose();
     g.grad_L[0] = -(g.grad_L[1] + g.grad_L[2] + g.grad_L[3]);
     return g;
   }
 };
 
-inline constexpr int tet_dofs(int order) { return order == 1 ? 4 : 10; }
+inline constexpr int tet_dofs(int order) {
+  return order == 1 ? 4 : 10;
+}
 inline constexpr std::array<std::array<int, 2>, 6> tet_edges = {
     {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
 
@@ -50,11 +53,14 @@ inline constexpr std::array<std::array<double, 4>, 10> tet_dof_nodes = {{{1, 0, 
 // Values of the shape functions at barycentric point L; returns the count.
 inline int tet_values(int order, const std::array<double, 4>& L, double* n) {
   if (order == 1) {
-    for (int i = 0; i < 4; ++i) n[i] = L[i];
+    for (int i = 0; i < 4; ++i)
+      n[i] = L[i];
     return 4;
   }
-  for (int i = 0; i < 4; ++i) n[i] = L[i] * (2 * L[i] - 1);
-  for (int e = 0; e < 6; ++e) n[4 + e] = 4 * L[tet_edges[e][0]] * L[tet_edges[e][1]];
+  for (int i = 0; i < 4; ++i)
+    n[i] = L[i] * (2 * L[i] - 1);
+  for (int e = 0; e < 6; ++e)
+    n[4 + e] = 4 * L[tet_edges[e][0]] * L[tet_edges[e][1]];
   return 10;
 }
 
@@ -62,10 +68,12 @@ inline int tet_values(int order, const std::array<double, 4>& L, double* n) {
 inline int tet_gradients(int order, const TetGeometry& g, const std::array<double, 4>& L,
                          Eigen::Vector3d* grad) {
   if (order == 1) {
-    for (int i = 0; i < 4; ++i) grad[i] = g.grad_L[i];
+    for (int i = 0; i < 4; ++i)
+      grad[i] = g.grad_L[i];
     return 4;
   }
-  for (int i = 0; i < 4; ++i) grad[i] = (4 * L[i] - 1) * g.grad_L[i];
+  for (int i = 0; i < 4; ++i)
+    grad[i] = (4 * L[i] - 1) * g.grad_L[i];
   for (int e = 0; e < 6; ++e) {
     const int a = tet_edges[e][0], b = tet_edges[e][1];
     grad[4 + e] = 4 * (L[b] * g.grad_L[a] + L[a] * g.grad_L[b]);

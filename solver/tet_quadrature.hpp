@@ -51,8 +51,10 @@ inline const std::vector<TetQuadPoint>& tet_rule(int degree) {
     detail::add_orbit6(r, 0.0455037041256496494, 6 * 0.0070910034628469110);
     return r;
   }();
-  if (degree <= 1) return d1;
-  if (degree <= 2) return d2;
+  if (degree <= 1)
+    return d1;
+  if (degree <= 2)
+    return d2;
   return d5;
 }
 

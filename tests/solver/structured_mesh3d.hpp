@@ -36,7 +36,8 @@ inline Mesh3D structured_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& h
           const auto& x = m.nodes;
           Eigen::Matrix3d jm;
           jm << x[tet[1]] - x[tet[0]], x[tet[2]] - x[tet[0]], x[tet[3]] - x[tet[0]];
-          if (jm.determinant() < 0) std::swap(tet[2], tet[3]);
+          if (jm.determinant() < 0)
+            std::swap(tet[2], tet[3]);
           m.tets.push_back(tet);
         }
   m.tet_part.assign(m.tets.size(), 0);
@@ -55,7 +56,8 @@ inline Mesh3D structured_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& h
       entry.second = face;
     }
   for (const auto& [key, entry] : faces)
-    if (entry.first == 1) m.outer_faces.push_back(entry.second);
+    if (entry.first == 1)
+      m.outer_faces.push_back(entry.second);
   return m;
 }
 

@@ -20,7 +20,9 @@ namespace {
 
 constexpr double mm = 1e-3;
 
-double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+double factorial(int n) {
+  return n <= 1 ? 1.0 : n * factorial(n - 1);
+}
 
 // Integral of L1^a L2^b L3^c over the reference tet divided by its volume: 6 a! b! c! / (a+b+c+3)!.
 TEST(TetQuadrature, ExactForItsDegree) {
@@ -30,8 +32,10 @@ TEST(TetQuadrature, ExactForItsDegree) {
         for (int c = 0; a + b + c <= degree; ++c) {
           double sum = 0;
           for (const auto& q : tet_rule(degree))
-            sum += q.weight * std::pow(q.bary[1], a) * std::pow(q.bary[2], b) * std::pow(q.bary[3], c);
-          const double exact = 6 * factorial(a) * factorial(b) * factorial(c) / factorial(a + b + c + 3);
+            sum +=
+                q.weight * std::pow(q.bary[1], a) * std::pow(q.bary[2], b) * std::pow(q.bary[3], c);
+          const double exact =
+              6 * factorial(a) * factorial(b) * factorial(c) / factorial(a + b + c + 3);
           EXPECT_NEAR(sum, exact, 1e-14) << degree << ": " << a << b << c;
         }
   }
@@ -42,13 +46,15 @@ TEST(TetLagrange, PartitionOfUnityAndNodality) {
     std::array<double, 10> n{};
     for (int k = 0; k < tet_dofs(order); ++k) {
       tet_values(order, tet_dof_nodes[k], n.data());
-      for (int i = 0; i < tet_dofs(order); ++i) EXPECT_NEAR(n[i], i == k ? 1.0 : 0.0, 1e-15);
+      for (int i = 0; i < tet_dofs(order); ++i)
+        EXPECT_NEAR(n[i], i == k ? 1.0 : 0.0, 1e-15);
     }
     const TetGeometry g = TetGeometry::of({0, 0, 0}, {1, 0.1, 0}, {0.2, 1, 0}, {0.1, 0.3, 0.9});
     std::array<Eigen::Vector3d, 10> grad;
     tet_gradients(order, g, {0.1, 0.2, 0.3, 0.4}, grad.data());
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int i = 0; i < tet_dofs(order); ++i) sum += grad[i];
+    for (int i = 0; i < tet_dofs(order); ++i)
+      sum += grad[i];
     EXPECT_LT(sum.norm(), 1e-13);
   }
 }
@@ -65,7 +71,8 @@ struct Fixture {
     // Region 0 (magnet) in the lower half, region 1 (iron) in the upper half.
     for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k) c += 0.25 * mesh.nodes[mesh.tets[t][k]];
+      for (int k = 0; k < 4; ++k)
+        c += 0.25 * mesh.nodes[mesh.tets[t][k]];
       mesh.tet_part[t] = c.z() < 5 * mm ? 0 : 1;
     }
     problem.mesh = &mesh;
@@ -91,7 +98,8 @@ TEST(Assembler3D, ElementMatrixSymmetricWithConstantsInNullSpace) {
     for (std::size_t t = 0; t < f.mesh.n_tets(); ++t) {
       assembler.element(t, phi, re.data(), ke.data(), TangentKind::newton);
       double scale = 0;
-      for (int k = 0; k < n * n; ++k) scale = std::max(scale, std::abs(ke[k]));
+      for (int k = 0; k < n * n; ++k)
+        scale = std::max(scale, std::abs(ke[k]));
       for (int i = 0; i < n; ++i) {
         double row = 0;
         for (int j = 0; j < n; ++j) {
@@ -147,13 +155,16 @@ TEST(Assembler3D, P2ReproducesHarmonicQuadratic) {
     Eigen::VectorXd r;
     assembler.evaluate(assembler.restrict_to_free(full), r, nullptr, TangentKind::newton);
     std::vector<bool> on_boundary(dofs.n_dofs(), false);
-    for (int d : dofs.dofs_on_faces(mesh.outer_faces)) on_boundary[d] = true;
+    for (int d : dofs.dofs_on_faces(mesh.outer_faces))
+      on_boundary[d] = true;
     double max_interior = 0, max_all = 0;
     for (int d = 0; d < dofs.n_dofs(); ++d) {
       const int eq = assembler.dof_to_equation()[d];
-      if (eq < 0) continue;
+      if (eq < 0)
+        continue;
       max_all = std::max(max_all, std::abs(r[eq]));
-      if (!on_boundary[d]) max_interior = std::max(max_interior, std::abs(r[eq]));
+      if (!on_boundary[d])
+        max_interior = std::max(max_interior, std::abs(r[eq]));
     }
     if (order == 2) {
       EXPECT_LT(max_interior, 1e-12 * max_all);
@@ -167,8 +178,10 @@ TEST(Assembler3D, P2ReproducesHarmonicQuadratic) {
       std::array<Eigen::Vector3d, 10> grad;
       tet_gradients(order, g, bary, grad.data());
       Eigen::Vector3d gh = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
-      for (int i = 0; i < dofs.dofs_per_element(); ++i) gh += full[dofs.element_dofs(t)[i]] * grad[i];
-      for (int k = 0; k < 4; ++k) x += bary[k] * mesh.nodes[tet[k]];
+      for (int i = 0; i < dofs.dofs_per_element(); ++i)
+        gh += full[dofs.element_dofs(t)[i]] * grad[i];
+      for (int k = 0; k < 4; ++k)
+        x += bary[k] * mesh.nodes[tet[k]];
       max_grad_error = std::max(max_grad_error, (gh - grad_phi(x)).norm());
       scale = std::max(scale, grad_phi(x).norm());
     }

@@ -1,0 +1,216 @@
+// Tests of the 3D postprocessing on structured box meshes (no TetGen): field evaluation and
+// recovery reproduce a potential the P2 space contains, point location, the probe CSV
+// contracts (columns, order, spherical components), energy of uniform fields, VTU export.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "../solver/structured_mesh3d.hpp"
+#include "core/constants.hpp"
+#include "postproc/energy3d.hpp"
+#include "postproc/field3d.hpp"
+#include "postproc/point_locator3d.hpp"
+#include "postproc/probes3d.hpp"
+#include "postproc/vtu_export3d.hpp"
+
+namespace magfem {
+namespace {
+
+constexpr double mm = 1e-3;
+
+// Harmonic quadratic potential (A) and its field H = -grad phi (A/m); x in metres.
+double phi_exact(const Eigen::Vector3d& x) {
+  return 1e6 * (x.x() * x.x() - x.y() * x.y() + 3 * x.y() * x.z()) + 2e3 * x.z();
+}
+Eigen::Vector3d h_exact(const Eigen::Vector3d& x) {
+  return -Eigen::Vector3d(2e6 * x.x(), 1e6 * (-2 * x.y() + 3 * x.z()), 3e6 * x.y() + 2e3);
+}
+
+struct BoxField {
+  Material air = Material::make_linear("air", 1.0, "test");
+  Material iron = Material::make_linear("iron", 10.0, "test");
+  Material magnet = Material::make_magnet("magnet", 1.0, 1.1, "test");
+  Mesh3D mesh = test::structured_box({-5 * mm, -5 * mm, -5 * mm}, {5 * mm, 5 * mm, 5 * mm}, 6);
+  Problem3D problem;
+  std::unique_ptr<DofMap3D> dofs;
+  std::unique_ptr<Field3D> field;
+
+  explicit BoxField(int order, bool regions = false) {
+    if (regions)
+      for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 4; ++k)
+          c += 0.25 * mesh.nodes[mesh.tets[t][k]];
+        mesh.tet_part[t] = c.z() < 0 ? 0 : (c.x() < 0 ? 1 : region_background_3d);
+      }
+    problem.mesh = &mesh;
+    problem.order = order;
+    problem.boundary = OuterKind3D::dirichlet;
+    problem.air.material = &air;
+    Magnetization m;
+    m.pattern = Magnetization::Pattern::parallel;
+    m.direction = Eigen::Vector3d::UnitX();
+    problem.parts = {{&magnet, m}, {&iron, {}}};
+    if (!regions)
+      problem.parts = {{&air, {}}};
+    dofs = std::make_unique<DofMap3D>(mesh, order);
+    Eigen::VectorXd phi(dofs->n_dofs());
+    for (int d = 0; d < dofs->n_dofs(); ++d)
+      phi[d] = phi_exact(dofs->dof_points()[d]);
+    field = std::make_unique<Field3D>(problem, *dofs, phi);
+  }
+};
+
+TEST(Field3D, P2FieldAndRecoveryAreExactForQuadraticPotential) {
+  BoxField box(2);
+  const PointLocator3D locator(box.mesh);
+  const double scale = 1e4;
+  const std::vector<Eigen::Vector3d> points = {Eigen::Vector3d(1.1e-3, -2.3e-3, 0.7e-3),
+                                               Eigen::Vector3d(-4.9e-3, 4.2e-3, -3.3e-3),
+                                               Eigen::Vector3d(0, 0, 0)};
+  for (const Eigen::Vector3d& x : points) {
+    const auto loc = locator.locate(x);
+    ASSERT_TRUE(loc.has_value());
+    EXPECT_LT((box.field->point(loc->tet, loc->bary) - x).norm(), 1e-15);
+    for (double b : loc->bary)
+      EXPECT_GE(b, -1e-12);
+    EXPECT_NEAR(box.field->potential(loc->tet, loc->bary), phi_exact(x), 1e-9 * scale);
+    EXPECT_LT((box.field->H(loc->tet, loc->bary) - h_exact(x)).norm(), 1e-9 * scale);
+    EXPECT_LT((box.field->B(loc->tet, loc->bary) - mu0 * h_exact(x)).norm(), 1e-9 * mu0 * scale);
+  }
+  // B is linear per element, so averaging exact nodal values is exact.
+  const auto rec = box.field->recovered_B();
+  for (int d = 0; d < box.dofs->n_dofs(); d += 17)
+    EXPECT_LT((rec[d] - mu0 * h_exact(box.dofs->dof_points()[d])).norm(), 1e-9 * mu0 * scale);
+  EXPECT_FALSE(locator.locate(Eigen::Vector3d(6, 0, 0) * mm).has_value());
+}
+
+TEST(Field3D, MaterialLawsAndMagnetization) {
+  BoxField box(1, true);
+  for (std::size_t t = 0; t < box.mesh.n_tets(); t += 11) {
+    const Eigen::Vector3d x = box.field->point(t, {0.25, 0.25, 0.25, 0.25});
+    const Eigen::Vector3d h = box.field->H(t, {0.25, 0.25, 0.25, 0.25});
+    const Eigen::Vector3d b = box.field->B_of_H(t, x, h);
+    const int part = box.mesh.tet_part[t];
+    if (part == 0) { // magnet: mu0 mu_r H + B_r x_hat, M0 = B_r / mu0
+      EXPECT_LT((b - (mu0 * 1.1 * h + Eigen::Vector3d::UnitX())).norm(), 1e-12);
+      EXPECT_NEAR(box.field->magnetization(t, x).x(), 1.0 / mu0, 1e-6);
+    } else {
+      EXPECT_LT((b - mu0 * (part == 1 ? 10.0 : 1.0) * h).norm(), 1e-12);
+      EXPECT_EQ(box.field->magnetization(t, x).norm(), 0.0);
+    }
+  }
+}
+
+TEST(Probes3D, CsvContractsAndSphericalComponents) {
+  BoxField box(2);
+  const PointLocator3D locator(box.mesh);
+  ProbeSpec sphere;
+  sphere.name = "s";
+  sphere.kind = ProbeSpec::Kind::sphere;
+  sphere.center = Eigen::Vector3d(0.5, -0.5, 0.2) * mm;
+  sphere.radius = 3 * mm;
+  sphere.theta_min = 10 * deg_to_rad;
+  sphere.theta_max = 90 * deg_to_rad;
+  sphere.phi_min = 0;
+  sphere.phi_max = 90 * deg_to_rad;
+  sphere.theta_steps = 5;
+  sphere.phi_steps = 4;
+  const ProbeTable t = sample_probe_3d(*box.field, locator, sphere, mm);
+  EXPECT_EQ(t.to_csv().substr(0, t.to_csv().find('\n')),
+            "theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi");
+  ASSERT_EQ(t.rows.size(), 20u);
+  // theta outer loop, phi inner loop, inclusive ranges
+  EXPECT_DOUBLE_EQ(t.rows[0][0], 10);
+  EXPECT_DOUBLE_EQ(t.rows[3][1], 90);
+  EXPECT_DOUBLE_EQ(t.rows[4][0], 30);
+  EXPECT_NEAR(t.rows[19][0], 90, 1e-12);
+  for (const auto& row : t.rows) {
+    const double th = row[0] * deg_to_rad, ph = row[1] * deg_to_rad;
+    const Eigen::Vector3d x(row[2], row[3], row[4]); // mm
+    const Eigen::Vector3d e_r(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
+                              std::cos(th));
+    EXPECT_LT((x - (sphere.center / mm + 3 * e_r)).norm(), 1e-12);
+    const Eigen::Vector3d b(row[5], row[6], row[7]);
+    EXPECT_LT((b - mu0 * h_exact(x * mm)).norm(), 1e-12);
+    const Eigen::Vector3d e_t(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph),
+                              -std::sin(th));
+    const Eigen::Vector3d e_p(-std::sin(ph), std::cos(ph), 0);
+    EXPECT_NEAR(row[8], b.dot(e_r), 1e-15);
+    EXPECT_NEAR(row[9], b.dot(e_t), 1e-15);
+    EXPECT_NEAR(row[10], b.dot(e_p), 1e-15);
+    EXPECT_NEAR(std::hypot(row[8], row[9], row[10]), b.norm(), 1e-14);
+  }
+
+  ProbeSpec line;
+  line.name = "l";
+  line.start = Eigen::Vector3d(-4, -4, -4) * mm;
+  line.end = Eigen::Vector3d(4, 2, 0) * mm;
+  line.points = 5;
+  const ProbeTable tl = sample_probe_3d(*box.field, locator, line, mm);
+  EXPECT_EQ(tl.columns, (std::vector<std::string>{"x", "y", "z", "Bx", "By", "Bz"}));
+  ASSERT_EQ(tl.rows.size(), 5u);
+  EXPECT_DOUBLE_EQ(tl.rows[4][1], 2);
+  EXPECT_DOUBLE_EQ(tl.rows[2][0], 0);
+
+  ProbeSpec pts;
+  pts.name = "p";
+  pts.kind = ProbeSpec::Kind::points;
+  pts.point_list = {Eigen::Vector3d(1, 2, 3) * mm, Eigen::Vector3d(-1, 0, 4) * mm};
+  const auto rec = box.field->recovered_B();
+  const ProbeTable tp = sample_probe_3d(*box.field, locator, pts, mm, &rec);
+  ASSERT_EQ(tp.rows.size(), 2u);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(tp.rows[1][3 + k], mu0 * h_exact(pts.point_list[1])[k], 1e-12);
+
+  pts.point_list.push_back(Eigen::Vector3d(0, 0, 9) * mm);
+  EXPECT_THROW(sample_probe_3d(*box.field, locator, pts, mm), std::runtime_error);
+}
+
+// Uniform H = -grad(-H0 z) in a box of air, iron (mu_r 10) and magnet (mu_r 1.1): energy
+// density mu |H|^2 / 2 per region (magnets from the remanent state), peak |B| per law.
+TEST(Energy3D, UniformFieldEnergyPerRegion) {
+  BoxField box(2, true);
+  const double h0 = 1e4;
+  Eigen::VectorXd phi(box.dofs->n_dofs());
+  for (int d = 0; d < box.dofs->n_dofs(); ++d)
+    phi[d] = -h0 * box.dofs->dof_points()[d].z();
+  const Field3D field(box.problem, *box.dofs, phi);
+  const EnergySummary3D e = summarize_energy_3d(field, {"magnet", "iron"});
+  ASSERT_EQ(e.regions.size(), 4u);
+  const double v_box = 1e-6;
+  EXPECT_NEAR(e.regions[0].volume_m3, v_box / 2, 1e-15);
+  EXPECT_NEAR(e.regions[0].energy_J, 0.5 * mu0 * 1.1 * h0 * h0 * v_box / 2, 1e-12);
+  EXPECT_NEAR(e.regions[1].energy_J, 0.5 * mu0 * 10 * h0 * h0 * v_box / 4, 1e-12);
+  EXPECT_NEAR(e.regions[2].energy_J, 0.5 * mu0 * h0 * h0 * v_box / 4, 1e-12);
+  EXPECT_NEAR(e.regions[0].peak_B_T, std::hypot(1.0, mu0 * 1.1 * h0), 1e-12);
+  EXPECT_NEAR(e.regions[1].peak_B_T, mu0 * 10 * h0, 1e-12);
+  EXPECT_NEAR(e.total_J, e.regions[0].energy_J + e.regions[1].energy_J + e.regions[2].energy_J,
+              1e-15);
+}
+
+TEST(VtuExport3D, QuadraticTetsWithAllArrays) {
+  BoxField box(2, true);
+  const auto rec = box.field->recovered_B();
+  const VtuGrid g = make_vtu_3d(*box.field, rec, {0, 1}, 2, {"magnet", "iron", "air"});
+  EXPECT_EQ(g.points.size(), static_cast<std::size_t>(box.dofs->n_dofs()));
+  EXPECT_EQ(g.cell_types.size(), box.mesh.n_tets());
+  EXPECT_EQ(g.cell_types[0], 24);
+  EXPECT_EQ(g.connectivity.size(), 10 * box.mesh.n_tets());
+  // VTK quadratic tet: node 4 is the midpoint of vertices 0 and 1, node 9 of 2 and 3.
+  const auto& c = g.connectivity;
+  EXPECT_LT((g.points[c[4]] - 0.5 * (g.points[c[0]] + g.points[c[1]])).norm(), 1e-15);
+  EXPECT_LT((g.points[c[9]] - 0.5 * (g.points[c[2]] + g.points[c[3]])).norm(), 1e-15);
+  ASSERT_EQ(g.cell_data.size(), 6u);
+  EXPECT_EQ(g.cell_data[5].name, "magnetization");
+  EXPECT_EQ(g.cell_data[5].values.size(), 3 * box.mesh.n_tets());
+  EXPECT_EQ(g.point_data[0].name, "phi");
+  const auto path = std::filesystem::temp_directory_path() / "magfem_test_vtu3d.vtu";
+  write_vtu(path.string(), g);
+  EXPECT_GT(std::filesystem::file_size(path), 1000u);
+  std::filesystem::remove(path);
+}
+
+} // namespace
+} // namespace magfem
