@@ -34,10 +34,6 @@ std::string label_name(const Geometry3D& geo, int label) {
   return label == region_background_3d ? "air" : "the domain boundary";
 }
 
-int part_label(const GridFace3D& f) {
-  return f.label_low >= 0 ? f.label_low : f.label_high;
-}
-
 } // namespace
 
 struct FaceSoup3D::Tree {
@@ -93,6 +89,8 @@ void FaceSoup3D::check_parts(const Geometry3D& geo) const {
       }
     }
   }
+  for (auto& b : box)
+    b.extend(b.min() - Vec3::Constant(tol)).extend(b.max() + Vec3::Constant(tol));
   // Parts whose boxes overlap a part of another frame: test their faces' triangles.
   std::vector<bool> suspect(geo.parts.size(), false);
   for (std::size_t p = 0; p < geo.parts.size(); ++p)
@@ -109,22 +107,28 @@ void FaceSoup3D::check_parts(const Geometry3D& geo) const {
       if (part_contains(geo.parts[p], witness[q], -tol))
         throw MeshError(geo.parts[q].name, "", "lies inside part '" + geo.parts[p].name + "'");
     }
-  std::vector<Iterator> hits;
+  // Triangles of each suspect part, tested pairwise against a tree of the other part's.
+  std::vector<std::vector<Triangle>> part_tris(geo.parts.size());
   for (std::size_t t = 0; t < tris.size(); ++t) {
-    const GridFace3D& fa = dec_.faces[tri_face_[t]];
-    const int la = part_label(fa);
-    if (la < 0 || !suspect[la])
+    const GridFace3D& face = dec_.faces[tri_face_[t]];
+    for (int label : {face.label_low, face.label_high})
+      if (label >= 0 && suspect[label])
+        part_tris[label].push_back(tris[t]);
+  }
+  for (std::size_t q = 0; q < geo.parts.size(); ++q) {
+    if (!suspect[q])
       continue;
-    hits.clear();
-    tree_->tree.all_intersected_primitives(tris[t], std::back_inserter(hits));
-    for (Iterator h : hits) {
-      const GridFace3D& fb = dec_.faces[tri_face_[h - tris.begin()]];
-      const int lb = part_label(fb);
-      if (fb.frame == fa.frame || lb < 0)
+    const ::magfem::Tree tree_q(part_tris[q].begin(), part_tris[q].end());
+    for (std::size_t p = 0; p < geo.parts.size(); ++p) {
+      if (p == q || dec_.part_frame[p] == dec_.part_frame[q] || !suspect[p])
         continue;
-      throw MeshError(geo.parts[la].name, "",
-                      "intersects or touches part '" + label_name(geo, lb) +
-                          "' (parts of different frames must be disjoint)");
+      if (!box[p].intersects(box[q]))
+        continue;
+      for (const Triangle& t : part_tris[p])
+        if (tree_q.do_intersect(t))
+          throw MeshError(geo.parts[p].name, "",
+                          "intersects or touches part '" + label_name(geo, static_cast<int>(q)) +
+                              "' (parts of different frames must be disjoint)");
     }
   }
 }

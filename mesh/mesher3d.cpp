@@ -2,10 +2,7 @@
 #include "mesh/mesher3d.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -32,6 +29,9 @@ constexpr double chord_margin = 0.9;
 // h_s <= (0.95 - 0.26) w/L.
 constexpr double gap_source_factor = 1 - size_field_slack - grading * 0.87;
 constexpr double min_dihedral_request_deg = 10; // TetGen -q second argument
+// The coarse triangles for intersection tests and gap rays divide a face into at most about
+// this many steps per direction (their chord error is far below any gap worth resolving).
+constexpr double soup_divisions = 16;
 
 // Region and chord size rules (all in metres, already multiplied by size_scale).
 struct SizeRules {
@@ -83,8 +83,9 @@ double curvature_floor(const FaceChart3D& chart, const FaceSamples3D& s) {
 }
 
 struct FaceSizing {
-  std::vector<double> spacing; // per face
-  std::vector<double> floor;   // curvature floor per face
+  std::vector<double> spacing;      // per face: size-source spacing
+  std::vector<double> soup_spacing; // per face: coarse triangles for geometric queries
+  std::vector<double> floor;        // curvature floor per face
 };
 
 // Sample spacing of each face: a fraction of the smallest intrinsic size on it.
@@ -100,6 +101,11 @@ FaceSizing face_sizing(const GridDecomposition3D& dec, const SizeRules& rules) {
       h = std::min(h, rules.face_chord(face, std::max(chart.curvature_radius(x), floor)));
     fs.spacing.push_back(sample_fraction * h);
     fs.floor.push_back(floor);
+    double extent = 0;
+    for (const Vec3& a : corners.points)
+      for (const Vec3& b : corners.points)
+        extent = std::max(extent, (a - b).norm());
+    fs.soup_spacing.push_back(std::max(fs.spacing.back(), extent / soup_divisions));
   }
   return fs;
 }
@@ -121,14 +127,14 @@ void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
       return std::min(rules.face(face),
                       rules.face_chord(face, std::max(chart.curvature_radius(x), fs.floor[f])));
     };
-    for (const Vec3& x : soup.samples()[f].points)
+    for (const Vec3& x : sample_face(fr, face, fs.spacing[f]).points)
       field.add_source(x, intrinsic(x));
     if (!is_air(face.label_low) && !is_air(face.label_high))
       continue;
     const double side = is_air(face.label_high) ? 1.0 : -1.0;
-    // Gaps narrower than a tenth of the sample spacing are below the resolution of the coarse
+    // Gaps narrower than a tenth of the soup spacing are below the resolution of the coarse
     // triangles the rays are cast against.
-    const double min_gap = 0.1 * fs.spacing[f];
+    const double min_gap = 0.1 * fs.soup_spacing[f];
     auto gap = [&](const Vec3& x) {
       const Vec3 n = side * face_normal(fr, face, x);
       return std::pair{soup.distance_to_face(x + eps * n, n, min_gap) + eps, n};
@@ -157,8 +163,13 @@ void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
 // --- TetGen ------------------------------------------------------------------------------
 
 // TetGen's refinement callback carries no user pointer; the field in use is published here for
-// the duration of one tetrahedralize() call on this thread.
-thread_local const SizeField3D* active_field = nullptr;
+// the duration of one tetrahedralize() call on this thread, with the last evaluated point.
+struct FieldCache {
+  const SizeField3D* field = nullptr;
+  Vec3 x = Vec3::Constant(std::numeric_limits<double>::infinity());
+  double h = 0;
+};
+thread_local FieldCache active;
 
 bool tet_unsuitable(REAL* a, REAL* b, REAL* c, REAL* d, REAL*, REAL) {
   const Vec3 p[4] = {Vec3(a[0], a[1], a[2]), Vec3(b[0], b[1], b[2]), Vec3(c[0], c[1], c[2]),
@@ -167,16 +178,29 @@ bool tet_unsuitable(REAL* a, REAL* b, REAL* c, REAL* d, REAL*, REAL) {
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j)
       longest2 = std::max(longest2, (p[i] - p[j]).squaredNorm());
-  const double hmin = active_field->min_size();
+  const SizeField3D& field = *active.field;
+  const double hmin = field.min_size();
   if (longest2 <= hmin * hmin)
     return false;
-  const double h = (*active_field)((p[0] + p[1] + p[2] + p[3]) / 4);
-  return longest2 > h * h;
+  const Vec3 centre = (p[0] + p[1] + p[2] + p[3]) / 4;
+  // TetGen checks neighbouring tets in turn: the field is grading-Lipschitz, so the last value
+  // often decides without a new evaluation (the computed field is within size_field_slack of
+  // the exact one).
+  const double dist = (centre - active.x).norm();
+  const double lower = (1 - size_field_slack) * active.h - field.grading() * dist;
+  if (lower > 0 && longest2 <= lower * lower)
+    return false;
+  const double upper = active.h + field.grading() * dist;
+  if (std::isfinite(upper) && longest2 > upper * upper)
+    return true;
+  active.x = centre;
+  active.h = field(centre);
+  return longest2 > active.h * active.h;
 }
 
 struct ActiveField {
-  explicit ActiveField(const SizeField3D& f) { active_field = &f; }
-  ~ActiveField() { active_field = nullptr; }
+  explicit ActiveField(const SizeField3D& f) { active = {&f}; }
+  ~ActiveField() { active = {}; }
   ActiveField(const ActiveField&) = delete;
   ActiveField& operator=(const ActiveField&) = delete;
 };
@@ -337,21 +361,11 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
 } // namespace
 
 Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& refine) {
-  const bool verbose = std::getenv("MAGFEM_MESH3D_VERBOSE") != nullptr;
-  auto t0 = std::chrono::steady_clock::now();
-  auto lap = [&](const char* what) {
-    const auto t1 = std::chrono::steady_clock::now();
-    if (verbose)
-      std::fprintf(stderr, "mesh3d: %-10s %.3f s\n", what,
-                   std::chrono::duration<double>(t1 - t0).count());
-    t0 = t1;
-  };
   const GridDecomposition3D dec = decompose_geometry_3d(geo);
   const SizeRules rules(geo);
   const FaceSizing fs = face_sizing(dec, rules);
-  const FaceSoup3D soup(dec, fs.spacing);
+  const FaceSoup3D soup(dec, fs.soup_spacing);
   soup.check_parts(geo);
-  lap("soup");
 
   SizeField3D field(grading);
   add_surface_sources(dec, rules, fs, soup, field);
@@ -359,24 +373,14 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
     for (const ProbeSurface& p : refine)
       field.add_probe(p, rules.scale * geo.options.probe_size);
   field.build();
-  lap("field");
-  if (verbose)
-    std::fprintf(stderr, "mesh3d: %zu sources\n", field.n_sources());
 
   const SurfaceMesh3D surf =
       mesh_surfaces_3d(dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio);
-  lap("surface");
-  if (verbose)
-    std::fprintf(stderr, "mesh3d: %zu surface points %zu triangles\n", surf.points.size(),
-                 surf.triangles.size());
   tetgenio in, out;
   fill_plc(surf, in);
   add_region_seeds(dec, surf, rules, in);
   run_tetgen(geo, in, out, field);
-  lap("tetgen");
-  Mesh3D m = collect_mesh(geo, dec, surf, out);
-  lap("collect");
-  return m;
+  return collect_mesh(geo, dec, surf, out);
 }
 
 } // namespace magfem

@@ -27,6 +27,7 @@ public:
 
   double operator()(const Vec3& x) const;
   double min_size() const { return h_min_; }
+  double grading() const { return grading_; }
   std::size_t n_sources() const { return src_x_.size(); }
 
 private:
