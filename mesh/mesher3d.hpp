@@ -9,13 +9,22 @@
 // different frames must neither intersect nor touch (both are rejected with a MeshError naming
 // both parts).
 //
-// Sizes: the local size h(x) is the minimum of the region sizes (Part3D::max_size or
-// MeshOptions3D::default_size) of the regions touching a surface, the chord-tolerance size of
-// curved surfaces (sagitta <= chord_tolerance), gap sizes (gap width / gap_layers across thin
-// air gaps) and probe_size within probe_size of each ProbeSurface, growing away from those
-// features by a fixed grading (0.3 m per m). Everything except the chord limit is multiplied
-// by size_scale. default_size <= 0 means outer.radius / 8; chord_tolerance <= 0 means no
-// chord limit.
+// Sizes: the local size h(x) bounds the longest edge of every element near x. It is the
+// minimum of the region sizes (Part3D::max_size or MeshOptions3D::default_size) of the
+// regions touching a surface, the chord-tolerance size of curved part surfaces (facet sagitta
+// <= chord_tolerance; the outer spheres are exempt, their nodes lie exactly on them anyway),
+// gap sizes (gap width / gap_layers across thin air gaps) and probe_size within probe_size of
+// each ProbeSurface, growing away from those features by a fixed grading (0.3 m per m).
+// size_scale multiplies every size, the chord limit only when size_scale < 1 (coarsening never
+// breaks the chord tolerance). default_size <= 0 means outer.radius / 8; chord_tolerance <= 0
+// means no chord limit. Quality: TetGen radius-edge bound MeshOptions3D::radius_edge_ratio
+// and a requested minimum dihedral angle of 10 deg (not always reached next to the preserved
+// surface mesh; Mesh3D::quality reports what was reached).
+//
+// Nodes of curved surfaces lie exactly on them (the surface mesh is preserved by TetGen -Y).
+// Limitations: parts of different frames may not touch (a cylinder standing on a box face, a
+// rotated segment touching another array); coincident surfaces of different frames are not
+// merged.
 #include <vector>
 
 #include "mesh/geometry3d.hpp"

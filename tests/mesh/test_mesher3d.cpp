@@ -357,17 +357,30 @@ TEST(Mesher3D, ProbeSphereRefinement) {
   EXPECT_LE(worst, 0.8 * mm * (1 + 1e-9));
 }
 
+// Timing figures of the disabled tests below.
+void print_figures(const char* what, const Mesh3D& m, double wall, double cpu) {
+  std::printf("%s: %zu nodes, %zu tets, %.2f s wall, %.2f s cpu, %.0f tets/cpu-s, dihedral "
+              "%.1f..%.1f, radius-edge %.2f\n",
+              what, m.nodes.size(), m.tets.size(), wall, cpu, m.tets.size() / cpu,
+              m.quality.min_dihedral_deg, m.quality.max_dihedral_deg, m.quality.max_radius_edge);
+  const auto air = std::count(m.tet_part.begin(), m.tet_part.end(), region_background_3d);
+  const auto shell = std::count(m.tet_part.begin(), m.tet_part.end(), region_shell_3d);
+  std::printf("  tets in parts %zu, air %zu, shell %zu\n",
+              m.tets.size() - static_cast<std::size_t>(air + shell), static_cast<std::size_t>(air),
+              static_cast<std::size_t>(shell));
+}
+
 // Figures for the report (run with --gtest_also_run_disabled_tests): the 32-magnet benchmark
-// at increasing resolution with the observation patch r = 56 mm, theta, phi in [0, 90] deg.
+// with the observation patch r = 56 mm, theta, phi in [0, 90] deg, at a few resolutions.
 TEST(Mesher3D, DISABLED_Benchmark32Timing) {
-  const char* env = std::getenv("MAGFEM_BENCH_SCALES");
-  std::vector<double> scales{2.0, 1.4, 1.0, 0.7};
-  if (env)
-    scales = {std::atof(env)};
-  for (double scale : scales) {
-    Geometry3D g = benchmark32(4 * mm, 12 * mm, 0.02 * mm);
+  struct Level {
+    double chord, magnet_size, scale;
+  };
+  for (const Level& level : {Level{0.05 * mm, 4 * mm, 1.5}, Level{0.05 * mm, 4 * mm, 1.0},
+                             Level{0.02 * mm, 4 * mm, 1.0}, Level{0.02 * mm, 3 * mm, 0.8}}) {
+    Geometry3D g = benchmark32(level.magnet_size, 12 * mm, level.chord);
     g.options.probe_size = 1 * mm;
-    g.options.size_scale = scale;
+    g.options.size_scale = level.scale;
     ProbeSurface probe;
     probe.radius = 56 * mm;
     probe.theta_max = pi / 2;
@@ -377,18 +390,10 @@ TEST(Mesher3D, DISABLED_Benchmark32Timing) {
     const Mesh3D m = build_mesh_3d(g, {probe});
     const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("benchmark32 scale %.2f: %zu nodes, %zu tets, %.2f s wall, %.2f s cpu, %.0f "
-                "tets/cpu-s, dihedral %.1f..%.1f, radius-edge %.2f\n",
-                scale, m.nodes.size(), m.tets.size(), s, cpu, m.tets.size() / cpu,
-                m.quality.min_dihedral_deg, m.quality.max_dihedral_deg, m.quality.max_radius_edge);
+    std::printf("benchmark32 chord %.3f mm, magnets %.0f mm, probe 1 mm, scale %.2f:\n",
+                level.chord / mm, level.magnet_size / mm, level.scale);
+    print_figures("  ", m, s, cpu);
   }
-}
-
-void print_figures(const char* what, const Mesh3D& m, double wall, double cpu) {
-  std::printf("%s: %zu nodes, %zu tets, %.2f s wall, %.2f s cpu, %.0f tets/cpu-s, dihedral "
-              "%.1f..%.1f, radius-edge %.2f\n",
-              what, m.nodes.size(), m.tets.size(), wall, cpu, m.tets.size() / cpu,
-              m.quality.min_dihedral_deg, m.quality.max_dihedral_deg, m.quality.max_radius_edge);
 }
 
 // Figures for the report: the gravity compensator of Table 4.2 (hemisphere R 29 mm in a shell
