@@ -119,8 +119,8 @@ TEST(MagnetizedSphere, EnergyAndOpenBoundary) {
     test::SphereCase c;
     c.order = 2;
     c.domain_radius = radius;
-    c.size_scale = 2;
-    c.chord_tolerance = 0.05 * mm;
+    c.size_scale = 3;
+    c.chord_tolerance = 0.1 * mm;
     const auto s = test::solve_sphere_case(c);
     ASSERT_TRUE(s->report.converged);
     const EnergySummary3D e = summarize_energy_3d(*s->field, {"magnet"});
@@ -132,15 +132,82 @@ TEST(MagnetizedSphere, EnergyAndOpenBoundary) {
                 radius / mm, s->assembler->n_unknowns(), 100 * v_error,
                 100 * (e.total_J / w_total - 1), 100 * (e.regions[2].energy_J / w_exterior - 1),
                 100 * (bz / (2.0 / 3.0) - 1));
-    // The energy scales with the magnet volume; the exterior is a far-field quantity.
+    // The energy scales with the meshed magnet volume (moment = M V exactly for uniform M),
+    // the exterior energy with its square; the exterior check allows 1.5 % because the air
+    // elements at R are 12 mm here.
     EXPECT_NEAR(e.total_J / w_total - 1, v_error, 0.003);
-    EXPECT_NEAR(e.regions[2].energy_J / w_exterior, 1.0, 0.01);
+    EXPECT_NEAR(e.regions[2].energy_J / (w_exterior * (1 + v_error) * (1 + v_error)), 1.0, 0.015);
     if (w_prev > 0) {
       EXPECT_NEAR(e.total_J / w_prev, 1.0, 0.001);
       EXPECT_NEAR(bz / bz_prev, 1.0, 0.001);
     }
     w_prev = e.total_J;
     bz_prev = bz;
+  }
+}
+
+// Rates under uniform refinement (every size, including the surface facets, scales with h):
+// the element B error on r12 is O(h) for order 1 and O(h^2) for order 2 (the faceting of the
+// sphere is O(h^2) as well). Rates are fitted over three levels.
+TEST(MagnetizedSphere, ConvergenceRatesOrders1And2) {
+  const std::vector<double> scales = {2.0, 1.41, 1.0};
+  std::vector<double> h, e1, e2;
+  for (double scale : scales) {
+    test::SphereCase c;
+    c.chord_tolerance = 0;
+    c.magnet_size = 2 * mm;
+    c.air_size = 4 * mm;
+    c.size_scale = scale;
+    const Mesh3D mesh = test::build_sphere_mesh(c);
+    h.push_back(std::cbrt(1.0 / static_cast<double>(mesh.n_tets())));
+    for (int order : {1, 2}) {
+      c.order = order;
+      const auto s = test::solve_sphere_case(c, mesh);
+      ASSERT_TRUE(s->report.converged);
+      const double e = sphere_probe_error(*s, 12 * mm, dipole).rms;
+      (order == 1 ? e1 : e2).push_back(e);
+      std::printf("h-scale %.2f: %zu tets, order %d, %d unknowns, r12 rms error %.3f%%\n", scale,
+                  mesh.n_tets(), order, s->assembler->n_unknowns(), 100 * e);
+    }
+  }
+  auto rate = [&](const std::vector<double>& e) {
+    return std::log(e.front() / e.back()) / std::log(h.front() / h.back());
+  };
+  std::printf("observed rates: order 1 %.2f, order 2 %.2f\n", rate(e1), rate(e2));
+  EXPECT_GT(rate(e1), 0.8);
+  EXPECT_LT(rate(e1), 1.5);
+  EXPECT_GT(rate(e2), 1.7);
+}
+
+// Magnetized sphere (10 mm, B_r 1 T) inside a concentric linear shell (15..20 mm, mu_r 100):
+// the exact l = 1 solution (test::ShellSphereExact) inside the magnet, in the air gap and in
+// the shell, within 0.5 % rms over each probe sphere. The test mesh is coarse (chord
+// tolerance 0.1 mm: the inscribed polyhedron loses ~1 % of the magnet's volume, hence of its
+// moment); the exact solution is taken for the sphere of the same volume as the meshed
+// magnet, so that the check measures the solver, not the faceting (the mesher's tests bound
+// that). At 0.02 mm and the exact radius, 698k unknowns give 0.33 % / 0.30 % in gap / shell.
+TEST(MagnetizedSphere, InsidePermeableShell) {
+  test::SphereCase c;
+  c.shell_inner = 15 * mm;
+  c.shell_outer = 20 * mm;
+  c.shell_mu_r = 100;
+  c.domain_radius = 30 * mm;
+  c.chord_tolerance = 0.05 * mm;
+  c.size_scale = 2;
+  c.probe_radius = 12.5 * mm; // resolve the air gap
+  c.probe_size = 0.75 * mm;   // times size_scale
+  const auto s = test::solve_sphere_case(c);
+  ASSERT_TRUE(s->report.converged);
+  const double a_eff = std::cbrt(s->mesh.part_volumes[0] / (4.0 / 3.0 * pi));
+  const test::ShellSphereExact exact(a_eff, 15 * mm, 20 * mm, 100, 1.0);
+  auto b = [&](const Eigen::Vector3d& x) { return exact.B(x); };
+  std::printf("shell: %d unknowns, solve %.1f s, volume-equivalent magnet radius %.4f mm\n",
+              s->assembler->n_unknowns(), s->report.solve_s, a_eff / mm);
+  for (double r : {6.0, 12.5, 17.5}) {
+    const ProbeError e = sphere_probe_error(*s, r * mm, b, true);
+    std::printf("  r = %.1f mm: rms %.3f%% max %.3f%% (|B| exact at pole %.4f T)\n", r, 100 * e.rms,
+                100 * e.max, exact.B(Eigen::Vector3d(0, 0, r * mm)).norm());
+    EXPECT_LT(e.rms, 0.005) << r;
   }
 }
 
