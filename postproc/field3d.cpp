@@ -8,7 +8,22 @@ namespace magfem {
 Field3D::Field3D(const Problem3D& problem, const DofMap3D& dofs, Eigen::VectorXd phi_full)
     : problem_(problem), dofs_(dofs), phi_(std::move(phi_full)) {}
 
+namespace {
+std::array<Eigen::Vector3d, 10> node_points(const DofMap3D& dofs, std::size_t t) {
+  std::array<Eigen::Vector3d, 10> x;
+  for (int i = 0; i < 10; ++i)
+    x[i] = dofs.dof_points()[dofs.element_dofs(t)[i]];
+  return x;
+}
+} // namespace
+
 Eigen::Vector3d Field3D::point(std::size_t t, const std::array<double, 4>& bary) const {
+  if (dofs_.is_curved(t)) {
+    std::array<Eigen::Vector3d, 10> grad;
+    Eigen::Vector3d x;
+    tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
+    return x;
+  }
   const auto& tet = problem_.mesh->tets[t];
   const auto& p = problem_.mesh->nodes;
   return bary[0] * p[tet[0]] + bary[1] * p[tet[1]] + bary[2] * p[tet[2]] + bary[3] * p[tet[3]];
@@ -29,7 +44,13 @@ Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) con
   const auto& p = problem_.mesh->nodes;
   const auto g = TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]);
   std::array<Eigen::Vector3d, 10> grad;
-  const int count = tet_gradients(dofs_.order(), g, bary, grad.data());
+  int count = 10;
+  if (dofs_.is_curved(t)) {
+    Eigen::Vector3d x;
+    tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
+  } else {
+    count = tet_gradients(dofs_.order(), g, bary, grad.data());
+  }
   const int* dof = dofs_.element_dofs(t);
   Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)

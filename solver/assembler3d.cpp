@@ -99,26 +99,37 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
   const Material& mat = *phys.material;
   const bool radial =
       mat.is_magnet() && phys.magnetization.pattern == Magnetization::Pattern::radial;
+  // Elements with edge nodes on curved surfaces use the isoparametric map.
+  const bool curved = dofs_.is_curved(t);
+  std::array<Eigen::Vector3d, 10> xn;
+  if (curved)
+    for (int i = 0; i < n; ++i)
+      xn[i] = dofs_.dof_points()[dof[i]];
   // grad N_i . grad N_j has degree 2(order-1); the shell metric, nonlinear laws and radial
-  // remanence are not polynomial and get the degree-5 rule.
-  const int degree = (in_shell || mat.is_nonlinear() || radial) ? 5 : 2 * (order - 1);
+  // remanence are not polynomial and get the degree-5 rule, as do curved elements.
+  const int degree = (in_shell || mat.is_nonlinear() || radial || curved) ? 5 : 2 * (order - 1);
 
   std::fill(re, re + n, 0.0);
   if (ke)
     std::fill(ke, ke + n * n, 0.0);
   std::array<Eigen::Vector3d, 10> grad, dgrad;
   for (const auto& q : tet_rule(degree)) {
-    tet_gradients(order, g, q.bary, grad.data());
-    const double w = q.weight * g.volume;
+    Eigen::Vector3d x;
+    double w = 0;
+    if (curved) {
+      w = q.weight * tet_iso_gradients(xn, q.bary, grad.data(), x);
+    } else {
+      tet_gradients(order, g, q.bary, grad.data());
+      w = q.weight * g.volume;
+      x = q.bary[0] * nodes[tet[0]] + q.bary[1] * nodes[tet[1]] + q.bary[2] * nodes[tet[2]] +
+          q.bary[3] * nodes[tet[3]];
+    }
     Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
     for (int i = 0; i < n; ++i)
       grad_phi += phi_full[dof[i]] * grad[i];
     Eigen::Matrix3d d;
     Eigen::Vector3d flux; // -B (or its shell-metric counterpart)
     if (in_shell) {
-      Eigen::Vector3d x = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k)
-        x += q.bary[k] * nodes[tet[k]];
       // Air in the mapped exterior: -B' = mu0 T grad phi, tangent mu0 T.
       d = mu0 * shell_.metric<3>(x);
       flux = d * grad_phi;
@@ -127,12 +138,8 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
       double mu = 0, dmu = 0;
       mat.permeability(h.squaredNorm(), mu, dmu);
       flux = -mu * h;
-      if (mat.is_magnet()) {
-        Eigen::Vector3d x = Eigen::Vector3d::Zero();
-        for (int k = 0; k < 4; ++k)
-          x += q.bary[k] * nodes[tet[k]];
+      if (mat.is_magnet())
         flux -= mat.B_r * phys.magnetization.unit_at(x);
-      }
       d = mu * Eigen::Matrix3d::Identity();
       if (kind == TangentKind::newton && dmu != 0)
         d += 2 * dmu * h * h.transpose();

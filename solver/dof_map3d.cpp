@@ -1,7 +1,9 @@
 #include "solver/dof_map3d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <variant>
 
 #include "solver/tet_lagrange.hpp"
 
@@ -56,6 +58,79 @@ int DofMap3D::edge_dof(int a, int b) const {
   if (it == edge_keys_.end() || *it != k)
     throw std::logic_error("edge not in mesh");
   return n_vertices_ + static_cast<int>(it - edge_keys_.begin());
+}
+
+std::vector<SphereSurface> sphere_surfaces(const Geometry3D& geometry, const Mesh3D& mesh) {
+  std::vector<SphereSurface> out;
+  for (const auto& part : geometry.parts)
+    if (const auto* seg = std::get_if<SphericalSegment>(&part.shape)) {
+      if (seg->r_inner > 0)
+        out.push_back({part.placement.translation, seg->r_inner});
+      out.push_back({part.placement.translation, seg->r_outer});
+    }
+  out.push_back({Eigen::Vector3d::Zero(), geometry.outer.radius});
+  if (mesh.shell_outer_radius > 0)
+    out.push_back({Eigen::Vector3d::Zero(), mesh.shell_outer_radius});
+  return out;
+}
+
+void DofMap3D::curve_to_spheres(const Mesh3D& mesh, const std::vector<SphereSurface>& spheres) {
+  if (order_ != 2)
+    return;
+  // Faces of the region interfaces and the outer boundary: those whose two tets differ in
+  // part, or that have one tet. Sorting the 4 n_tets face keys finds the pairs.
+  struct FaceRef {
+    std::array<int, 3> key;
+    int part;
+  };
+  std::vector<FaceRef> faces;
+  faces.reserve(mesh.n_tets() * 4);
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      std::array<int, 3> k = {mesh.tets[t][(f + 1) % 4], mesh.tets[t][(f + 2) % 4],
+                              mesh.tets[t][(f + 3) % 4]};
+      std::sort(k.begin(), k.end());
+      faces.push_back({k, mesh.tet_part[t]});
+    }
+  std::sort(faces.begin(), faces.end(),
+            [](const FaceRef& a, const FaceRef& b) { return a.key < b.key; });
+  auto on_sphere = [&](int v, const SphereSurface& s) {
+    return std::abs((mesh.nodes[v] - s.center).norm() - s.radius) <= 1e-9 * s.radius;
+  };
+  std::vector<char> moved(n_dofs_, 0);
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].key == faces[i].key)
+      ++j;
+    const bool surface = j - i == 1 || faces[i].part != faces[i + 1].part;
+    const auto& k = faces[i].key;
+    i = j;
+    if (!surface)
+      continue;
+    for (const auto& s : spheres) {
+      if (!on_sphere(k[0], s) || !on_sphere(k[1], s) || !on_sphere(k[2], s))
+        continue;
+      for (int e = 0; e < 3; ++e) {
+        const int d = edge_dof(k[e], k[(e + 1) % 3]);
+        if (moved[d])
+          continue;
+        const Eigen::Vector3d r = points_[d] - s.center;
+        points_[d] = s.center + s.radius * r / r.norm();
+        moved[d] = 1;
+      }
+      break;
+    }
+  }
+  const int per = dofs_per_element();
+  curved_.assign(mesh.n_tets(), 0);
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t)
+    for (int e = 4; e < per; ++e)
+      if (moved[element_dofs_[t * per + e]])
+        curved_[t] = 1;
+}
+
+std::size_t DofMap3D::n_curved() const {
+  return static_cast<std::size_t>(std::count(curved_.begin(), curved_.end(), 1));
 }
 
 std::vector<int> DofMap3D::dofs_on_faces(const std::vector<std::array<int, 3>>& faces) const {

@@ -7,9 +7,19 @@
 
 #include <Eigen/Core>
 
+#include "mesh/geometry3d.hpp"
 #include "mesh/mesh3d.hpp"
 
 namespace magfem {
+
+struct SphereSurface {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0;
+};
+
+// The spheres of a geometry on which mesh faces lie: the r_inner > 0 and r_outer faces of
+// every spherical segment, the domain sphere and (open boundary) the outer shell sphere.
+std::vector<SphereSurface> sphere_surfaces(const Geometry3D& geometry, const Mesh3D& mesh);
 
 class DofMap3D {
 public:
@@ -21,6 +31,15 @@ public:
   // Global DOFs of tet t in local order (see tet_lagrange.hpp).
   const int* element_dofs(std::size_t t) const { return &element_dofs_[t * dofs_per_element()]; }
   const std::vector<Eigen::Vector3d>& dof_points() const { return points_; }
+  // Order 2: moves the edge nodes of region interfaces and outer faces that lie on one of
+  // the spheres onto that sphere, so that the elements touching them become isoparametric
+  // (curved) and the meshed volumes match the true ones to O(h^4) instead of O(h^2). The
+  // vertices must already lie on the spheres (TetGen keeps them there). Order 1: no effect.
+  void curve_to_spheres(const Mesh3D& mesh, const std::vector<SphereSurface>& spheres);
+  // True if tet t has a moved edge node (use tet_iso_gradients for it).
+  bool is_curved(std::size_t t) const { return !curved_.empty() && curved_[t] != 0; }
+  std::size_t n_curved() const;
+
   // DOFs on the given mesh faces (vertices and, order 2, edge midpoints), sorted, unique.
   std::vector<int> dofs_on_faces(const std::vector<std::array<int, 3>>& faces) const;
 
@@ -33,6 +52,7 @@ private:
   std::vector<Eigen::Vector3d> points_;
   std::vector<long long> edge_keys_; // sorted; edge k has DOF n_vertices + k
   int n_vertices_ = 0;
+  std::vector<char> curved_; // per tet (empty until curve_to_spheres)
 };
 
 } // namespace magfem

@@ -81,4 +81,29 @@ inline int tet_gradients(int order, const TetGeometry& g, const std::array<doubl
   return 10;
 }
 
+// Isoparametric order-2 map of a curved tet from its 10 node positions x (vertices, then edge
+// nodes, which may lie off the edge midpoints). At barycentric point L: the physical
+// gradients of the 10 shape functions, the physical point, and the return value det J /
+// 6, the volume element relative to the barycentric measure (the straight tet's volume
+// when the edge nodes are midpoints).
+inline double tet_iso_gradients(const std::array<Eigen::Vector3d, 10>& x,
+                                const std::array<double, 4>& L, Eigen::Vector3d* grad,
+                                Eigen::Vector3d& point) {
+  static const TetGeometry reference = TetGeometry::of({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  std::array<Eigen::Vector3d, 10> g_ref;
+  tet_gradients(2, reference, L, g_ref.data());
+  std::array<double, 10> n{};
+  tet_values(2, L, n.data());
+  Eigen::Matrix3d j = Eigen::Matrix3d::Zero(); // dx / dxi
+  point.setZero();
+  for (int i = 0; i < 10; ++i) {
+    j += x[i] * g_ref[i].transpose();
+    point += n[i] * x[i];
+  }
+  const Eigen::Matrix3d inv_t = j.inverse().transpose();
+  for (int i = 0; i < 10; ++i)
+    grad[i] = inv_t * g_ref[i];
+  return j.determinant() / 6.0;
+}
+
 } // namespace magfem

@@ -33,6 +33,7 @@ struct SphereCase {
   double size_scale = 1.0;
   LinearSolverKind solver = LinearSolverKind::cg;
   double cg_tolerance = 1e-10;
+  bool curved = true; // isoparametric P2 on the spheres (DofMap3D::curve_to_spheres)
 };
 
 // Owns everything a solution refers to (the problem holds pointers into it).
@@ -100,6 +101,8 @@ inline std::unique_ptr<SphereSolution> solve_sphere_case(const SphereCase& c, co
   if (c.shell_outer > 0)
     s->problem.parts.push_back({&s->iron, {}});
   s->dofs = std::make_unique<DofMap3D>(s->mesh, c.order);
+  if (c.curved)
+    s->dofs->curve_to_spheres(s->mesh, sphere_surfaces(sphere_geometry(c), s->mesh));
   s->assembler = std::make_unique<Assembler3D>(s->problem, *s->dofs);
   s->setup_s = seconds_since(t0);
   NewtonOptions options;
