@@ -3,6 +3,8 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/IterativeLinearSolvers>
 
+#include <limits>
+
 #include "core/input_error.hpp"
 
 namespace magfem {
@@ -21,8 +23,11 @@ std::pair<double, double> predicted_cholesky_cost(const Eigen::SparseMatrix<doub
   Eigen::SparseMatrix<double> copy = lower; // viewAsCholmod needs a mutable view
   cholmod_sparse a = Eigen::viewAsCholmod(copy);
   a.stype = -1; // symmetric, lower triangle stored
+  c.print = 0; // "problem too large" is an answer here, not an error to print
   cholmod_factor* l = cholmod_analyze(&a, &c);
-  const std::pair<double, double> cost{c.fl, c.lnz};
+  const double too_large = std::numeric_limits<double>::infinity();
+  const std::pair<double, double> cost =
+      (l && c.status == CHOLMOD_OK) ? std::pair{c.fl, c.lnz} : std::pair{too_large, too_large};
   cholmod_free_factor(&l, &c);
   cholmod_finish(&c);
   return cost;

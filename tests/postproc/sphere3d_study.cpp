@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <sys/resource.h>
+
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
 #include "sphere_cases3d.hpp"
@@ -65,6 +67,10 @@ int main(int argc, char** argv) {
       c.order, s->mesh.n_tets(), s->assembler->n_unknowns(), 100 * v_error, s->mesh_s, s->setup_s,
       s->report.assemble_s, s->report.solve_s, s->report.linear_solver.c_str(),
       s->report.linear_iterations);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::printf("curved tets %zu, peak memory %.0f MB\n", s->dofs->n_curved(),
+              usage.ru_maxrss / 1024.0);
   const PointLocator3D locator(s->mesh);
   const auto rec = s->field->recovered_B();
   for (double r_mm : {6.0, 12.0}) {
