@@ -58,18 +58,16 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
     auto& reg = out.regions[slot_of(mesh.tet_part[t], names.size())];
-    const auto& tet = mesh.tets[t];
-    const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]], mesh.nodes[tet[2]],
-                                       mesh.nodes[tet[3]])
-                           .volume;
-    reg.volume_m3 += vol;
     const bool in_shell = problem.is_shell(t);
     const Material& mat = *problem.physics(mesh.tet_part[t]).material;
+    // Curved (isoparametric) tets: the volume element varies over the tet.
     for (const auto& q : tet_rule(5)) {
+      const double dv = q.weight * field.volume_density(t, q.bary);
       const Eigen::Vector3d h = field.H(t, q.bary);
       const double w = in_shell ? 0.5 * mu0 * h.dot(shell.metric<3>(field.point(t, q.bary)) * h)
                                 : energy_density(mat, h);
-      reg.energy_J += q.weight * vol * w;
+      reg.volume_m3 += dv;
+      reg.energy_J += dv * w;
     }
     if (in_shell)
       continue;

@@ -29,6 +29,17 @@ Eigen::Vector3d Field3D::point(std::size_t t, const std::array<double, 4>& bary)
   return bary[0] * p[tet[0]] + bary[1] * p[tet[1]] + bary[2] * p[tet[2]] + bary[3] * p[tet[3]];
 }
 
+double Field3D::volume_density(std::size_t t, const std::array<double, 4>& bary) const {
+  if (dofs_.is_curved(t)) {
+    std::array<Eigen::Vector3d, 10> grad;
+    Eigen::Vector3d x;
+    return tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
+  }
+  const auto& tet = problem_.mesh->tets[t];
+  const auto& p = problem_.mesh->nodes;
+  return TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]).volume;
+}
+
 double Field3D::potential(std::size_t t, const std::array<double, 4>& bary) const {
   std::array<double, 10> n{};
   const int count = tet_values(dofs_.order(), bary, n.data());

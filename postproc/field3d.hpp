@@ -32,6 +32,9 @@ public:
   // Remanent magnetization M0 = B_r m_hat / mu0 (A/m) at x in tet t; zero outside magnets.
   Eigen::Vector3d magnetization(std::size_t t, const Eigen::Vector3d& x) const;
   Eigen::Vector3d point(std::size_t t, const std::array<double, 4>& bary) const;
+  // Volume element of tet t at bary relative to the barycentric measure (weights of
+  // tet_rule sum to 1): the tet volume for straight tets, det J / 6 for curved ones.
+  double volume_density(std::size_t t, const std::array<double, 4>& bary) const;
 
   // Volume-weighted average of the element B values at every DOF point (shell excluded;
   // DOFs touched only by the shell get zero). Computed once and cached by the caller.
