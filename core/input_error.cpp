@@ -5,10 +5,13 @@ namespace {
 std::string format_location(const std::string& file, int line, const std::string& field,
                             const std::string& message) {
   std::string text = file.empty() ? std::string("<input>") : file;
-  if (line > 0) text += ":" + std::to_string(line);
-  text += ": ";
-  if (!field.empty()) text += "field '" + field + "': ";
-  return text + message;
+  // Appended piece by piece: GCC 12 reports a false -Wrestrict on "literal" + std::string.
+  if (line > 0)
+    text.append(":").append(std::to_string(line));
+  text.append(": ");
+  if (!field.empty())
+    text.append("field '").append(field).append("': ");
+  return text.append(message);
 }
 } // namespace
 

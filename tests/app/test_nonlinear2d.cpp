@@ -12,20 +12,26 @@ using namespace magfem;
 
 namespace {
 
-std::unique_ptr<Run2D> run_c_core(double current, TangentKind method, int max_iterations = 40) {
+std::unique_ptr<Run2D> run_c_core(double current, TangentKind method, int max_iterations = 40,
+                                  double tolerance = 0) {
   auto spec = read_case(test::example("2d/c_core.yaml"));
   for (auto& r : spec.regions)
-    if (r.name == "coil_go") r.ampere_turns = 400 * current;
-    else if (r.name == "coil_return") r.ampere_turns = -400 * current;
+    if (r.name == "coil_go")
+      r.ampere_turns = 400 * current;
+    else if (r.name == "coil_return")
+      r.ampere_turns = -400 * current;
   spec.newton.method = method;
   spec.newton.max_iterations = max_iterations;
+  if (tolerance > 0)
+    spec.newton.residual_tol = spec.newton.update_tol = tolerance;
   return run_case_2d(std::move(spec));
 }
 
 double mean_gap_field(const Run2D& run) {
   const auto& t = test::probe(run, "gap_line");
   double sum = 0;
-  for (const auto& row : t.rows) sum += row[t.column("Bx")];
+  for (const auto& row : t.rows)
+    sum += row[t.column("By")];
   return sum / static_cast<double>(t.rows.size());
 }
 
@@ -47,24 +53,36 @@ TEST(Nonlinear2D, NewtonConvergesQuadraticallyOnTheSaturatedCCore) {
   const auto run = run_c_core(40.0, TangentKind::newton);
   const auto& r = run->report.residual_history;
   std::cout << "C-core 40 A, Newton residuals:";
-  for (double x : r) std::cout << " " << x;
+  for (double x : r)
+    std::cout << " " << x;
   std::cout << "\n";
   EXPECT_LE(run->report.iterations, 12);
   // Quadratic convergence: in the asymptotic phase log r_{k+1} / log r_k approaches 2.
   // Measured on the last step that starts below 1e-3 (before round-off floors it).
   double best_order = 0;
   for (std::size_t k = 1; k + 1 < r.size(); ++k)
-    if (r[k] < 1e-3 && r[k + 1] > 1e-15) best_order = std::max(best_order, std::log(r[k + 1]) / std::log(r[k]));
+    if (r[k] < 1e-3 && r[k + 1] > 1e-15)
+      best_order = std::max(best_order, std::log(r[k + 1]) / std::log(r[k]));
   EXPECT_GT(best_order, 1.7);
   double peak = 0;
   for (const auto& reg : run->energy.regions)
-    if (reg.name == "core") peak = reg.peak_B_T;
+    if (reg.name == "core")
+      peak = reg.peak_B_T;
   EXPECT_GT(peak, 1.8); // it really is saturated
 }
 
 TEST(Nonlinear2D, NewtonAndPicardAgreeInEnergy) {
-  const auto newton = run_c_core(20.0, TangentKind::newton);
-  const auto picard = run_c_core(20.0, TangentKind::picard, 400);
+  // 10 A puts the core's corners into the knee (peak B ~ 1.6 T): nonlinear enough that the
+  // secant iteration needs many steps, without the ~170 steps it takes in deep saturation.
+  const auto newton = run_c_core(10.0, TangentKind::newton);
+  // Picard converges linearly: stopping it at 1e-7 leaves an energy error of order
+  // (1e-7)^2 relative (energy is stationary at the solution), far below the 1e-6 asserted.
+  const auto picard = run_c_core(10.0, TangentKind::picard, 400, 1e-7);
+  double peak = 0;
+  for (const auto& reg : newton->energy.regions)
+    if (reg.name == "core")
+      peak = reg.peak_B_T;
+  std::cout << "peak core B " << peak << " T\n";
   std::cout << "Picard iterations " << picard->report.iterations << ", Newton "
             << newton->report.iterations << "\n";
   EXPECT_NEAR(picard->energy.total_J_per_m, newton->energy.total_J_per_m,
@@ -81,13 +99,22 @@ TEST(Nonlinear2D, LinearMaterialsTakeOneIterationAndMatchALinearCurve) {
   EXPECT_EQ(linear->report.iterations, 1);
   EXPECT_TRUE(linear->report.converged);
 
-  const double mu_r = 1000, h_end = 1e5;
-  Material line = Material::make_soft("line", std::make_shared<BhCurve>(std::vector<double>{0, h_end}, std::vector<double>{0, mu0 * mu_r * h_end}), "test");
+  // The curve bends into slope mu0 on its last interval (saturation), so the table runs far
+  // beyond the casing's field (~1 T, H ~ 800 A/m): every interval used is exactly straight.
+  const double mu_r = 1000;
+  std::vector<double> h, b;
+  for (int i = 0; i <= 100; ++i) {
+    h.push_back(1e3 * i);
+    b.push_back(mu0 * mu_r * h.back());
+  }
+  Material line = Material::make_soft("line", std::make_shared<BhCurve>(h, b), "test");
   for (auto& r : spec.regions)
-    if (r.name == "casing") r.material = &line;
+    if (r.name == "casing")
+      r.material = &line;
   const auto curved = run_case_2d(spec);
   EXPECT_LE(curved->report.iterations, 2);
-  EXPECT_NEAR(curved->energy.total_J_per_m, linear->energy.total_J_per_m, 1e-9 * linear->energy.total_J_per_m);
+  EXPECT_NEAR(curved->energy.total_J_per_m, linear->energy.total_J_per_m,
+              1e-9 * linear->energy.total_J_per_m);
 }
 
 TEST(Nonlinear2D, CCoreGapFieldAgreesWithTheMagneticCircuitUntilSaturation) {
