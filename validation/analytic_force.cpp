@@ -12,41 +12,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-struct SpherePoint {
-  Vec3 x, n;
-  double w; // area weight
-};
-
-std::vector<SpherePoint> sphere_points(const Vec3& c, double r, int n_theta, int n_phi) {
-  const GaussRule g(n_theta);
-  std::vector<SpherePoint> pts;
-  pts.reserve(static_cast<std::size_t>(n_theta) * n_phi);
-  for (int i = 0; i < n_theta; ++i) {
-    // theta = (pi/2)(1 + t): d theta = pi/2 dt, dS = r^2 sin(theta) dtheta dphi.
-    const double th = 0.5 * pi * (1 + g.nodes[i]);
-    const double wt = 0.5 * pi * g.weights[i] * r * r * std::sin(th) * (2 * pi / n_phi);
-    for (int j = 0; j < n_phi; ++j) {
-      const double ph = 2 * pi * (j + 0.5) / n_phi;
-      const Vec3 n(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
-      pts.push_back({c + r * n, n, wt});
-    }
-  }
-  return pts;
-}
-
-ForceTorque integrate_stress(const std::vector<SpherePoint>& pts, const std::vector<Vec3>& B,
-                             const Vec3& torque_point) {
-  ForceTorque ft;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Vec3& b = B[i];
-    // T.n = (1/mu0) (B (B.n) - n |B|^2 / 2)
-    const Vec3 tn = (b * b.dot(pts[i].n) - 0.5 * b.squaredNorm() * pts[i].n) / mu0;
-    ft.force += pts[i].w * tn;
-    ft.torque += pts[i].w * (pts[i].x - torque_point).cross(tn);
-  }
-  return ft;
-}
-
 // Force and torque of the point charges of one box in the field H of `field`.
 ForceTorque box_force(const ChargeDomain& d, const ParamBox& box, const GaussRule& rule,
                       const ChargeModel& field, const Vec3& p) {
@@ -160,24 +125,6 @@ ForceTorque refine(const InteractionTask& t, const InteractionContext& ctx, doub
 }
 
 } // namespace
-
-ForceTorque maxwell_stress_on_sphere(const FieldFunction& B, const Vec3& center, double radius,
-                                     const Vec3& torque_point, int n_theta, int n_phi) {
-  const std::vector<SpherePoint> pts = sphere_points(center, radius, n_theta, n_phi);
-  std::vector<Vec3> b(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    b[i] = B(pts[i].x);
-  return integrate_stress(pts, b, torque_point);
-}
-
-ForceTorque maxwell_stress_on_sphere(const BatchFieldFunction& B, const Vec3& center, double radius,
-                                     const Vec3& torque_point, int n_theta, int n_phi) {
-  const std::vector<SpherePoint> pts = sphere_points(center, radius, n_theta, n_phi);
-  std::vector<Vec3> xs(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    xs[i] = pts[i].x;
-  return integrate_stress(pts, B(xs), torque_point);
-}
 
 ForceTorque charge_interaction(const std::vector<AnalyticMagnet>& on,
                                const std::vector<AnalyticMagnet>& by, const Vec3& torque_point,
