@@ -7,24 +7,41 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "app/resource_usage.hpp"
 #include "app/run2d.hpp"
 #include "app/run3d.hpp"
 #include "app/run_analytic.hpp"
+#include "app/sweep.hpp"
+#include "app/sweep_plot.hpp"
+#include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "core/output_stage.hpp"
 #include "postproc/probe_compare.hpp"
 
 namespace {
 
 constexpr const char* usage =
     "usage: magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]\n"
-    "       magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] [--n-max N]\n"
+    "       magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
+    "[--n-max N]\n"
     "       magfem compare REFERENCE.csv TEST.csv\n"
+    "       magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
+    "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
+    "                    [--surface-radius R] [--jobs N] [--out DIR]\n"
     "\n"
     "  solve     mesh and solve a case (FE), write summary.json, one CSV per probe and\n"
     "            solution.vtu into DIR (default: out/<case name>)\n"
     "  analytic  the same probes from the analytic models (3D magnets in air, permeable\n"
     "            spheres): charge model with imaging, or spherical harmonics\n"
-    "  compare   per field component: eq. 3.117 rms discrepancy and pointwise rms error\n";
+    "  compare   per field component: eq. 3.117 rms discrepancy and pointwise rms error\n"
+    "  sweep     rotate a group of parts (right-hand rule, axis through the origin or\n"
+    "            --point) and write sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about the\n"
+    "            origin and force on the group) and sweep.png; FE by default (stress tensor\n"
+    "            on a sphere of radius R in the air gap, default mid-gap), or --analytic\n"
+    "            (charge interaction). Lengths in the case's unit, angles in degrees.\n";
 
 struct Args {
   std::string command;
@@ -33,42 +50,72 @@ struct Args {
   std::vector<std::string> positional;
   magfem::RunOverrides overrides;
   magfem::AnalyticOptions analytic;
+  std::string rotate, axis, angles, point, surface_radius;
+  bool analytic_sweep = false;
+  int jobs = 0;
 };
 
 double parse_number(const std::string& option, const char* text) {
   try {
     std::size_t used = 0;
     const double v = std::stod(text, &used);
-    if (used == std::strlen(text)) return v;
+    if (used == std::strlen(text))
+      return v;
   } catch (const std::exception&) {
   }
-  throw magfem::InputError("<command line>", 0, option, std::string("expected a number, got '") + text + "'");
+  throw magfem::InputError("<command line>", 0, option,
+                           std::string("expected a number, got '") + text + "'");
 }
 
 Args parse_args(int argc, char** argv) {
-  if (argc < 2) throw magfem::InputError("<command line>", 0, "", std::string("missing command\n") + usage);
+  if (argc < 2)
+    throw magfem::InputError("<command line>", 0, "", std::string("missing command\n") + usage);
   Args a;
   a.command = argv[1];
   std::vector<std::string> positional;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> const char* {
-      if (i + 1 >= argc) throw magfem::InputError("<command line>", 0, arg, "missing value");
+      if (i + 1 >= argc)
+        throw magfem::InputError("<command line>", 0, arg, "missing value");
       return argv[++i];
     };
-    if (arg == "--out") a.out_dir = value();
-    else if (arg == "--order") a.overrides.order = static_cast<int>(parse_number(arg, value()));
-    else if (arg == "--mesh-scale") a.overrides.mesh_scale = parse_number(arg, value());
-    else if (arg == "--model") a.analytic.model = value();
-    else if (arg == "--tolerance") a.analytic.tolerance = parse_number(arg, value());
-    else if (arg == "--n-max") a.analytic.n_max = static_cast<int>(parse_number(arg, value()));
-    else if (arg.rfind("--", 0) == 0) throw magfem::InputError("<command line>", 0, arg, "unknown option");
-    else positional.push_back(arg);
+    if (arg == "--out")
+      a.out_dir = value();
+    else if (arg == "--order")
+      a.overrides.order = static_cast<int>(parse_number(arg, value()));
+    else if (arg == "--mesh-scale")
+      a.overrides.mesh_scale = parse_number(arg, value());
+    else if (arg == "--model")
+      a.analytic.model = value();
+    else if (arg == "--tolerance")
+      a.analytic.tolerance = parse_number(arg, value());
+    else if (arg == "--n-max")
+      a.analytic.n_max = static_cast<int>(parse_number(arg, value()));
+    else if (arg == "--rotate")
+      a.rotate = value();
+    else if (arg == "--axis")
+      a.axis = value();
+    else if (arg == "--angles")
+      a.angles = value();
+    else if (arg == "--point")
+      a.point = value();
+    else if (arg == "--surface-radius")
+      a.surface_radius = value();
+    else if (arg == "--jobs")
+      a.jobs = static_cast<int>(parse_number(arg, value()));
+    else if (arg == "--analytic")
+      a.analytic_sweep = true;
+    else if (arg.rfind("--", 0) == 0)
+      throw magfem::InputError("<command line>", 0, arg, "unknown option");
+    else
+      positional.push_back(arg);
   }
   a.positional = positional;
   const std::size_t wanted = a.command == "compare" ? 2 : 1;
   if (positional.size() != wanted)
-    throw magfem::InputError("<command line>", 0, "", std::string("wrong number of arguments\n") + usage);
+    throw magfem::InputError("<command line>", 0, "",
+                             std::string("wrong number of arguments\n") + usage);
   a.case_file = positional[0];
   if (a.out_dir.empty())
     a.out_dir = (std::filesystem::path("out") / std::filesystem::path(a.case_file).stem()).string();
@@ -82,21 +129,26 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec) {
   std::cout << magfem::describe_run_3d(*run);
   magfem::write_outputs_3d(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";
-  for (const auto& p : run->probes) std::cout << ", " << p.name << ".csv";
-  if (run->spec.write_vtu) std::cout << ", solution.vtu";
+  for (const auto& p : run->probes)
+    std::cout << ", " << p.name << ".csv";
+  if (run->spec.write_vtu)
+    std::cout << ", solution.vtu";
   std::cout << "\n";
   return 0;
 }
 
 int run_solve(const Args& args) {
   auto spec = magfem::read_case(args.case_file);
-  if (spec.dimension == 3) return run_solve_3d(args, std::move(spec));
+  if (spec.dimension == 3)
+    return run_solve_3d(args, std::move(spec));
   auto run = magfem::run_case_2d(std::move(spec), args.overrides);
   std::cout << magfem::describe_run_2d(*run);
   magfem::write_outputs_2d(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";
-  for (const auto& p : run->probes) std::cout << ", " << p.name << ".csv";
-  if (run->spec.write_vtu) std::cout << ", solution.vtu";
+  for (const auto& p : run->probes)
+    std::cout << ", " << p.name << ".csv";
+  if (run->spec.write_vtu)
+    std::cout << ", solution.vtu";
   std::cout << "\n";
   return 0;
 }
@@ -106,8 +158,94 @@ int run_analytic(const Args& args) {
   std::cout << magfem::describe_analytic(*run);
   magfem::write_outputs_analytic(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";
-  for (const auto& p : run->probes) std::cout << ", " << p.name << ".csv";
+  for (const auto& p : run->probes)
+    std::cout << ", " << p.name << ".csv";
   std::cout << "\n";
+  return 0;
+}
+
+void show_progress(int done, int total) {
+  if (isatty(STDERR_FILENO)) {
+    constexpr int width = 30;
+    const int filled = width * done / total;
+    std::fprintf(stderr, "\r[%s%s] %d/%d positions", std::string(filled, '#').c_str(),
+                 std::string(width - filled, ' ').c_str(), done, total);
+    if (done == total)
+      std::fputc('\n', stderr);
+  } else {
+    std::fprintf(stderr, "position %d/%d done\n", done, total);
+  }
+}
+
+int run_sweep(const Args& args) {
+  using magfem::InputError;
+  const std::string cli = "<command line>";
+  if (args.rotate.empty())
+    throw InputError(cli, 0, "--rotate", "name the group to rotate");
+  if (args.axis.empty())
+    throw InputError(cli, 0, "--axis", "give the rotation axis");
+  if (args.angles.empty())
+    throw InputError(cli, 0, "--angles", "give the angles");
+  const auto spec = magfem::read_case(args.case_file);
+  const double s = spec.length_unit;
+  magfem::SweepOptions o;
+  o.group = args.rotate;
+  o.axis = magfem::parse_axis(args.axis);
+  o.angles_deg = magfem::parse_angle_list(args.angles);
+  if (!args.point.empty())
+    o.point = s * magfem::parse_vector3("--point", args.point);
+  if (!args.surface_radius.empty())
+    o.surface_radius = s * parse_number("--surface-radius", args.surface_radius.c_str());
+  o.analytic = args.analytic_sweep;
+  o.jobs = args.jobs;
+  o.order = args.overrides.order;
+  o.mesh_scale = args.overrides.mesh_scale;
+
+  const auto rows = magfem::run_sweep(spec, o, show_progress);
+  std::filesystem::create_directories(args.out_dir);
+  magfem::OutputStage stage(args.out_dir);
+  stage.write_text("sweep.csv", magfem::sweep_csv(rows));
+  std::string why;
+  const bool plotted = magfem::plot_sweep(rows, spec.file + (o.analytic ? " (analytic)" : " (FE)"),
+                                          stage.path_for("sweep.png"), why);
+  if (!plotted)
+    std::cerr << "magfem: note: no sweep.png: " << why << "\n";
+  nlohmann::ordered_json j;
+  j["case"] = spec.file;
+  j["method"] = o.analytic ? "charge_interaction" : "maxwell_stress_sphere";
+  j["group"] = o.group;
+  j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
+  int failed = 0;
+  double total_s = 0;
+  for (const auto& r : rows) {
+    nlohmann::ordered_json p = {{"angle_deg", r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
+    if (r.unknowns)
+      p["unknowns"] = r.unknowns;
+    if (!r.ok)
+      p["error"] = r.error, ++failed;
+    total_s += r.seconds;
+    j["positions"].push_back(p);
+  }
+  j["failed_positions"] = failed;
+  j["peak_memory_MB"] = magfem::peak_memory_mb();
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+
+  std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", "angle_deg", "Tx_Nm", "Ty_Nm", "Tz_Nm",
+              "Fx_N", "Fy_N", "Fz_N", "time_s");
+  for (const auto& r : rows)
+    if (r.ok)
+      std::printf("%10.3f %12.5g %12.5g %12.5g %12.5g %12.5g %12.5g %9.2f\n", r.angle_deg,
+                  r.torque.x(), r.torque.y(), r.torque.z(), r.force.x(), r.force.y(), r.force.z(),
+                  r.seconds);
+    else
+      std::printf("%10.3f FAILED: %s\n", r.angle_deg, r.error.c_str());
+  std::printf("wrote    %s/sweep.csv%s, summary.json (%.1f s of position time)\n",
+              args.out_dir.c_str(), plotted ? ", sweep.png" : "", total_s);
+  if (failed) {
+    std::cerr << "magfem: " << failed << " of " << rows.size() << " positions failed\n";
+    return 3;
+  }
   return 0;
 }
 
@@ -121,8 +259,8 @@ int run_compare(const Args& args) {
     throw magfem::InputError(args.positional[1], 0, "", e.what());
   }
   std::printf("%zu points; reference %s\n", ref.rows.size(), args.positional[0].c_str());
-  std::printf("%-8s %12s %12s %16s %16s %12s\n", "comp", "rms_ref_T", "rms_test_T",
-              "eq3.117_pct", "pointwise_pct", "max_diff_T");
+  std::printf("%-8s %12s %12s %16s %16s %12s\n", "comp", "rms_ref_T", "rms_test_T", "eq3.117_pct",
+              "pointwise_pct", "max_diff_T");
   for (const auto& c : rows)
     std::printf("%-8s %12.6g %12.6g %16.4f %16.4f %12.4g\n", c.component.c_str(), c.rms_reference,
                 c.rms_test, 100 * c.discrepancy_3117, 100 * c.pointwise_rms, c.max_abs_difference);
@@ -138,10 +276,16 @@ int main(int argc, char** argv) {
       return 0;
     }
     const Args args = parse_args(argc, argv);
-    if (args.command == "solve") return run_solve(args);
-    if (args.command == "analytic") return run_analytic(args);
-    if (args.command == "compare") return run_compare(args);
-    throw magfem::InputError("<command line>", 0, "", "unknown command '" + args.command + "'\n" + usage);
+    if (args.command == "solve")
+      return run_solve(args);
+    if (args.command == "analytic")
+      return run_analytic(args);
+    if (args.command == "compare")
+      return run_compare(args);
+    if (args.command == "sweep")
+      return run_sweep(args);
+    throw magfem::InputError("<command line>", 0, "",
+                             "unknown command '" + args.command + "'\n" + usage);
   } catch (const magfem::InputError& e) {
     std::cerr << "magfem: error: " << e.what() << "\n";
     return 2;

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/force3d.hpp"
 #include "app/resource_usage.hpp"
+#include "core/constants.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
@@ -19,15 +21,25 @@
 namespace magfem {
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 // Sphere probes tell the mesher where to refine (MeshOptions3D::probe_size).
 std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
   std::vector<ProbeSurface> out;
-  if (spec.geometry3d.options.probe_size <= 0) return out;
+  if (spec.geometry3d.options.probe_size <= 0)
+    return out;
   for (const auto& p : spec.probes)
     if (p.kind == ProbeSpec::Kind::sphere)
       out.push_back({p.center, p.radius, p.theta_min, p.theta_max, p.phi_min, p.phi_max});
+  // Stress-tensor spheres too: the force integrand is quadratic in B, so its error is twice
+  // the field error there.
+  for (const auto& f : spec.forces)
+    if (f.kind == ForceSpec::Kind::sphere)
+      for (double r : {f.radius, f.check_radius})
+        if (r > 0)
+          out.push_back({f.center, r, 0, pi, 0, 2 * pi});
   return out;
 }
 
@@ -37,9 +49,10 @@ Mesh3D mesh_case(const CaseSpec& spec) {
   } catch (const MeshError& e) {
     for (const auto& r : spec.regions)
       if (r.name == e.part)
-        throw InputError(spec.file, r.line, "regions." + r.name + (e.field.empty() ? "" : "." + e.field),
-                         e.what());
-    throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field, e.what());
+        throw InputError(spec.file, r.line,
+                         "regions." + r.name + (e.field.empty() ? "" : "." + e.field), e.what());
+    throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
+                     e.what());
   }
 }
 
@@ -49,7 +62,8 @@ Problem3D build_problem(const CaseSpec& spec, const Mesh3D& mesh) {
   p.order = spec.order;
   p.boundary = spec.geometry3d.outer.kind;
   p.air.material = MaterialLibrary::bundled().find("air");
-  for (const auto& r : spec.regions) p.parts.push_back(RegionPhysics3D{r.material, r.magnetization});
+  for (const auto& r : spec.regions)
+    p.parts.push_back(RegionPhysics3D{r.material, r.magnetization});
   return p;
 }
 
@@ -58,9 +72,12 @@ Problem3D build_problem(const CaseSpec& spec, const Mesh3D& mesh) {
 std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   const auto t_start = Clock::now();
   auto run = std::make_unique<Run3D>();
-  if (ov.order) spec.order = ov.order;
-  if (ov.mesh_scale > 0) spec.geometry3d.options.size_scale *= ov.mesh_scale;
-  if (ov.domain_radius > 0) spec.geometry3d.outer.radius = ov.domain_radius;
+  if (ov.order)
+    spec.order = ov.order;
+  if (ov.mesh_scale > 0)
+    spec.geometry3d.options.size_scale *= ov.mesh_scale;
+  if (ov.domain_radius > 0)
+    spec.geometry3d.outer.radius = ov.domain_radius;
   run->spec = std::move(spec);
 
   auto t0 = Clock::now();
@@ -70,6 +87,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   run->problem = build_problem(run->spec, run->mesh);
   t0 = Clock::now();
   run->dofs = std::make_unique<DofMap3D>(run->mesh, run->spec.order);
+  // P2 edge nodes on spherical interfaces go onto the sphere: flat facets would otherwise
+  // limit the field error near curved magnet faces to O(h^2) in the geometry.
+  if (run->spec.order == 2)
+    run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
   Assembler3D assembler(run->problem, *run->dofs);
   const double setup = since(t0);
 
@@ -77,16 +98,21 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   run->report = solve_nonlinear(assembler, u, run->spec.newton);
   run->timings.assemble = setup + run->report.assemble_s;
   run->timings.solve = run->report.solve_s;
-  if (!run->report.converged) throw SolveError("the solver did not converge: " + run->report.message);
+  if (!run->report.converged)
+    throw SolveError("the solver did not converge: " + run->report.message);
 
   t0 = Clock::now();
   run->field = std::make_unique<Field3D>(run->problem, *run->dofs, assembler.expand(u));
   std::vector<std::string> names;
-  for (const auto& r : run->spec.regions) names.push_back(r.name);
+  for (const auto& r : run->spec.regions)
+    names.push_back(r.name);
   run->energy = summarize_energy_3d(*run->field, names);
   const PointLocator3D locator(run->mesh);
+  run->recovered_B = run->field->recovered_B();
   for (const auto& probe : run->spec.probes)
-    run->probes.push_back(sample_probe_3d(*run->field, locator, probe, run->spec.length_unit));
+    run->probes.push_back(
+        sample_probe_3d(*run->field, locator, probe, run->spec.length_unit, &run->recovered_B));
+  run->forces = compute_forces_3d(*run);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -95,18 +121,20 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
 void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
-  for (const auto& p : run.probes) stage.write_text(p.name + ".csv", p.to_csv());
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
   if (run.spec.write_vtu) {
     std::vector<std::string> material_names = {"air"};
     std::map<std::string, int> index = {{"air", 0}};
     std::vector<int> material_of_part;
     for (const auto& r : run.spec.regions) {
       auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh) material_names.push_back(r.material->name);
+      if (fresh)
+        material_names.push_back(r.material->name);
       material_of_part.push_back(it->second);
     }
     write_vtu(stage.path_for("solution.vtu").string(),
-              make_vtu_3d(*run.field, run.field->recovered_B(), material_of_part, 0, material_names));
+              make_vtu_3d(*run.field, run.recovered_B, material_of_part, 0, material_names));
   }
   nlohmann::ordered_json j;
   j["case"] = run.spec.file;
@@ -133,16 +161,23 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   auto& regions = j["regions"];
   for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
     const auto& r = run.energy.regions[i];
-    if (r.volume_m3 == 0) continue;
+    if (r.volume_m3 == 0)
+      continue;
     nlohmann::ordered_json reg = {{"name", r.name},
                                   {"volume_m3", r.volume_m3},
                                   {"energy_J", r.energy_J},
                                   {"peak_B_T", r.peak_B_T},
                                   {"nonlinear", r.nonlinear}};
-    if (i < run.mesh.part_volumes.size()) reg["meshed_volume_m3"] = run.mesh.part_volumes[i];
+    if (i < run.mesh.part_volumes.size())
+      reg["meshed_volume_m3"] = run.mesh.part_volumes[i];
     regions.push_back(reg);
   }
-  for (const auto& p : run.probes) j["probes"].push_back(p.name + ".csv");
+  for (const auto& p : run.probes)
+    j["probes"].push_back(p.name + ".csv");
+  if (!run.forces.empty()) {
+    j["forces"] = forces_json(run.forces);
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  }
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
@@ -160,11 +195,14 @@ std::string describe_run_3d(const Run3D& run) {
   std::string s = buf;
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.volume_m3 > 0) {
-      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(), r.peak_B_T);
+      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                    r.peak_B_T);
       s += buf;
     }
+  s += describe_forces(run.forces, false);
   std::snprintf(buf, sizeof buf,
-                "time     mesh %.2f s, assemble %.2f s, solve %.2f s, post %.2f s, total %.2f s, peak %.0f MB\n",
+                "time     mesh %.2f s, assemble %.2f s, solve %.2f s, post %.2f s, total %.2f s, "
+                "peak %.0f MB\n",
                 run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
                 run.timings.total, peak_memory_mb());
   return s + buf;

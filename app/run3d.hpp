@@ -1,6 +1,7 @@
 #pragma once
 // The 3D pipeline: case -> TetGen mesh -> scalar-potential problem -> Newton -> probes,
 // energy, VTU. Mirrors run2d.hpp.
+#include "app/force_results.hpp"
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -23,7 +24,9 @@ struct Run3D {
   std::unique_ptr<Field3D> field;
   NewtonReport report;
   EnergySummary3D energy;
+  std::vector<Eigen::Vector3d> recovered_B; // nodal B (Field3D::recovered_B), computed once
   std::vector<ProbeTable> probes;
+  std::vector<ForceResult> forces;
   Timings timings;
 };
 

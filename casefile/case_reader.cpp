@@ -4,6 +4,7 @@
 #include <set>
 
 #include "casefile/case_spec.hpp"
+#include "casefile/force_reader.hpp"
 #include "casefile/reader_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/yaml_node.hpp"
@@ -20,7 +21,8 @@ void read_boundary(const YamlNode& b, double s, CaseSpec& c) {
   const std::string type = b.at("type").as_string();
   const double radius = b.at("radius").as_positive() * s;
   const double ratio = b.get_positive("shell_ratio", 1.5);
-  if (ratio <= 1.05) b.at("shell_ratio").fail("shell_ratio must exceed 1.05");
+  if (ratio <= 1.05)
+    b.at("shell_ratio").fail("shell_ratio must exceed 1.05");
   if (type != "open" && type != "dirichlet" && type != "neumann")
     b.at("type").fail("unknown boundary type '" + type + "' (open, dirichlet, neumann)");
   c.geometry2d.outer = {type == "open"        ? OuterKind::open
@@ -39,9 +41,11 @@ void read_mesh_options_2d(const YamlNode& m, double s, CaseSpec& c) {
   o.default_size = m.at("size").as_positive() * s;
   o.chord_tolerance = m.has("chord_tolerance") ? m.at("chord_tolerance").as_positive() * s : 1e-5;
   o.min_angle_deg = m.get_positive("min_angle", 28.0);
-  if (o.min_angle_deg > 33) m.at("min_angle").fail("min_angle above 33 degrees may not terminate");
+  if (o.min_angle_deg > 33)
+    m.at("min_angle").fail("min_angle above 33 degrees may not terminate");
   o.gap_layers = m.get_int("gap_layers", 3);
-  if (o.gap_layers < 1) m.at("gap_layers").fail("gap_layers must be at least 1");
+  if (o.gap_layers < 1)
+    m.at("gap_layers").fail("gap_layers must be at least 1");
   o.size_scale = m.get_positive("scale", 1.0);
 }
 
@@ -51,36 +55,49 @@ void read_mesh_options_3d(const YamlNode& m, double s, CaseSpec& c) {
   o.default_size = m.at("size").as_positive() * s;
   o.chord_tolerance = m.has("chord_tolerance") ? m.at("chord_tolerance").as_positive() * s : 5e-5;
   o.radius_edge_ratio = m.get_positive("radius_edge", 1.6);
-  if (o.radius_edge_ratio < 1.1) m.at("radius_edge").fail("radius_edge below 1.1 may not terminate");
+  if (o.radius_edge_ratio < 1.1)
+    m.at("radius_edge").fail("radius_edge below 1.1 may not terminate");
   o.gap_layers = m.get_int("gap_layers", 3);
-  if (o.gap_layers < 1) m.at("gap_layers").fail("gap_layers must be at least 1");
+  if (o.gap_layers < 1)
+    m.at("gap_layers").fail("gap_layers must be at least 1");
   o.size_scale = m.get_positive("scale", 1.0);
-  if (m.has("probe_size")) o.probe_size = m.at("probe_size").as_positive() * s;
+  if (m.has("probe_size"))
+    o.probe_size = m.at("probe_size").as_positive() * s;
 }
 
 void read_solver(const YamlNode& n, CaseSpec& c) {
   n.allow_keys({"order", "method", "tolerance", "max_iterations", "linear_solver"});
   c.order = n.get_int("order", 2);
-  if (c.order != 1 && c.order != 2) n.at("order").fail("order must be 1 or 2");
+  if (c.order != 1 && c.order != 2)
+    n.at("order").fail("order must be 1 or 2");
   const std::string method = n.get_string("method", "newton");
-  if (method == "newton") c.newton.method = TangentKind::newton;
-  else if (method == "picard") c.newton.method = TangentKind::picard;
-  else n.at("method").fail("method must be newton or picard");
+  if (method == "newton")
+    c.newton.method = TangentKind::newton;
+  else if (method == "picard")
+    c.newton.method = TangentKind::picard;
+  else
+    n.at("method").fail("method must be newton or picard");
   if (n.has("tolerance")) {
     c.newton.residual_tol = n.at("tolerance").as_positive();
     c.newton.update_tol = c.newton.residual_tol;
   }
   c.newton.max_iterations = n.get_int("max_iterations", c.newton.max_iterations);
-  if (c.newton.max_iterations < 1) n.at("max_iterations").fail("must be at least 1");
+  if (c.newton.max_iterations < 1)
+    n.at("max_iterations").fail("must be at least 1");
   const std::string ls = n.get_string("linear_solver", "auto");
-  if (ls == "auto") c.newton.linear.kind = LinearSolverKind::automatic;
-  else if (ls == "cholmod") c.newton.linear.kind = LinearSolverKind::cholmod;
-  else if (ls == "cg") c.newton.linear.kind = LinearSolverKind::cg;
-  else n.at("linear_solver").fail("linear_solver must be auto, cholmod or cg");
+  if (ls == "auto")
+    c.newton.linear.kind = LinearSolverKind::automatic;
+  else if (ls == "cholmod")
+    c.newton.linear.kind = LinearSolverKind::cholmod;
+  else if (ls == "cg")
+    c.newton.linear.kind = LinearSolverKind::cg;
+  else
+    n.at("linear_solver").fail("linear_solver must be auto, cholmod or cg");
 }
 
 [[noreturn]] void outside(const YamlNode& p, const ProbeSpec& probe, double domain, double s) {
-  p.fail("probe '" + probe.name + "' leaves the domain (radius " + std::to_string(domain / s) + ")");
+  p.fail("probe '" + probe.name + "' leaves the domain (radius " + std::to_string(domain / s) +
+         ")");
 }
 
 void read_line_probe(const YamlNode& p, double s, int dim, double domain, ProbeSpec& probe) {
@@ -96,31 +113,38 @@ void read_line_probe(const YamlNode& p, double s, int dim, double domain, ProbeS
   }
   probe.points = p.get_int("points", 101);
   // The domain is a disk or ball, hence convex: both ends inside means the whole line is.
-  if (probe.start.norm() > domain || probe.end.norm() > domain) outside(p, probe, domain, s);
+  if (probe.start.norm() > domain || probe.end.norm() > domain)
+    outside(p, probe, domain, s);
 }
 
 void read_circle_probe(const YamlNode& p, double s, double domain, ProbeSpec& probe) {
   p.allow_keys({"name", "type", "center", "radius", "points", "angle_start", "angle_end"});
   probe.kind = ProbeSpec::Kind::circle;
-  const Eigen::Vector2d ctr = p.has("center") ? read_point2(p.at("center"), s) : Eigen::Vector2d::Zero();
+  const Eigen::Vector2d ctr =
+      p.has("center") ? read_point2(p.at("center"), s) : Eigen::Vector2d::Zero();
   probe.center = {ctr.x(), ctr.y(), 0};
   probe.radius = p.at("radius").as_positive() * s;
   probe.points = p.get_int("points", 360);
   probe.angle_start = p.get_double("angle_start", 0.0) * deg_to_rad;
   probe.angle_end = p.get_double("angle_end", 360.0) * deg_to_rad;
-  if (!(probe.angle_end > probe.angle_start)) p.at("angle_end").fail("angle_end must exceed angle_start");
-  if (ctr.norm() + probe.radius > domain) outside(p, probe, domain, s);
+  if (!(probe.angle_end > probe.angle_start))
+    p.at("angle_end").fail("angle_end must exceed angle_start");
+  if (ctr.norm() + probe.radius > domain)
+    outside(p, probe, domain, s);
 }
 
 // Sphere patch: theta and phi ranges in degrees, sampled with `step` degrees (both ends
 // included) or with explicit theta_steps / phi_steps sample counts.
 void read_sphere_probe(const YamlNode& p, double s, double domain, ProbeSpec& probe) {
-  p.allow_keys({"name", "type", "center", "radius", "theta", "phi", "step", "theta_steps", "phi_steps"});
+  p.allow_keys(
+      {"name", "type", "center", "radius", "theta", "phi", "step", "theta_steps", "phi_steps"});
   probe.kind = ProbeSpec::Kind::sphere;
   probe.center = p.has("center") ? read_point3(p.at("center"), s) : Eigen::Vector3d::Zero();
   probe.radius = p.at("radius").as_positive() * s;
-  const auto [t0, t1] = p.has("theta") ? read_angle_range(p.at("theta"), 0, 180) : std::pair{0.0, pi};
-  const auto [p0, p1] = p.has("phi") ? read_angle_range(p.at("phi"), -360, 360) : std::pair{0.0, 2 * pi};
+  const auto [t0, t1] =
+      p.has("theta") ? read_angle_range(p.at("theta"), 0, 180) : std::pair{0.0, pi};
+  const auto [p0, p1] =
+      p.has("phi") ? read_angle_range(p.at("phi"), -360, 360) : std::pair{0.0, 2 * pi};
   probe.theta_min = t0;
   probe.theta_max = t1;
   probe.phi_min = p0;
@@ -133,9 +157,11 @@ void read_sphere_probe(const YamlNode& p, double s, double domain, ProbeSpec& pr
     probe.theta_steps = p.get_int("theta_steps", 46);
     probe.phi_steps = p.get_int("phi_steps", 46);
   }
-  if (probe.theta_steps < 1 || probe.phi_steps < 1) p.fail("a sphere probe needs at least one sample");
+  if (probe.theta_steps < 1 || probe.phi_steps < 1)
+    p.fail("a sphere probe needs at least one sample");
   probe.points = probe.theta_steps * probe.phi_steps;
-  if (probe.center.norm() + probe.radius > domain) outside(p, probe, domain, s);
+  if (probe.center.norm() + probe.radius > domain)
+    outside(p, probe, domain, s);
 }
 
 void read_points_probe(const YamlNode& p, double s, double domain, ProbeSpec& probe) {
@@ -143,7 +169,8 @@ void read_points_probe(const YamlNode& p, double s, double domain, ProbeSpec& pr
   probe.kind = ProbeSpec::Kind::points;
   for (const auto& pt : p.at("points").items()) {
     probe.point_list.push_back(read_point3(pt, s));
-    if (probe.point_list.back().norm() > domain) outside(pt, probe, domain, s);
+    if (probe.point_list.back().norm() > domain)
+      outside(pt, probe, domain, s);
   }
   probe.points = static_cast<int>(probe.point_list.size());
 }
@@ -158,14 +185,20 @@ ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
   const std::string type = p.at("type").as_string();
   const double s = c.length_unit;
   const double domain = c.dimension == 2 ? c.geometry2d.outer.radius : c.geometry3d.outer.radius;
-  if (type == "line") read_line_probe(p, s, c.dimension, domain, probe);
-  else if (type == "circle" && c.dimension == 2) read_circle_probe(p, s, domain, probe);
-  else if (type == "sphere" && c.dimension == 3) read_sphere_probe(p, s, domain, probe);
-  else if (type == "points" && c.dimension == 3) read_points_probe(p, s, domain, probe);
+  if (type == "line")
+    read_line_probe(p, s, c.dimension, domain, probe);
+  else if (type == "circle" && c.dimension == 2)
+    read_circle_probe(p, s, domain, probe);
+  else if (type == "sphere" && c.dimension == 3)
+    read_sphere_probe(p, s, domain, probe);
+  else if (type == "points" && c.dimension == 3)
+    read_points_probe(p, s, domain, probe);
   else
-    p.at("type").fail("unknown probe type '" + type + "' for dimension " + std::to_string(c.dimension) +
+    p.at("type").fail("unknown probe type '" + type + "' for dimension " +
+                      std::to_string(c.dimension) +
                       (c.dimension == 2 ? " (line, circle)" : " (line, sphere, points)"));
-  if (probe.points < 1) p.at("points").fail("points must be at least 1");
+  if (probe.points < 1)
+    p.at("points").fail("points must be at least 1");
   return probe;
 }
 
@@ -174,32 +207,41 @@ ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
 CaseSpec read_case(const std::string& path) {
   const YamlNode root = YamlNode::load_file(path);
   root.allow_keys({"title", "description", "dimension", "unit", "stack_length", "materials",
-                   "regions", "boundary", "mesh", "solver", "probes", "output"});
+                   "regions", "boundary", "mesh", "solver", "probes", "forces", "output"});
   CaseSpec c;
   c.file = path;
   c.dimension = root.get_int("dimension", 2);
-  if (c.dimension != 2 && c.dimension != 3) root.at("dimension").fail("dimension must be 2 or 3");
+  if (c.dimension != 2 && c.dimension != 3)
+    root.at("dimension").fail("dimension must be 2 or 3");
   if (root.has("unit")) {
     c.unit_name = root.at("unit").as_string();
     c.length_unit = unit_scale(root.at("unit"));
   }
   const double s = c.length_unit;
   if (root.has("stack_length")) {
-    if (c.dimension == 3) root.at("stack_length").fail("stack_length applies to 2D cases only");
+    if (c.dimension == 3)
+      root.at("stack_length").fail("stack_length applies to 2D cases only");
     c.stack_length = root.at("stack_length").as_positive() * s;
   }
   const auto& lib = MaterialLibrary::bundled();
-  if (root.has("materials")) c.materials = parse_materials(root.at("materials"), lib);
+  if (root.has("materials"))
+    c.materials = parse_materials(root.at("materials"), lib);
 
   read_boundary(root.at("boundary"), s, c);
-  if (c.dimension == 2) read_mesh_options_2d(root.at("mesh"), s, c);
-  else read_mesh_options_3d(root.at("mesh"), s, c);
+  if (c.dimension == 2)
+    read_mesh_options_2d(root.at("mesh"), s, c);
+  else
+    read_mesh_options_3d(root.at("mesh"), s, c);
   const auto regions = root.at("regions");
-  if (regions.size() == 0) regions.fail("at least one region is needed");
-  if (c.dimension == 2) read_regions_2d(regions, c, lib);
-  else read_regions_3d(regions, c, lib);
+  if (regions.size() == 0)
+    regions.fail("at least one region is needed");
+  if (c.dimension == 2)
+    read_regions_2d(regions, c, lib);
+  else
+    read_regions_3d(regions, c, lib);
 
-  if (root.has("solver")) read_solver(root.at("solver"), c);
+  if (root.has("solver"))
+    read_solver(root.at("solver"), c);
   if (root.has("probes")) {
     std::set<std::string> probe_names;
     for (const auto& p : root.at("probes").items()) {
@@ -208,6 +250,8 @@ CaseSpec read_case(const std::string& path) {
         p.at("name").fail("duplicate probe name '" + c.probes.back().name + "'");
     }
   }
+  if (root.has("forces"))
+    read_forces(root.at("forces"), c);
   if (root.has("output")) {
     const auto o = root.at("output");
     o.allow_keys({"vtu"});

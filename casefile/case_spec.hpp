@@ -9,6 +9,7 @@
 #include "materials/material.hpp"
 #include "mesh/geometry2d.hpp"
 #include "mesh/geometry3d.hpp"
+#include "postproc/force_spec.hpp"
 #include "postproc/probe_spec.hpp"
 #include "solver/newton.hpp"
 
@@ -35,6 +36,7 @@ struct CaseSpec {
   int order = 2;
   NewtonOptions newton;
   std::vector<ProbeSpec> probes;
+  std::vector<ForceSpec> forces;
   bool write_vtu = true;
   double stack_length = 0; // metres; 0 = report per unit length
   int boundary_line = 0;

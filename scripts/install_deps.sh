@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(cmake g++ make ccache pkg-config
           libeigen3-dev libyaml-cpp-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libsuitesparse-dev libtet1.5-dev libvtk9-dev nlohmann-json3-dev libtbb-dev
-          libgtest-dev)
+          libgtest-dev gnuplot-nox)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

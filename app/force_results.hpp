@@ -1,0 +1,29 @@
+#pragma once
+// Force and torque results of one run, as written to forces.csv and summary.json.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+namespace magfem {
+
+struct ForceResult {
+  std::string name;
+  std::string method; // stress_sphere, stress_circle, arkkio_band, lorentz
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N (2D: N/m, or N with a stack length)
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // N m (2D: N m/m, or N m with a stack)
+  // Consistency check (check_radius given): the same quantity on the second surface, and
+  // the largest component difference relative to the largest component magnitude.
+  bool checked = false;
+  Eigen::Vector3d check_force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d check_torque = Eigen::Vector3d::Zero();
+  double check_relative_difference = 0;
+};
+
+// forces.csv: name,method,Fx,Fy,Fz,Tx,Ty,Tz (and the check columns when any force has one).
+std::string forces_csv(const std::vector<ForceResult>& forces);
+nlohmann::ordered_json forces_json(const std::vector<ForceResult>& forces);
+std::string describe_forces(const std::vector<ForceResult>& forces, bool per_metre);
+
+} // namespace magfem

@@ -1,0 +1,310 @@
+#include "app/sweep.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "app/analytic_scene.hpp"
+#include "app/force3d.hpp"
+#include "app/run3d.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+#include "validation/analytic_force.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+bool in_group(const Part3D& part, const std::string& group) {
+  return part.group == group;
+}
+
+// Radial range [min, max] about the origin of a part, from its surface sampled on a fine grid
+// in the local frame. Sampling can only miss the extreme by about one grid step, which the
+// margin covers. Exact for spherical segments centred on the origin.
+std::pair<double, double> radial_range(const Part3D& part) {
+  if (const auto* seg = std::get_if<SphericalSegment>(&part.shape))
+    if (part.placement.translation.norm() == 0)
+      return {seg->r_inner, seg->r_outer};
+  std::vector<Vec3> local;
+  constexpr int n = 48;
+  std::visit(
+      [&](const auto& s) {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, SphericalSegment>) {
+          for (double r : {s.r_inner, s.r_outer})
+            for (int i = 0; i <= n; ++i)
+              for (int j = 0; j <= n; ++j) {
+                const double t = s.theta_min + (s.theta_max - s.theta_min) * i / n;
+                const double p = s.phi_min + (s.phi_max - s.phi_min) * j / n;
+                local.emplace_back(r * std::sin(t) * std::cos(p), r * std::sin(t) * std::sin(p),
+                                   r * std::cos(t));
+              }
+          for (int i = 0; i <= n; ++i) // the flat faces reach inward along every ray
+            for (int k = 0; k <= n; ++k) {
+              const double r = s.r_inner + (s.r_outer - s.r_inner) * k / n;
+              const double t = s.theta_min + (s.theta_max - s.theta_min) * i / n;
+              local.emplace_back(r * std::sin(t) * std::cos(s.phi_min),
+                                 r * std::sin(t) * std::sin(s.phi_min), r * std::cos(t));
+            }
+        } else if constexpr (std::is_same_v<T, Cylinder>) {
+          for (double r : {s.r_inner, s.r_outer})
+            for (int i = 0; i <= n; ++i)
+              for (int j = 0; j < n; ++j) {
+                const double p = 2 * pi * j / n;
+                local.emplace_back(r * std::cos(p), r * std::sin(p), s.height * i / n);
+              }
+          for (double z : {0.0, s.height})
+            for (int k = 0; k <= n; ++k)
+              for (int j = 0; j < n; ++j) {
+                const double r = s.r_inner + (s.r_outer - s.r_inner) * k / n, p = 2 * pi * j / n;
+                local.emplace_back(r * std::cos(p), r * std::sin(p), z);
+              }
+        } else {
+          for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+              for (int k = 0; k <= n; ++k)
+                if (i == 0 || i == n || j == 0 || j == n || k == 0 || k == n)
+                  local.emplace_back(s.size.x() * (double(i) / n - 0.5),
+                                     s.size.y() * (double(j) / n - 0.5),
+                                     s.size.z() * (double(k) / n - 0.5));
+        }
+      },
+      part.shape);
+  double lo = std::numeric_limits<double>::max(), hi = 0, extent = 0;
+  for (const auto& x : local) {
+    const double r = part.placement.to_global(x).norm();
+    lo = std::min(lo, r), hi = std::max(hi, r), extent = std::max(extent, x.norm());
+  }
+  const double margin = extent / n;
+  return {std::max(0.0, lo - margin), hi + margin};
+}
+
+std::vector<double> parse_list(const std::string& option, const std::string& text, char sep) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, sep)) {
+    try {
+      std::size_t used = 0;
+      out.push_back(std::stod(item, &used));
+      if (used != item.size())
+        throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError(cli, 0, option, "expected a number, got '" + item + "' in '" + text + "'");
+    }
+  }
+  return out;
+}
+
+// Force and torque (about the origin) on the rotated group at one position.
+SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angle_deg) {
+  SweepRow row;
+  row.angle_deg = angle_deg;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    CaseSpec spec = rotate_group(base, o.group, o.axis, angle_deg * deg_to_rad, o.point);
+    ForceResult on_group;
+    if (o.analytic) {
+      const AnalyticScene scene = analytic_scene(spec);
+      if (!scene.spheres.empty())
+        throw InputError(spec.file, 0, "regions",
+                         "sweep --analytic: the charge interaction has no permeable boundaries");
+      std::vector<AnalyticMagnet> group, rest;
+      for (const auto& m : scene.magnets) {
+        bool member = false;
+        for (const auto& p : spec.geometry3d.parts)
+          if (p.name == m.name)
+            member = in_group(p, o.group);
+        (member ? group : rest).push_back(m);
+      }
+      const ForceTorque ft = charge_interaction(group, rest, Vec3::Zero());
+      on_group.force = ft.force;
+      on_group.torque = ft.torque;
+    } else {
+      const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
+      RunOverrides ov;
+      ov.order = o.order;
+      ov.mesh_scale = o.mesh_scale;
+      spec.probes.clear(); // a sweep wants forces only
+      spec.write_vtu = false;
+      const auto run =
+          run_case_3d(with_stress_sphere(std::move(spec), surface.radius, "sweep"), ov);
+      const ForceResult& inside = run->forces.back();
+      // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
+      // rest of the (isolated) system, torque about the same point included.
+      on_group = inside;
+      if (surface.group_outside)
+        on_group.force = -inside.force, on_group.torque = -inside.torque;
+      row.unknowns = static_cast<long>(run->dofs->n_dofs());
+    }
+    row.force = on_group.force;
+    row.torque = on_group.torque;
+    row.ok = true;
+  } catch (const std::exception& e) {
+    row.error = e.what();
+  }
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return row;
+}
+
+} // namespace
+
+CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eigen::Vector3d& axis,
+                      double angle_rad, const Eigen::Vector3d& point) {
+  if (spec.dimension != 3)
+    throw InputError(spec.file, 0, "dimension", "sweeps rotate 3D groups; this case is 2D");
+  CaseSpec out = spec;
+  const Mat3 r = Eigen::AngleAxisd(angle_rad, axis.normalized()).toRotationMatrix();
+  bool found = false;
+  for (std::size_t i = 0; i < out.geometry3d.parts.size(); ++i) {
+    auto& part = out.geometry3d.parts[i];
+    if (!in_group(part, group))
+      continue;
+    found = true;
+    part.placement = part.placement.rotated(axis, angle_rad, point);
+    out.regions[i].magnetization = out.regions[i].magnetization.rotated(r, point);
+  }
+  if (!found) {
+    std::string groups;
+    for (const auto& p : spec.geometry3d.parts)
+      if (!p.group.empty() && groups.find("'" + p.group + "'") == std::string::npos)
+        groups += (groups.empty() ? "" : ", ") + ("'" + p.group + "'");
+    throw InputError(cli, 0, "--rotate",
+                     "no part of " + spec.file + " is in group '" + group +
+                         "' (groups: " + (groups.empty() ? std::string("none") : groups) + ")");
+  }
+  return out;
+}
+
+StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
+                             std::optional<double> radius) {
+  double group_lo = std::numeric_limits<double>::max(), group_hi = 0;
+  double rest_lo = std::numeric_limits<double>::max(), rest_hi = 0;
+  for (std::size_t i = 0; i < spec.geometry3d.parts.size(); ++i) {
+    const auto& part = spec.geometry3d.parts[i];
+    if (spec.regions[i].material->kind == MaterialKind::linear &&
+        spec.regions[i].material->mu_r == 1.0 && !in_group(part, group))
+      continue; // air regions (mesh aids) do not feel forces
+    const auto [lo, hi] = radial_range(part);
+    if (in_group(part, group))
+      group_lo = std::min(group_lo, lo), group_hi = std::max(group_hi, hi);
+    else
+      rest_lo = std::min(rest_lo, lo), rest_hi = std::max(rest_hi, hi);
+  }
+  StressSurface s;
+  if (group_lo >= rest_hi)
+    s = {0.5 * (group_lo + rest_hi), true};
+  else if (rest_lo >= group_hi)
+    s = {0.5 * (rest_lo + group_hi), false};
+  else
+    throw InputError(cli, 0, "--rotate",
+                     "group '" + group +
+                         "' and the other parts are not separated by a sphere about the origin; "
+                         "the Maxwell stress tensor needs one in air between them");
+  if (radius) {
+    const double r = *radius;
+    const bool outside = s.group_outside;
+    const bool fits = outside ? (r > rest_hi && r < group_lo) : (r > group_hi && r < rest_lo);
+    if (!fits)
+      throw InputError(cli, 0, "--surface-radius",
+                       "the sphere must lie in the air between the group and the rest");
+    s.radius = r;
+  }
+  return s;
+}
+
+std::vector<double> parse_angle_list(const std::string& text) {
+  const std::string option = "--angles";
+  if (text.find(':') != std::string::npos) {
+    const auto v = parse_list(option, text, ':');
+    if (v.size() != 3 || !(v[1] > 0) || v[2] < v[0])
+      throw InputError(cli, 0, option, "expected START:STEP:END with STEP > 0 and END >= START");
+    std::vector<double> out;
+    const int n = static_cast<int>(std::floor((v[2] - v[0]) / v[1] + 1e-9));
+    for (int i = 0; i <= n; ++i)
+      out.push_back(v[0] + i * v[1]);
+    return out;
+  }
+  auto out = parse_list(option, text, ',');
+  if (out.empty())
+    throw InputError(cli, 0, option, "no angles given");
+  return out;
+}
+
+Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text) {
+  const auto v = parse_list(option, text, ',');
+  if (v.size() != 3)
+    throw InputError(cli, 0, option, "expected three numbers x,y,z");
+  return Vec3(v[0], v[1], v[2]);
+}
+
+Eigen::Vector3d parse_axis(const std::string& text) {
+  if (text == "x")
+    return Vec3::UnitX();
+  if (text == "y")
+    return Vec3::UnitY();
+  if (text == "z")
+    return Vec3::UnitZ();
+  const auto v = parse_list("--axis", text, ',');
+  if (v.size() != 3 || Vec3(v[0], v[1], v[2]).norm() == 0)
+    throw InputError(cli, 0, "--axis", "expected x, y, z or a non-zero vector ax,ay,az");
+  return Vec3(v[0], v[1], v[2]).normalized();
+}
+
+std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
+                                const SweepProgress& progress) {
+  // Fail early, on the main thread, for mistakes that every position would repeat.
+  (void)rotate_group(spec, options.group, options.axis, 0.0, options.point);
+  if (!options.analytic)
+    (void)stress_surface(spec, options.group, options.surface_radius);
+  else
+    (void)analytic_scene(spec);
+
+  const int total = static_cast<int>(options.angles_deg.size());
+  std::vector<SweepRow> rows(total);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const int workers =
+      std::clamp(options.jobs > 0 ? options.jobs : static_cast<int>(cores), 1, total);
+  std::atomic<int> next{0};
+  int done = 0;
+  std::mutex mutex;
+  auto work = [&] {
+    for (int i; (i = next++) < total;) {
+      rows[i] = solve_position(spec, options, options.angles_deg[i]);
+      const std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (progress)
+        progress(done, total);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w)
+    pool.emplace_back(work);
+  work();
+  for (auto& t : pool)
+    t.join();
+  return rows;
+}
+
+std::string sweep_csv(const std::vector<SweepRow>& rows) {
+  std::string out = "angle_deg,Tx,Ty,Tz,Fx,Fy,Fz\n";
+  char line[256];
+  for (const auto& r : rows) {
+    if (!r.ok)
+      continue;
+    std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", r.angle_deg,
+                  r.torque.x(), r.torque.y(), r.torque.z(), r.force.x(), r.force.y(), r.force.z());
+    out += line;
+  }
+  return out;
+}
+
+} // namespace magfem

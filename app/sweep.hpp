@@ -1,0 +1,73 @@
+#pragma once
+// `magfem sweep`: rotate a rigid group of parts through a list of angles, solve each position
+// (FE or analytic) and tabulate the torque about the origin and the force on the group.
+//
+// Positions are independent: they run on a small pool of worker threads, a failed position is
+// recorded with its message and the others go on. The FE force comes from the Maxwell stress
+// tensor on a sphere in the air gap that separates the group from the rest; the mesh is
+// refined on that sphere (it is added as a probe surface) so that remeshing at every angle
+// leaves little noise. The analytic force is the charge interaction between the group and
+// the rest (mu_r = 1 magnets in air).
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "casefile/case_spec.hpp"
+
+namespace magfem {
+
+struct SweepOptions {
+  std::string group;                               // Part3D::group to rotate
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitY(); // rotation axis (any length)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero(); // a point on the axis, metres
+  std::vector<double> angles_deg;                  // positions
+  bool analytic = false;                           // charge model instead of FE
+  std::optional<double> surface_radius;            // metres; default: middle of the gap
+  int jobs = 0;                                    // worker threads (0: one per core)
+  double mesh_scale = 0;                           // FE: RunOverrides::mesh_scale
+  int order = 0;                                   // FE: RunOverrides::order
+};
+
+struct SweepRow {
+  double angle_deg = 0;
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // about the origin, N m
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // on the group, N
+  bool ok = false;
+  std::string error; // why the position failed
+  double seconds = 0;
+  long unknowns = 0; // FE only
+};
+
+// The case with every part of `group` rotated by angle (radians, right-hand rule) about the
+// axis through `point`; magnetizations turn with their parts. Throws InputError if no part
+// belongs to the group or the case is not 3D.
+CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eigen::Vector3d& axis,
+                      double angle_rad, const Eigen::Vector3d& point);
+
+// Radius (metres) of a sphere about the origin lying in air between the group and the rest,
+// and whether the group is outside it. Throws InputError if the two do not separate radially.
+struct StressSurface {
+  double radius = 0;
+  bool group_outside = false;
+};
+StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
+                             std::optional<double> radius);
+
+// Parses "START:STEP:END" (END included within round-off) or "A,B,C"; throws InputError.
+std::vector<double> parse_angle_list(const std::string& text);
+// Parses "x,y,z" (three numbers); throws InputError naming the option.
+Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text);
+// Parses x|y|z or "ax,ay,az"; throws InputError.
+Eigen::Vector3d parse_axis(const std::string& text);
+
+using SweepProgress = std::function<void(int done, int total)>;
+std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
+                                const SweepProgress& progress = {});
+
+// sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in angle order).
+std::string sweep_csv(const std::vector<SweepRow>& rows);
+
+} // namespace magfem

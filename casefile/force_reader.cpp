@@ -1,0 +1,82 @@
+#include "casefile/force_reader.hpp"
+
+#include <set>
+
+#include "casefile/reader_helpers.hpp"
+
+namespace magfem {
+namespace {
+
+Eigen::Vector3d read_point(const YamlNode& n, double s, int dim) {
+  if (dim == 3)
+    return read_point3(n, s);
+  const Eigen::Vector2d p = read_point2(n, s);
+  return {p.x(), p.y(), 0};
+}
+
+ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
+  ForceSpec spec;
+  spec.line = f.line();
+  spec.name = f.at("name").as_string();
+  const std::string type = f.at("type").as_string();
+  const double s = c.length_unit;
+  const int dim = c.dimension;
+  const double domain = dim == 2 ? c.geometry2d.outer.radius : c.geometry3d.outer.radius;
+  if (f.has("center"))
+    spec.center = read_point(f.at("center"), s, dim);
+  spec.torque_point =
+      f.has("torque_point") ? read_point(f.at("torque_point"), s, dim) : spec.center;
+  if ((type == "circle" && dim == 2) || (type == "sphere" && dim == 3)) {
+    f.allow_keys({"name", "type", "center", "radius", "torque_point", "check_radius"});
+    spec.kind = dim == 2 ? ForceSpec::Kind::circle : ForceSpec::Kind::sphere;
+    spec.radius = f.at("radius").as_positive() * s;
+    if (spec.center.norm() + spec.radius >= domain)
+      f.at("radius").fail("the surface leaves the meshed domain");
+    if (f.has("check_radius")) {
+      spec.check_radius = f.at("check_radius").as_positive() * s;
+      if (spec.center.norm() + spec.check_radius >= domain)
+        f.at("check_radius").fail("the surface leaves the meshed domain");
+    }
+  } else if (type == "band" && dim == 2) {
+    f.allow_keys({"name", "type", "center", "r_inner", "r_outer", "torque_point"});
+    spec.kind = ForceSpec::Kind::band;
+    spec.r_inner = f.at("r_inner").as_positive() * s;
+    spec.r_outer = f.at("r_outer").as_positive() * s;
+    if (!(spec.r_outer > spec.r_inner))
+      f.at("r_outer").fail("r_outer must exceed r_inner");
+    if (spec.center.norm() + spec.r_outer >= domain)
+      f.at("r_outer").fail("the band leaves the meshed domain");
+  } else if (type == "lorentz" && dim == 2) {
+    f.allow_keys({"name", "type", "regions", "torque_point"});
+    spec.kind = ForceSpec::Kind::lorentz;
+    for (const auto& r : f.at("regions").items()) {
+      const std::string name = r.as_string();
+      bool found = false;
+      for (const auto& reg : c.regions)
+        if (reg.name == name)
+          found = true;
+      if (!found)
+        r.fail("no region named '" + name + "'");
+      spec.regions.push_back(name);
+    }
+    if (spec.regions.empty())
+      f.at("regions").fail("list at least one region");
+  } else {
+    f.at("type").fail("unknown force type '" + type + "' for dimension " + std::to_string(dim) +
+                      (dim == 2 ? " (circle, band, lorentz)" : " (sphere)"));
+  }
+  return spec;
+}
+
+} // namespace
+
+void read_forces(const YamlNode& list, CaseSpec& c) {
+  std::set<std::string> names;
+  for (const auto& f : list.items()) {
+    c.forces.push_back(read_force(f, c));
+    if (!names.insert(c.forces.back().name).second)
+      f.at("name").fail("duplicate force name '" + c.forces.back().name + "'");
+  }
+}
+
+} // namespace magfem

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Speed and accuracy figures (printed, not asserted: the tests check physics, this script
+# checks the speed targets of the issues). Needs a build (bash scripts/build.sh).
+#   bash scripts/benchmark.sh          the quick set (~5 min on 2 cores)
+#   bash scripts/benchmark.sh --full   also the 3D FE sweep of the gravity compensator (long)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+full=0
+[[ "${1:-}" == "--full" ]] && full=1
+magfem=build/magfem
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+# value of a top-level number in summary.json (no jq on a bare Debian)
+field() { grep -m1 "\"$2\"" "$1/summary.json" | sed 's/.*: *//; s/,$//'; }
+timing() { sed -n "/\"timings_s\"/,/}/p" "$1/summary.json" | grep "\"$2\"" | sed 's/.*: *//; s/,$//'; }
+
+report() { # name dir
+  printf "%-44s %8s unknowns  mesh %6.2f s  assemble %6.2f s  solve %6.2f s  total %6.2f s  %5.0f MB  iterations %s\n" \
+    "$1" "$(field "$2" unknowns)" "$(timing "$2" mesh)" "$(timing "$2" assemble)" \
+    "$(timing "$2" solve)" "$(timing "$2" total)" "$(field "$2" peak_memory_MB)" "$(field "$2" iterations)"
+}
+
+echo "== 2D (issue 2 target: ~100k unknowns in < 2 s; issue 3: nonlinear motor ~100k in < 5 s)"
+$magfem solve examples/2d/diametric_cylinder.yaml --out "$out/cyl" > /dev/null
+report "diametric cylinder, P2, default mesh" "$out/cyl"
+$magfem solve examples/2d/diametric_cylinder.yaml --mesh-scale 0.7 --out "$out/cyl100k" > /dev/null
+report "diametric cylinder, P2, mesh-scale 0.7" "$out/cyl100k"
+$magfem solve examples/2d/re25_motor_nonlinear.yaml --out "$out/motor" > /dev/null
+report "RE25 motor, saturating casing, P2" "$out/motor"
+$magfem solve examples/2d/re25_motor_nonlinear.yaml --mesh-scale 0.55 --out "$out/motor100k" > /dev/null
+report "RE25 motor, saturating casing, P2, finer" "$out/motor100k"
+$magfem solve examples/2d/c_core.yaml --out "$out/ccore" > /dev/null
+report "C-core, steel_1010, Newton" "$out/ccore"
+
+echo
+echo "== 3D magnetized sphere (exact reference): accuracy against time"
+for scale in 2 1.4 1; do
+  $magfem solve examples/3d/magnetized_sphere.yaml --mesh-scale $scale --out "$out/sph$scale" > /dev/null
+  $magfem analytic examples/3d/magnetized_sphere.yaml --out "$out/sph_exact" > /dev/null
+  report "magnetized sphere, P2, mesh-scale $scale" "$out/sph$scale"
+  $magfem compare "$out/sph_exact/r12.csv" "$out/sph$scale/r12.csv" | grep -E "^(Brho|Btheta)" | sed 's/^/    r12 /'
+done
+
+echo
+echo "== 3D benchmark32 (thesis FEA: 947,015 elements, 39.5 min, ~1 % from the analytic model)"
+$magfem solve examples/3d/benchmark32_parallel.yaml --out "$out/b32" > /dev/null
+report "benchmark32 parallel, P2" "$out/b32"
+$magfem analytic examples/3d/benchmark32_parallel.yaml --out "$out/b32a" > /dev/null
+$magfem compare "$out/b32a/r56.csv" "$out/b32/r56.csv" | sed 's/^/    /'
+
+echo
+echo "== analytic models (thesis: charge model 0.36 s per point, harmonics overflow past n 149)"
+build/validation/magfem_bench_charge 1e-4
+build/validation/magfem_bench_harmonic 150 400 800
+
+echo
+echo "== gravity compensator sweep 0:10:180 (issue 6), analytic charge interaction"
+start=$(date +%s.%N)
+$magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:10:180 \
+  --analytic --out "$out/sweep_a" 2> /dev/null | tail -n +1
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+if ((full)); then
+  echo
+  echo "== the same sweep by FE (target: 19 positions in < 10 min on 2 cores)"
+  start=$(date +%s.%N)
+  $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:10:180 \
+    --out "$out/sweep_fe" 2> /dev/null
+  awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+fi
