@@ -2,18 +2,19 @@
 //
 // The case: a cylinder magnetized across its axis (radius R, remanence B_r at angle alpha,
 // mu_r 1) centred at x_m, a little off the origin, between two round conductors at (0, +-D)
-// carrying +-I along z. With mu_r 1 everywhere the field is the superposition of the three sources'
-// free-space fields:
+// carrying +-I along z. With mu_r 1 everywhere the field is the superposition of the three
+// sources' free-space fields:
 //  - conductor k: B = mu0 I_k / (2 pi |rho|^2) z x rho, rho = x - c_k (outside it);
 //  - magnet: the 2D dipole B = mu0 / (2 pi r^2) (2 (m.r_hat) r_hat - m), r = x - x_m,
 //    m = (B_r / mu0) A per metre of length (A the magnet's area), outside it.
 // The conductors' field B_ext is not uniform, but a round body feels it exactly as if it
 // were: for a disk of uniform magnetization M in any source-free field, the mean-value
-// property of harmonic functions gives torque A M x B_ext(centre) = m x B_ext(x_m) about
-// its centre and force grad(m . B_ext)(x_m); for a round conductor of uniform J, force I z x
-// B_other(centre) and no torque about its centre. The mesh replaces circles by regular polygons,
-// for which the mean value holds for all harmonics below the number of sides, so the exact values
-// use the meshed areas (the total current is imposed on the meshed area, like the app does).
+// property of harmonic functions gives torque A M x B_ext(centre) = m x B_ext(x_m) about its
+// centre and force grad(m . B_ext)(x_m); for a round conductor of uniform J, force
+// I z x B_other(centre) and no torque about its centre. The mesh replaces circles by regular
+// polygons, for which the mean value holds for all harmonics below the number of sides, so
+// the exact values use the meshed areas (the total current is imposed on the meshed area,
+// like the app does).
 #include <gtest/gtest.h>
 
 #include <chrono>
