@@ -10,6 +10,16 @@ nlohmann::ordered_json vec(const Eigen::Vector3d& v) {
 }
 } // namespace
 
+double relative_difference(const ForceResult& a, const ForceResult& b, double radius) {
+  // A force and a torque are compared on one scale, the larger of |F| and |T| / radius
+  // (the tangential force that makes T): a force that is zero by symmetry would otherwise
+  // turn round-off into a large relative figure.
+  const double f_scale = std::max(
+      {a.force.norm(), b.force.norm(), a.torque.norm() / radius, b.torque.norm() / radius, 1e-300});
+  return std::max((a.force - b.force).norm() / f_scale,
+                  (a.torque - b.torque).norm() / (radius * f_scale));
+}
+
 std::string forces_csv(const std::vector<ForceResult>& forces) {
   const bool any_check =
       std::any_of(forces.begin(), forces.end(), [](const auto& f) { return f.checked; });

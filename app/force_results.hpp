@@ -14,7 +14,7 @@ struct ForceResult {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N (2D: N/m, or N with a stack length)
   Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // N m (2D: N m/m, or N m with a stack)
   // Consistency check (check_radius given): the same quantity on the second surface, and
-  // the largest component difference relative to the largest component magnitude.
+  // their difference (relative_difference).
   bool checked = false;
   Eigen::Vector3d check_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d check_torque = Eigen::Vector3d::Zero();
@@ -22,6 +22,10 @@ struct ForceResult {
 };
 
 // forces.csv: name,method,Fx,Fy,Fz,Tx,Ty,Tz (and the check columns when any force has one).
+// Spread of a consistency check: the difference of force (and torque / radius) relative to
+// the largest of |F| and |T| / radius; radius is the size of the surface.
+double relative_difference(const ForceResult& a, const ForceResult& b, double radius);
+
 std::string forces_csv(const std::vector<ForceResult>& forces);
 nlohmann::ordered_json forces_json(const std::vector<ForceResult>& forces);
 std::string describe_forces(const std::vector<ForceResult>& forces, bool per_metre);

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/force2d.hpp"
 #include "app/resource_usage.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
@@ -20,7 +21,9 @@
 namespace magfem {
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 Mesh2D mesh_case(const CaseSpec& spec) {
   try {
@@ -29,8 +32,8 @@ Mesh2D mesh_case(const CaseSpec& spec) {
     // Point at the region that caused it when we know it, else at the mesh settings.
     for (const auto& r : spec.regions)
       if (r.name == e.part)
-        throw InputError(spec.file, r.line, "regions." + r.name + (e.field.empty() ? "" : "." + e.field),
-                         e.reason);
+        throw InputError(spec.file, r.line,
+                         "regions." + r.name + (e.field.empty() ? "" : "." + e.field), e.reason);
     throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
                      e.reason);
   }
@@ -40,9 +43,11 @@ std::vector<double> part_areas(const Mesh2D& mesh, std::size_t n_parts) {
   std::vector<double> area(n_parts, 0.0);
   for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
     const int p = mesh.triangle_part[t];
-    if (p < 0) continue;
+    if (p < 0)
+      continue;
     const auto& tri = mesh.triangles[t];
-    area[p] += TriangleGeometry::of(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]).area;
+    area[p] +=
+        TriangleGeometry::of(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]).area;
   }
   return area;
 }
@@ -58,7 +63,8 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
     const auto& r = spec.regions[i];
     RegionPhysics2D phys{r.material, r.magnetization, r.current_density};
     // Ampere-turns over the meshed area, so the total current is exactly N I.
-    if (r.ampere_turns != 0) phys.current_density = r.ampere_turns / areas[i];
+    if (r.ampere_turns != 0)
+      phys.current_density = r.ampere_turns / areas[i];
     p.parts.push_back(phys);
   }
   return p;
@@ -69,9 +75,12 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   const auto t_start = Clock::now();
   auto run = std::make_unique<Run2D>();
-  if (ov.order) spec.order = ov.order;
-  if (ov.mesh_scale > 0) spec.geometry2d.options.size_scale *= ov.mesh_scale;
-  if (ov.domain_radius > 0) spec.geometry2d.outer.radius = ov.domain_radius;
+  if (ov.order)
+    spec.order = ov.order;
+  if (ov.mesh_scale > 0)
+    spec.geometry2d.options.size_scale *= ov.mesh_scale;
+  if (ov.domain_radius > 0)
+    spec.geometry2d.outer.radius = ov.domain_radius;
   run->spec = std::move(spec);
 
   auto t0 = Clock::now();
@@ -94,11 +103,13 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   t0 = Clock::now();
   run->field = std::make_unique<Field2D>(run->problem, *run->dofs, assembler.expand(u));
   std::vector<std::string> names;
-  for (const auto& r : run->spec.regions) names.push_back(r.name);
+  for (const auto& r : run->spec.regions)
+    names.push_back(r.name);
   run->energy = summarize_energy_2d(*run->field, names);
   const PointLocator2D locator(run->mesh);
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
+  run->forces = compute_forces_2d(*run);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -107,7 +118,8 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
 void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
-  for (const auto& p : run.probes) stage.write_text(p.name + ".csv", p.to_csv());
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
 
   if (run.spec.write_vtu) {
     std::vector<std::string> material_names = {"air"};
@@ -115,7 +127,8 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
     std::vector<int> material_of_part;
     for (const auto& r : run.spec.regions) {
       auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh) material_names.push_back(r.material->name);
+      if (fresh)
+        material_names.push_back(r.material->name);
       material_of_part.push_back(it->second);
     }
     write_vtu(stage.path_for("solution.vtu").string(),
@@ -146,14 +159,21 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   j["peak_memory_MB"] = peak_memory_mb();
   auto& regions = j["regions"];
   for (const auto& r : run.energy.regions) {
-    if (r.area_m2 == 0) continue;
+    if (r.area_m2 == 0)
+      continue;
     regions.push_back({{"name", r.name},
                        {"area_m2", r.area_m2},
                        {"energy_J", r.energy_J_per_m * length},
                        {"peak_B_T", r.peak_B_T},
                        {"nonlinear", r.nonlinear}});
   }
-  for (const auto& p : run.probes) j["probes"].push_back(p.name + ".csv");
+  for (const auto& p : run.probes)
+    j["probes"].push_back(p.name + ".csv");
+  if (!run.forces.empty()) {
+    j["forces_per"] = run.spec.stack_length > 0 ? "stack" : "metre of length";
+    j["forces"] = forces_json(run.forces);
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  }
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
@@ -172,9 +192,11 @@ std::string describe_run_2d(const Run2D& run) {
   s += buf;
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.area_m2 > 0) {
-      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(), r.peak_B_T);
+      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                    r.peak_B_T);
       s += buf;
     }
+  s += describe_forces(run.forces, run.spec.stack_length <= 0);
   std::snprintf(buf, sizeof buf,
                 "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
                 run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,

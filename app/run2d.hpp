@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/force_results.hpp"
 #include "casefile/case_spec.hpp"
 #include "mesh/mesh2d.hpp"
 #include "postproc/energy2d.hpp"
@@ -23,8 +24,8 @@ struct Timings {
 
 // Command-line overrides of case settings (refinement studies, quick checks).
 struct RunOverrides {
-  int order = 0;           // 0 = as in the case
-  double mesh_scale = 0;   // 0 = as in the case; multiplies every mesh size
+  int order = 0;            // 0 = as in the case
+  double mesh_scale = 0;    // 0 = as in the case; multiplies every mesh size
   double domain_radius = 0; // metres; 0 = as in the case
 };
 
@@ -37,6 +38,7 @@ struct Run2D {
   NewtonReport report;
   EnergySummary2D energy;
   std::vector<ProbeTable> probes;
+  std::vector<ForceResult> forces;
   Timings timings;
 };
 

@@ -1,7 +1,6 @@
 #pragma once
 // The 3D pipeline: case -> TetGen mesh -> scalar-potential problem -> Newton -> probes,
 // energy, VTU. Mirrors run2d.hpp.
-#include "app/force_results.hpp"
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -13,7 +13,7 @@
 namespace magfem {
 namespace {
 
-const std::vector<std::string> common_keys = {"name", "shape", "material", "magnetization",
+const std::vector<std::string> common_keys = {"name",      "shape", "material", "magnetization",
                                               "placement", "group", "mesh_size"};
 
 std::vector<std::string> keys_with(std::initializer_list<const char*> extra) {
@@ -35,11 +35,12 @@ Placement read_placement(const YamlNode& p, double s) {
   if (p.has("rotate")) {
     const auto r = p.at("rotate");
     r.allow_keys({"axis", "angle"});
-    out.rotation = Eigen::AngleAxisd(r.at("angle").as_double() * deg_to_rad,
-                                     read_direction3(r.at("axis")))
-                       .toRotationMatrix();
+    out.rotation =
+        Eigen::AngleAxisd(r.at("angle").as_double() * deg_to_rad, read_direction3(r.at("axis")))
+            .toRotationMatrix();
   }
-  if (p.has("translate")) out.translation = read_point3(p.at("translate"), s);
+  if (p.has("translate"))
+    out.translation = read_point3(p.at("translate"), s);
   return out;
 }
 
@@ -50,7 +51,8 @@ Magnetization read_magnetization(const YamlNode& m, double s, const Placement& p
   m.allow_keys({"type", "direction", "center", "sign"});
   Magnetization out;
   out.sign = m.get_double("sign", 1.0);
-  if (out.sign != 1.0 && out.sign != -1.0) m.at("sign").fail("sign must be 1 or -1");
+  if (out.sign != 1.0 && out.sign != -1.0)
+    m.at("sign").fail("sign must be 1 or -1");
   const std::string type = m.at("type").as_string();
   if (type == "parallel" || type == "axial") {
     out.pattern = Magnetization::Pattern::parallel;
@@ -70,10 +72,14 @@ SphericalSegment read_segment(const YamlNode& r, double s) {
   SphericalSegment g;
   g.r_inner = r.has("r_inner") ? r.at("r_inner").as_non_negative() * s : 0.0;
   g.r_outer = r.at("r_outer").as_positive() * s;
-  if (g.r_inner >= g.r_outer) r.at("r_inner").fail("r_inner must be smaller than r_outer");
-  std::tie(g.theta_min, g.theta_max) = r.has("theta") ? read_angle_range(r.at("theta"), 0, 180) : std::pair{0.0, pi};
-  std::tie(g.phi_min, g.phi_max) = r.has("phi") ? read_angle_range(r.at("phi"), -360, 360) : std::pair{0.0, 2 * pi};
-  if (g.phi_max - g.phi_min > 2 * pi + 1e-12) r.at("phi").fail("the phi range exceeds 360 degrees");
+  if (g.r_inner >= g.r_outer)
+    r.at("r_inner").fail("r_inner must be smaller than r_outer");
+  std::tie(g.theta_min, g.theta_max) =
+      r.has("theta") ? read_angle_range(r.at("theta"), 0, 180) : std::pair{0.0, pi};
+  std::tie(g.phi_min, g.phi_max) =
+      r.has("phi") ? read_angle_range(r.at("phi"), -360, 360) : std::pair{0.0, 2 * pi};
+  if (g.phi_max - g.phi_min > 2 * pi + 1e-12)
+    r.at("phi").fail("the phi range exceeds 360 degrees");
   return g;
 }
 
@@ -83,8 +89,10 @@ struct Reader3D {
   double s;
 
   void add(const YamlNode& r, Part3D part, RegionSpec spec) {
-    if (r.has("mesh_size")) part.max_size = r.at("mesh_size").as_positive() * s;
-    if (r.has("group")) part.group = r.at("group").as_string();
+    if (r.has("mesh_size"))
+      part.max_size = r.at("mesh_size").as_positive() * s;
+    if (r.has("group"))
+      part.group = r.at("group").as_string();
     c.geometry3d.parts.push_back(std::move(part));
     c.regions.push_back(std::move(spec));
   }
@@ -100,7 +108,8 @@ struct Reader3D {
   void single(const YamlNode& r, const std::string& name, Shape3D shape) {
     const Placement place = r.has("placement") ? read_placement(r.at("placement"), s) : Placement{};
     RegionSpec spec = base_spec(r, name);
-    if (r.has("magnetization")) spec.magnetization = read_magnetization(r.at("magnetization"), s, place);
+    if (r.has("magnetization"))
+      spec.magnetization = read_magnetization(r.at("magnetization"), s, place);
     add(r, Part3D{name, std::move(shape), place, 0, ""}, spec);
   }
 
@@ -120,18 +129,23 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
   r.allow_keys(keys_with({"r_inner", "r_outer", "theta", "phi", "p_theta", "p_phi", "pattern"}));
   const SphericalSegment whole = read_segment(r, s);
   const int nt = r.at("p_theta").as_int(), np = r.at("p_phi").as_int();
-  if (nt < 1) r.at("p_theta").fail("must be at least 1");
-  if (np < 1) r.at("p_phi").fail("must be at least 1");
+  if (nt < 1)
+    r.at("p_theta").fail("must be at least 1");
+  if (np < 1)
+    r.at("p_phi").fail("must be at least 1");
   const Placement place = r.has("placement") ? read_placement(r.at("placement"), s) : Placement{};
   RegionSpec proto = base_spec(r, name);
   std::string type = "none";
   std::optional<YamlNode> pat = r.find("pattern");
   if (proto.material->is_magnet()) {
-    if (!pat) r.fail("a magnet segment array needs a pattern");
+    if (!pat)
+      r.fail("a magnet segment array needs a pattern");
     pat->allow_keys({"type", "convention", "direction", "directions", "sign"});
     type = pat->at("type").as_string();
   }
   const double global_sign = pat ? pat->get_double("sign", 1.0) : 1.0;
+  if (global_sign != 1.0 && global_sign != -1.0)
+    pat->at("sign").fail("sign must be 1 or -1");
   const bool edge = pat && pat->get_string("convention", "centre") == "edge";
   if (pat && pat->has("convention") && !edge && pat->at("convention").as_string() != "centre")
     pat->at("convention").fail("convention must be centre or edge");
@@ -139,11 +153,13 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
   if (type == "per_segment") {
     per_segment = pat->at("directions").items();
     if (static_cast<int>(per_segment.size()) != nt * np)
-      pat->at("directions").fail("expected p_theta * p_phi = " + std::to_string(nt * np) + " directions");
+      pat->at("directions")
+          .fail("expected p_theta * p_phi = " + std::to_string(nt * np) + " directions");
   } else if (pat && type != "parallel_alternating" && type != "radial_alternating" &&
              type != "parallel" && type != "radial") {
-    pat->at("type").fail("unknown pattern '" + type +
-                         "' (parallel_alternating, radial_alternating, parallel, radial, per_segment)");
+    pat->at("type").fail(
+        "unknown pattern '" + type +
+        "' (parallel_alternating, radial_alternating, parallel, radial, per_segment)");
   }
   const double dt = (whole.theta_max - whole.theta_min) / nt;
   const double dp = (whole.phi_max - whole.phi_min) / np;
@@ -162,7 +178,8 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
         const double lt = 0.5 * (seg.theta_min + seg.theta_max);
         const double lp = edge ? seg.phi_min : 0.5 * (seg.phi_min + seg.phi_max);
         m.pattern = Magnetization::Pattern::parallel;
-        m.direction = place.rotation * Vec3(std::sin(lt) * std::cos(lp), std::sin(lt) * std::sin(lp), std::cos(lt));
+        m.direction = place.rotation *
+                      Vec3(std::sin(lt) * std::cos(lp), std::sin(lt) * std::sin(lp), std::cos(lt));
         m.sign = alternating * global_sign;
       } else if (type == "radial_alternating" || type == "radial") {
         m.pattern = Magnetization::Pattern::radial;
@@ -189,8 +206,10 @@ void Reader3D::cylinder_array(const YamlNode& r, const std::string& name) {
   r.allow_keys(keys_with({"r_outer", "height", "base_radius", "pitch", "theta"}));
   const double rc = r.at("r_outer").as_positive() * s, h = r.at("height").as_positive() * s;
   const double rb = r.at("base_radius").as_positive() * s, pitch = r.at("pitch").as_positive() * s;
-  if (pitch < 2 * rc) r.at("pitch").fail("pitch must be at least the cylinder diameter");
-  const auto [t0, t1] = r.has("theta") ? read_angle_range(r.at("theta"), 0, 180) : std::pair{0.0, 0.5 * pi};
+  if (pitch < 2 * rc)
+    r.at("pitch").fail("pitch must be at least the cylinder diameter");
+  const auto [t0, t1] =
+      r.has("theta") ? read_angle_range(r.at("theta"), 0, 180) : std::pair{0.0, 0.5 * pi};
   const Placement place = r.has("placement") ? read_placement(r.at("placement"), s) : Placement{};
   RegionSpec proto = base_spec(r, name);
   double sign = 1.0;
@@ -198,13 +217,17 @@ void Reader3D::cylinder_array(const YamlNode& r, const std::string& name) {
     const auto m = r.at("magnetization");
     m.allow_keys({"type", "sign"});
     const std::string t = m.at("type").as_string();
-    if (t != "axial" && t != "radial") m.at("type").fail("cylinder arrays are magnetized axial (= radial)");
+    if (t != "axial" && t != "radial")
+      m.at("type").fail("cylinder arrays are magnetized axial (= radial)");
     sign = m.get_double("sign", 1.0);
+    if (sign != 1.0 && sign != -1.0)
+      m.at("sign").fail("sign must be 1 or -1");
   }
   const double dtheta = pitch / rb;
   int index = 0;
   auto place_one = [&](double theta, double phi) {
-    const Vec3 axis(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    const Vec3 axis(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                    std::cos(theta));
     Placement local{rotation_z_to(axis), rb * axis};
     Placement global{place.rotation * local.rotation, place.to_global(local.translation)};
     RegionSpec spec = proto;
@@ -225,9 +248,11 @@ void Reader3D::cylinder_array(const YamlNode& r, const std::string& name) {
   }
   for (; theta <= t1 - 0.5 * dtheta + 1e-12; theta += dtheta) {
     const int n = static_cast<int>(std::floor(2 * pi * rb * std::sin(theta) / pitch));
-    for (int k = 0; k < n; ++k) place_one(theta, 2 * pi * k / n);
+    for (int k = 0; k < n; ++k)
+      place_one(theta, 2 * pi * k / n);
   }
-  if (index == 0) r.fail("the cylinder array is empty: pitch too large for the theta range");
+  if (index == 0)
+    r.fail("the cylinder array is empty: pitch too large for the theta range");
 }
 
 } // namespace
@@ -238,7 +263,8 @@ void read_regions_3d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary
   std::set<std::string> names;
   for (const auto& r : regions.items()) {
     const std::string name = r.at("name").as_string();
-    if (!names.insert(name).second) r.at("name").fail("duplicate region name '" + name + "'");
+    if (!names.insert(name).second)
+      r.at("name").fail("duplicate region name '" + name + "'");
     const std::string shape = r.at("shape").as_string();
     if (shape == "spherical_segment") {
       r.allow_keys(keys_with({"r_inner", "r_outer", "theta", "phi"}));
@@ -247,12 +273,14 @@ void read_regions_3d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary
       r.allow_keys(keys_with({"r_inner", "r_outer", "height"}));
       Cylinder cyl{r.has("r_inner") ? r.at("r_inner").as_non_negative() * s : 0.0,
                    r.at("r_outer").as_positive() * s, r.at("height").as_positive() * s};
-      if (cyl.r_inner >= cyl.r_outer) r.at("r_inner").fail("r_inner must be smaller than r_outer");
+      if (cyl.r_inner >= cyl.r_outer)
+        r.at("r_inner").fail("r_inner must be smaller than r_outer");
       reader.single(r, name, cyl);
     } else if (shape == "box") {
       r.allow_keys(keys_with({"size"}));
       const Vec3 size = read_point3(r.at("size"), s);
-      if (size.minCoeff() <= 0) r.at("size").fail("box sizes must be positive");
+      if (size.minCoeff() <= 0)
+        r.at("size").fail("box sizes must be positive");
       reader.single(r, name, Box{size});
     } else if (shape == "segment_array") {
       reader.segment_array(r, name);
