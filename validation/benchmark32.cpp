@@ -28,7 +28,8 @@ std::vector<AnalyticMagnet> make_benchmark32(Benchmark32Magnetization kind, doub
                                  step * (pt - 1),      step * pt,
                                  step * (pp - 1),      step * pp};
       m.B_r = B_r;
-      m.name = "m" + std::to_string(pt) + "_" + std::to_string(pp);
+      // Appended piece by piece: GCC 12 reports a false -Wrestrict on "literal" + std::string.
+      m.name = std::string("m").append(std::to_string(pt)).append("_").append(std::to_string(pp));
       m.magnetization.sign = ((pt + pp) % 2 == 0) ? 1.0 : -1.0;
       if (kind == Benchmark32Magnetization::radial) {
         m.magnetization.pattern = Magnetization::Pattern::radial;
