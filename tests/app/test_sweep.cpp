@@ -16,6 +16,32 @@ using namespace magfem;
 
 namespace {
 
+// The same two spheres, meshed for the FE sweep: refined on the stress sphere (probe_size),
+// coarse elsewhere (~250k P2 unknowns, ~10 s per position).
+const char* two_spheres_fe = R"(
+dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
+regions:
+  - name: fixed
+    shape: spherical_segment
+    r_outer: 5
+    material: pm
+    magnetization: {type: parallel, direction: [0, 0, 1]}
+    mesh_size: 2.5
+  - name: moving
+    shape: spherical_segment
+    r_outer: 4
+    material: pm
+    magnetization: {type: parallel, direction: [1, 0, 0]}
+    placement: {translate: [0, 0, 14]}
+    group: arm
+    mesh_size: 2.5
+boundary: {type: open, radius: 40}
+mesh: {size: 8, chord_tolerance: 0.05, probe_size: 1.2}
+)";
+
 const char* two_spheres = R"(
 dimension: 3
 unit: mm
@@ -103,6 +129,25 @@ TEST(Sweep, StressSphereLiesInTheGapBetweenTheGroupAndTheRest) {
   EXPECT_NEAR(stress_surface(spec, "outer", 0.0292).radius, 0.0292, 1e-15);
 }
 
+// The two spheres' exact interaction (see the header) at every row of a sweep about `axis`.
+static void expect_dipole_dipole(const std::vector<SweepRow>& rows, const Eigen::Vector3d& axis,
+                                 double tolerance) {
+  for (const auto& row : rows) {
+    ASSERT_TRUE(row.ok) << row.error;
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(row.angle_deg * deg_to_rad, axis).toRotationMatrix();
+    const Dipole a{moment(0.005, 1.2) * Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Zero()};
+    const Dipole b{moment(0.004, 1.2) * (r * Eigen::Vector3d::UnitX()),
+                   r * Eigen::Vector3d(0, 0, 0.014)};
+    Eigen::Vector3d f, t;
+    dipole_dipole(a, b, f, t);
+    EXPECT_LT((row.force - f).norm(), tolerance * f.norm())
+        << row.angle_deg << ": " << row.force.transpose() << " vs " << f.transpose();
+    EXPECT_LT((row.torque - t).norm(), tolerance * t.norm())
+        << row.angle_deg << ": " << row.torque.transpose() << " vs " << t.transpose();
+  }
+}
+
 TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
   const auto spec = read_case(test::write_temp_case("sweep_spheres.yaml", two_spheres));
   SweepOptions o;
@@ -112,20 +157,20 @@ TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
   o.analytic = true;
   const auto rows = run_sweep(spec, o);
   ASSERT_EQ(rows.size(), 3u);
-  for (const auto& row : rows) {
-    ASSERT_TRUE(row.ok) << row.error;
-    const Eigen::Matrix3d r =
-        Eigen::AngleAxisd(row.angle_deg * deg_to_rad, o.axis).toRotationMatrix();
-    const Dipole a{moment(0.005, 1.2) * Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Zero()};
-    const Dipole b{moment(0.004, 1.2) * (r * Eigen::Vector3d::UnitX()),
-                   r * Eigen::Vector3d(0, 0, 0.014)};
-    Eigen::Vector3d f, t;
-    dipole_dipole(a, b, f, t);
-    // The charge interaction integrates to a relative tolerance of 1e-6 of the total; 1e-5
-    // of the largest component leaves room for the sum of the face contributions.
-    EXPECT_LT((row.force - f).norm(), 1e-5 * f.norm())
-        << row.angle_deg << ": " << row.force.transpose() << " vs " << f.transpose();
-    EXPECT_LT((row.torque - t).norm(), 1e-5 * t.norm())
-        << row.angle_deg << ": " << row.torque.transpose() << " vs " << t.transpose();
-  }
+  // The charge interaction integrates to a relative tolerance of 1e-6 of the total; 1e-5
+  // of the magnitude leaves room for the sum of the face contributions.
+  expect_dipole_dipole(rows, o.axis, 1e-5);
+}
+
+TEST(Sweep, FiniteElementSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
+  const auto spec = read_case(test::write_temp_case("sweep_spheres_fe.yaml", two_spheres_fe));
+  SweepOptions o;
+  o.group = "arm";
+  o.axis = Eigen::Vector3d(0, 1, 1).normalized();
+  o.angles_deg = {0, 135};
+  const auto rows = run_sweep(spec, o); // remeshes each position, stress sphere mid-gap
+  ASSERT_EQ(rows.size(), 2u);
+  // The issue's 0.5 %. Measured on this mesh: at most 0.25 % (force) and 0.2 % (torque),
+  // falling to 0.08 % at 630k unknowns: the error is the P2 field's at the stress sphere.
+  expect_dipole_dipole(rows, o.axis, 5e-3);
 }
