@@ -55,6 +55,25 @@ build/validation/magfem_bench_charge 1e-4
 build/validation/magfem_bench_harmonic 150 400 800
 
 echo
+echo "== remeshing noise of FE sweeps (issue 6: well below 0.5 % of the peak): two spheres, 1-deg steps"
+$magfem sweep examples/3d/two_spheres.yaml --rotate arm --axis y --angles 30:1:40 --out "$out/noise_fe" > /dev/null 2>&1
+$magfem sweep examples/3d/two_spheres.yaml --rotate arm --axis y --angles 30:1:40 --analytic --out "$out/noise_an" > /dev/null 2>&1
+# FE minus exact per angle, then the largest change of that error between neighbouring angles,
+# both relative to the peak magnitude of the component over the sweep.
+paste -d, "$out/noise_fe/sweep.csv" "$out/noise_an/sweep.csv" | awk -F, 'NR > 1 {
+  for (c = 2; c <= 7; ++c) {
+    d = $c - $(c + 7); e[NR, c] = d; if (d < 0) d = -d; if (d > err[c]) err[c] = d
+    p = $(c + 7); if (p < 0) p = -p; if (p > peak[c]) peak[c] = p
+    if (NR > 2) { j = e[NR, c] - e[NR - 1, c]; if (j < 0) j = -j; if (j > jump[c]) jump[c] = j }
+  } }
+  END { split("Tx Ty Tz Fx Fy Fz", name, " ")
+        tp = peak[3] > peak[2] ? peak[3] : peak[2]; tp = peak[4] > tp ? peak[4] : tp
+        fp = peak[5] > peak[6] ? peak[5] : peak[6]; fp = peak[7] > fp ? peak[7] : fp
+        for (c = 2; c <= 7; ++c) { s = c <= 4 ? tp : fp
+          printf "    %s: error vs exact max %.3f %% of peak, neighbour-to-neighbour change max %.3f %%\n",
+                 name[c - 1], 100 * err[c] / s, 100 * jump[c] / s } }'
+
+echo
 echo "== gravity compensator sweep 0:10:180 (issue 6), analytic charge interaction"
 start=$(date +%s.%N)
 $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:10:180 \
