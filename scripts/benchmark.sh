@@ -44,10 +44,15 @@ done
 
 echo
 echo "== 3D benchmark32 (thesis FEA: 947,015 elements, 39.5 min, ~1 % from the analytic model)"
-$magfem solve examples/3d/benchmark32_parallel.yaml --out "$out/b32" > /dev/null
-report "benchmark32 parallel, P2" "$out/b32"
+# accuracy against time: pointwise rms error vs the charge model at a few mesh levels
 $magfem analytic examples/3d/benchmark32_parallel.yaml --out "$out/b32a" > /dev/null
-$magfem compare "$out/b32a/r56.csv" "$out/b32/r56.csv" | sed 's/^/    /'
+levels="2 1.6"
+((full)) && levels="2 1.6 1.3 1"
+for scale in $levels; do
+  $magfem solve examples/3d/benchmark32_parallel.yaml --mesh-scale $scale --out "$out/b32_$scale" > /dev/null
+  report "benchmark32 parallel, P2, mesh-scale $scale" "$out/b32_$scale"
+  $magfem compare "$out/b32a/r56.csv" "$out/b32_$scale/r56.csv" | tail -n +2 | sed 's/^/    /'
+done
 
 echo
 echo "== analytic models (thesis: charge model 0.36 s per point, harmonics overflow past n 149)"
