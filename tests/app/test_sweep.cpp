@@ -16,53 +16,12 @@ using namespace magfem;
 
 namespace {
 
-// The same two spheres, meshed for the FE sweep: refined on the stress sphere (probe_size),
-// coarse elsewhere (~250k P2 unknowns, ~10 s per position).
-const char* two_spheres_fe = R"(
-dimension: 3
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
-regions:
-  - name: fixed
-    shape: spherical_segment
-    r_outer: 5
-    material: pm
-    magnetization: {type: parallel, direction: [0, 0, 1]}
-    mesh_size: 2.5
-  - name: moving
-    shape: spherical_segment
-    r_outer: 4
-    material: pm
-    magnetization: {type: parallel, direction: [1, 0, 0]}
-    placement: {translate: [0, 0, 14]}
-    group: arm
-    mesh_size: 2.5
-boundary: {type: open, radius: 40}
-mesh: {size: 8, chord_tolerance: 0.05, probe_size: 1.2}
-)";
-
-const char* two_spheres = R"(
-dimension: 3
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
-regions:
-  - name: fixed
-    shape: spherical_segment
-    r_outer: 5
-    material: pm
-    magnetization: {type: parallel, direction: [0, 0, 1]}
-  - name: moving
-    shape: spherical_segment
-    r_outer: 4
-    material: pm
-    magnetization: {type: parallel, direction: [1, 0, 0]}
-    placement: {translate: [0, 0, 14]}
-    group: arm
-boundary: {type: open, radius: 40}
-mesh: {size: 4, chord_tolerance: 0.05}
-)";
+// examples/3d/two_spheres.yaml: a fixed sphere (radius 5 mm, B_r 1.2 T along z) at the
+// origin and a sphere of radius 4 mm magnetized along x at (0, 0, 14) mm in group `arm`,
+// meshed for the FE sweep (refined on the stress spheres, ~250k P2 unknowns).
+std::string two_spheres() {
+  return test::example("3d/two_spheres.yaml");
+}
 
 struct Dipole {
   Eigen::Vector3d m, x;
@@ -101,7 +60,7 @@ TEST(Sweep, AngleListsAndAxes) {
 }
 
 TEST(Sweep, RotatingAGroupMovesItsPartsAndMagnetizationsOnly) {
-  const auto spec = read_case(test::write_temp_case("sweep_rotate.yaml", two_spheres));
+  const auto spec = read_case(two_spheres());
   const auto turned =
       rotate_group(spec, "arm", Eigen::Vector3d::UnitY(), pi / 2, Eigen::Vector3d::Zero());
   // +90 deg about y takes +z to +x and +x to -z (right-hand rule).
@@ -149,7 +108,7 @@ static void expect_dipole_dipole(const std::vector<SweepRow>& rows, const Eigen:
 }
 
 TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
-  const auto spec = read_case(test::write_temp_case("sweep_spheres.yaml", two_spheres));
+  const auto spec = read_case(two_spheres());
   SweepOptions o;
   o.group = "arm";
   o.axis = Eigen::Vector3d(0, 1, 1).normalized();
@@ -163,7 +122,7 @@ TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
 }
 
 TEST(Sweep, FiniteElementSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
-  const auto spec = read_case(test::write_temp_case("sweep_spheres_fe.yaml", two_spheres_fe));
+  const auto spec = read_case(two_spheres());
   SweepOptions o;
   o.group = "arm";
   o.axis = Eigen::Vector3d(0, 1, 1).normalized();
