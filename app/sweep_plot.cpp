@@ -1,6 +1,7 @@
 #include "app/sweep_plot.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 namespace magfem {

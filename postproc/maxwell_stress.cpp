@@ -7,42 +7,13 @@
 #include <Eigen/Geometry>
 
 #include "core/constants.hpp"
+#include "core/gauss_legendre.hpp"
 
 namespace magfem {
 
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-struct GaussLegendre {
-  std::vector<double> nodes, weights; // on [-1, 1]
-};
-
-// Newton iteration on P_n from the usual cosine guess; converges to round-off.
-GaussLegendre gauss_legendre(int n) {
-  GaussLegendre g{std::vector<double>(n), std::vector<double>(n)};
-  for (int i = 0; i < n; ++i) {
-    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
-    double dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      const double pm = n == 1 ? 1 : p0;
-      dp = n * (x * p1 - pm) / (x * x - 1);
-      const double dx = p1 / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16)
-        break;
-    }
-    g.nodes[i] = x;
-    g.weights[i] = 2 / ((1 - x * x) * dp * dp);
-  }
-  return g;
-}
 
 void check_counts(int a, int b, const char* what) {
   if (a < 1 || b < 1)
@@ -64,13 +35,13 @@ std::vector<SurfacePoint> circle_quadrature(const Eigen::Vector2d& c, double r, 
 std::vector<SurfacePoint> sphere_quadrature(const Vec3& center, double radius, int n_theta,
                                             int n_phi) {
   check_counts(n_theta, n_phi, "sphere_quadrature");
-  const GaussLegendre g = gauss_legendre(n_theta);
+  const QuadratureRule g = gauss_legendre(n_theta);
   std::vector<SurfacePoint> pts;
   pts.reserve(static_cast<std::size_t>(n_theta) * n_phi);
   for (int i = 0; i < n_theta; ++i) {
     // theta = (pi/2)(1 + t): d theta = pi/2 dt, dS = r^2 sin(theta) dtheta dphi.
-    const double th = 0.5 * pi * (1 + g.nodes[i]);
-    const double wt = 0.5 * pi * g.weights[i] * radius * radius * std::sin(th) * (2 * pi / n_phi);
+    const double th = 0.5 * pi * (1 + g.x[i]);
+    const double wt = 0.5 * pi * g.w[i] * radius * radius * std::sin(th) * (2 * pi / n_phi);
     for (int j = 0; j < n_phi; ++j) {
       const double ph = 2 * pi * (j + 0.5) / n_phi;
       const Vec3 n(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
@@ -132,11 +103,11 @@ ForceTorque maxwell_stress_on_band(const FieldFunction2D& B, const Eigen::Vector
   if (!(r_inner > 0 && r_outer > r_inner))
     throw std::invalid_argument("maxwell_stress_on_band: need 0 < r_inner < r_outer");
   // Weights w_k / 2 sum to 1: the mean over r of the circle results.
-  const GaussLegendre g = gauss_legendre(n_radii);
+  const QuadratureRule g = gauss_legendre(n_radii);
   ForceTorque sum;
   for (int k = 0; k < n_radii; ++k) {
-    const double r = r_inner + 0.5 * (r_outer - r_inner) * (1 + g.nodes[k]);
-    sum = sum + 0.5 * g.weights[k] * maxwell_stress_on_circle(B, center, r, torque_point, n_points);
+    const double r = r_inner + 0.5 * (r_outer - r_inner) * (1 + g.x[k]);
+    sum = sum + 0.5 * g.w[k] * maxwell_stress_on_circle(B, center, r, torque_point, n_points);
   }
   return sum;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/constants.hpp"
+#include "core/gauss_legendre.hpp"
 
 namespace magfem {
 
@@ -178,31 +179,12 @@ void box_domains(const AnalyticMagnet& m, const Box& b, std::vector<ChargeDomain
 
 } // namespace
 
-GaussRule::GaussRule(int n) : nodes(n), weights(n) {
+GaussRule::GaussRule(int n) {
   if (n < 1)
     throw std::invalid_argument("GaussRule: order must be >= 1");
-  // Newton iteration on P_n from the Chebyshev-like initial guess; converges to round-off.
-  for (int i = 0; i < n; ++i) {
-    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
-    double dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      const double pn = n == 1 ? x : p1;
-      const double pm = n == 1 ? 1 : p0;
-      dp = n * (x * pn - pm) / (x * x - 1);
-      const double dx = pn / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16)
-        break;
-    }
-    nodes[i] = x;
-    weights[i] = 2 / ((1 - x * x) * dp * dp);
-  }
+  QuadratureRule rule = gauss_legendre(n);
+  nodes = std::move(rule.x);
+  weights = std::move(rule.w);
 }
 
 Vec3 ChargeDomain::point(const std::array<double, 3>& u) const {

@@ -13,6 +13,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/gauss_legendre.hpp"
+
 namespace magfem {
 
 // Storage of a triangle 0 <= m <= n <= n_max column by column (m-major): the entries of one
@@ -91,12 +93,5 @@ private:
   double seed_;      // Q_mm of the current order m >= 1 (mantissa)
   int seed_exp_ = 0; // and its binary exponent
 };
-
-// Gauss-Legendre rule on [a, b]: sum_i w_i f(x_i) is exact for polynomials of degree 2q - 1.
-struct QuadratureRule {
-  std::vector<double> x;
-  std::vector<double> w;
-};
-QuadratureRule gauss_legendre(int q, double a = -1.0, double b = 1.0);
 
 } // namespace magfem

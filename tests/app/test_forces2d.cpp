@@ -26,10 +26,11 @@ TEST(Forces2D, RotorTorqueAgreesByStressTensorArkkioAndLorentz) {
             << " N m/m\n";
   // The casing is linear, centred and exerts no net torque, so the winding feels exactly the
   // reaction of the rotor torque. The three methods sample the P2 field differently (a
-  // circle, an average over a band, the coil's volume); their measured spread is 5e-5 on this
-  // mesh. 0.2 % is the accuracy the issue asks of the stress tensor, with margin.
-  EXPECT_NEAR(band, circle, 2e-3 * std::abs(circle));
-  EXPECT_NEAR(-lorentz, circle, 2e-3 * std::abs(circle));
+  // circle, an average over a band, the coil's volume); each is within 0.03 % of exact
+  // torques on comparable meshes (tests/postproc/test_force2d.cpp), so their differences stay
+  // below 5e-4 (measured here: 5e-5).
+  EXPECT_NEAR(band, circle, 5e-4 * std::abs(circle));
+  EXPECT_NEAR(-lorentz, circle, 5e-4 * std::abs(circle));
   EXPECT_GT(std::abs(circle), 1.0); // a real torque: ~3.8 N m/m with these ampere-turns
   // Radius independence inside the air gap (issue: within 0.5 %).
   EXPECT_TRUE(force(*run, "rotor").checked);
