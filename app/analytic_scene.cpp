@@ -87,8 +87,9 @@ AnalyticScene analytic_scene(const CaseSpec& spec) {
   else if (spec.geometry3d.outer.kind == OuterKind3D::neumann)
     throw InputError(spec.file, spec.boundary_line, "boundary.type",
                      "a Neumann (flux-tight) sphere is not representable by the analytic models");
-  if (scene.magnets.empty())
-    throw InputError(spec.file, 0, "regions", "no permanent magnets: nothing for the analytic models to compute");
+  if (scene.magnets.empty() && spec.geometry3d.coils.empty())
+    throw InputError(spec.file, 0, "regions",
+                     "no permanent magnets or coils: nothing for the analytic models to compute");
   return scene;
 }
 

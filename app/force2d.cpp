@@ -59,6 +59,7 @@ std::vector<ForceResult> compute_forces_2d(const Run2D& run) {
         break;
       }
       case ForceSpec::Kind::sphere:
+      case ForceSpec::Kind::box:
         continue; // 3D only; the reader does not allow it in 2D
       }
     } catch (const std::invalid_argument& e) {

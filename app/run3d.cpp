@@ -91,6 +91,12 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   // limit the field error near curved magnet faces to O(h^2) in the geometry.
   if (run->spec.order == 2)
     run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
+  if (!run->spec.geometry3d.coils.empty()) {
+    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils);
+    check_coils_in_air(*run);
+    run->coil_source = make_coil_source_3d(run->problem, *run->dofs, *run->coils);
+    run->problem.source = &run->coil_source;
+  }
   Assembler3D assembler(run->problem, *run->dofs);
   const double setup = since(t0);
 
@@ -113,6 +119,9 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     run->probes.push_back(
         sample_probe_3d(*run->field, locator, probe, run->spec.length_unit, &run->recovered_B));
   run->forces = compute_forces_3d(*run);
+  for (auto& f : coil_lorentz_forces(*run))
+    run->forces.push_back(f);
+  run->coil_results = compute_coil_results(*run, assembler, u);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -174,6 +183,23 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   }
   for (const auto& p : run.probes)
     j["probes"].push_back(p.name + ".csv");
+  if (run.coils) {
+    j["coils"] = coil_results_json(run.coil_results);
+    if (run.coil_results.inductance_H.size() > 0) {
+      std::vector<std::string> names;
+      for (const auto& c : run.coil_results.coils)
+        names.push_back(c.name);
+      nlohmann::ordered_json l = nlohmann::ordered_json::array();
+      for (Eigen::Index i = 0; i < run.coil_results.inductance_H.rows(); ++i) {
+        std::vector<double> row;
+        for (Eigen::Index k = 0; k < run.coil_results.inductance_H.cols(); ++k)
+          row.push_back(run.coil_results.inductance_H(i, k));
+        l.push_back(row);
+      }
+      j["inductance_H"] = {{"names", names}, {"matrix", l}};
+    }
+    j["coil_warnings"] = run.coil_results.warnings;
+  }
   if (!run.forces.empty()) {
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
@@ -200,6 +226,7 @@ std::string describe_run_3d(const Run3D& run) {
       s += buf;
     }
   s += describe_forces(run.forces, false);
+  s += describe_coils(run.coil_results);
   std::snprintf(buf, sizeof buf,
                 "time     mesh %.2f s, assemble %.2f s, solve %.2f s, post %.2f s, total %.2f s, "
                 "peak %.0f MB\n",

@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "app/coil_run3d.hpp"
 #include "app/run2d.hpp"
 #include "mesh/mesh3d.hpp"
 #include "postproc/energy3d.hpp"
 #include "postproc/field3d.hpp"
+#include "solver/coil_source3d.hpp"
 #include "solver/dof_map3d.hpp"
 #include "solver/problem3d.hpp"
 
@@ -20,12 +22,15 @@ struct Run3D {
   Mesh3D mesh;
   std::unique_ptr<DofMap3D> dofs;
   Problem3D problem;
+  std::unique_ptr<CaseCoils> coils; // null without coils
+  CoilSource3D coil_source;         // problem.source points here when there are coils
   std::unique_ptr<Field3D> field;
   NewtonReport report;
   EnergySummary3D energy;
   std::vector<Eigen::Vector3d> recovered_B; // nodal B (Field3D::recovered_B), computed once
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
+  CoilResults coil_results;
   Timings timings;
 };
 

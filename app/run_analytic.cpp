@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/coil_run3d.hpp"
 #include "app/resource_usage.hpp"
+#include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
 #include "postproc/probe_rows3d.hpp"
@@ -21,7 +23,32 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 
 using BatchField = std::function<std::vector<Eigen::Vector3d>(const std::vector<Eigen::Vector3d>&)>;
 
+BatchField make_magnet_model(const AnalyticRun& run);
+
+// The coils' Biot-Savart field added to the magnets' model. Coils are not imaged in
+// permeable spheres (no such model here), so such cases are refused.
 BatchField make_model(const AnalyticRun& run) {
+  const auto& coils = run.spec.geometry3d.coils;
+  if (coils.empty())
+    return make_magnet_model(run);
+  if (!run.scene.spheres.empty())
+    throw InputError(run.spec.file, run.spec.coil_lines.front(), "coils." + coils.front().name,
+                     "the analytic models do not image coils in permeable spheres or a "
+                     "Dirichlet boundary; use magfem solve");
+  BatchField magnets;
+  if (!run.scene.magnets.empty())
+    magnets = make_magnet_model(run);
+  auto source = std::make_shared<CaseCoils>(coils);
+  return [magnets, source](const std::vector<Eigen::Vector3d>& x) {
+    std::vector<Eigen::Vector3d> b =
+        magnets ? magnets(x) : std::vector<Eigen::Vector3d>(x.size(), Eigen::Vector3d::Zero());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      b[i] += mu0 * source->H(x[i]);
+    return b;
+  };
+}
+
+BatchField make_magnet_model(const AnalyticRun& run) {
   if (run.options.model == "harmonic") {
     HarmonicOptions o;
     o.n_max = run.options.n_max;

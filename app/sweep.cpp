@@ -29,6 +29,23 @@ bool in_group(const Part3D& part, const std::string& group) {
 // Radial range [min, max] about the origin of a part, from its surface sampled on a fine grid
 // in the local frame. Sampling can only miss the extreme by about one grid step, which the
 // margin covers. Exact for spherical segments centred on the origin.
+// Distances from the origin that a coil's bundle spans (conservative for off-centre coils).
+std::pair<double, double> coil_radial_range(const Coil3D& coil) {
+  const double c = coil.placement.translation.norm();
+  if (const auto* s = std::get_if<SphericalCoil>(&coil.shape); s && c == 0)
+    return {s->r_inner, s->r_outer};
+  double reach = 0;
+  if (const auto* s = std::get_if<SphericalCoil>(&coil.shape))
+    reach = s->r_outer;
+  else if (const auto* s = std::get_if<Solenoid>(&coil.shape))
+    reach = std::hypot(s->r_outer, 0.5 * s->length);
+  else if (const auto* s = std::get_if<Racetrack>(&coil.shape))
+    reach = std::hypot(std::hypot(0.5 * s->straight_x + s->inner_radius + s->width,
+                                  0.5 * s->straight_y + s->inner_radius + s->width),
+                       0.5 * s->height);
+  return {std::max(0.0, c - reach), c + reach};
+}
+
 std::pair<double, double> radial_range(const Part3D& part) {
   if (const auto* seg = std::get_if<SphericalSegment>(&part.shape))
     if (part.placement.translation.norm() == 0)
@@ -172,6 +189,11 @@ CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eige
     part.placement = part.placement.rotated(axis, angle_rad, point);
     out.regions[i].magnetization = out.regions[i].magnetization.rotated(r, point);
   }
+  for (auto& coil : out.geometry3d.coils)
+    if (coil.group == group) {
+      found = true;
+      coil.placement = coil.placement.rotated(axis, angle_rad, point);
+    }
   if (!found) {
     std::string groups;
     for (const auto& p : spec.geometry3d.parts)
@@ -195,6 +217,13 @@ StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
       continue; // air regions (mesh aids) do not feel forces
     const auto [lo, hi] = radial_range(part);
     if (in_group(part, group))
+      group_lo = std::min(group_lo, lo), group_hi = std::max(group_hi, hi);
+    else
+      rest_lo = std::min(rest_lo, lo), rest_hi = std::max(rest_hi, hi);
+  }
+  for (const auto& coil : spec.geometry3d.coils) {
+    const auto [lo, hi] = coil_radial_range(coil);
+    if (coil.group == group)
       group_lo = std::min(group_lo, lo), group_hi = std::max(group_hi, hi);
     else
       rest_lo = std::min(rest_lo, lo), rest_hi = std::max(rest_hi, hi);

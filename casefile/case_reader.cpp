@@ -207,7 +207,7 @@ ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
 CaseSpec read_case(const std::string& path) {
   const YamlNode root = YamlNode::load_file(path);
   root.allow_keys({"title", "description", "dimension", "unit", "stack_length", "materials",
-                   "regions", "boundary", "mesh", "solver", "probes", "forces", "output"});
+                   "regions", "coils", "boundary", "mesh", "solver", "probes", "forces", "output"});
   CaseSpec c;
   c.file = path;
   c.dimension = root.get_int("dimension", 2);
@@ -239,6 +239,8 @@ CaseSpec read_case(const std::string& path) {
     read_regions_2d(regions, c, lib);
   else
     read_regions_3d(regions, c, lib);
+  if (root.has("coils"))
+    read_coils_3d(root.at("coils"), c);
 
   if (root.has("solver"))
     read_solver(root.at("solver"), c);
@@ -254,8 +256,9 @@ CaseSpec read_case(const std::string& path) {
     read_forces(root.at("forces"), c);
   if (root.has("output")) {
     const auto o = root.at("output");
-    o.allow_keys({"vtu"});
+    o.allow_keys({"vtu", "inductance"});
     c.write_vtu = o.get_bool("vtu", true);
+    c.coil_inductance = o.get_bool("inductance", true);
   }
   return c;
 }

@@ -40,6 +40,8 @@ struct CaseSpec {
   bool write_vtu = true;
   double stack_length = 0; // metres; 0 = report per unit length
   int boundary_line = 0;
+  std::vector<int> coil_lines; // parallel to geometry3d.coils
+  bool coil_inductance = true; // 3D: the inductance matrix (one extra solve per coil)
 };
 
 // Reads and validates a case file. Every problem is an InputError naming file, line, field.

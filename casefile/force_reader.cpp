@@ -61,9 +61,39 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
     }
     if (spec.regions.empty())
       f.at("regions").fail("list at least one region");
+  } else if (type == "box" && dim == 3) {
+    f.allow_keys({"name", "type", "center", "size", "torque_point", "check_size"});
+    spec.kind = ForceSpec::Kind::box;
+    spec.size = read_point3(f.at("size"), s);
+    if (spec.size.minCoeff() <= 0)
+      f.at("size").fail("box sizes must be positive");
+    if (spec.center.norm() + 0.5 * spec.size.norm() >= domain)
+      f.at("size").fail("the surface leaves the meshed domain");
+    if (f.has("check_size")) {
+      spec.check_size = read_point3(f.at("check_size"), s);
+      if (spec.check_size.minCoeff() <= 0)
+        f.at("check_size").fail("box sizes must be positive");
+      if (spec.center.norm() + 0.5 * spec.check_size.norm() >= domain)
+        f.at("check_size").fail("the surface leaves the meshed domain");
+    }
+  } else if (type == "lorentz" && dim == 3) {
+    f.allow_keys({"name", "type", "coils", "torque_point"});
+    spec.kind = ForceSpec::Kind::lorentz;
+    for (const auto& r : f.at("coils").items()) {
+      const std::string name = r.as_string();
+      bool found = false;
+      for (const auto& coil : c.geometry3d.coils)
+        if (coil.name == name)
+          found = true;
+      if (!found)
+        r.fail("no coil named '" + name + "'");
+      spec.regions.push_back(name);
+    }
+    if (spec.regions.empty())
+      f.at("coils").fail("list at least one coil");
   } else {
     f.at("type").fail("unknown force type '" + type + "' for dimension " + std::to_string(dim) +
-                      (dim == 2 ? " (circle, band, lorentz)" : " (sphere)"));
+                      (dim == 2 ? " (circle, band, lorentz)" : " (sphere, box, lorentz)"));
   }
   return spec;
 }

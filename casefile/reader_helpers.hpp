@@ -28,5 +28,7 @@ void read_region_material(const YamlNode& region, const CaseSpec& c, const Mater
 // Region readers for each dimension: append parts and region specs to the case.
 void read_regions_2d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary& lib);
 void read_regions_3d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary& lib);
+// The coils: section of a 3D case (after the regions: names must not collide).
+void read_coils_3d(const YamlNode& coils, CaseSpec& c);
 
 } // namespace magfem

@@ -6,13 +6,10 @@
 #include <variant>
 #include <vector>
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
+#include "mesh/coil3d.hpp"
+#include "mesh/placement3d.hpp"
 
 namespace magfem {
-
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
 
 // rho in [r_inner, r_outer], theta in [theta_min, theta_max], phi in [phi_min, phi_max] about
 // the local origin. Covers solid spheres (r_inner = 0, full ranges), shells, hemispheres
@@ -35,23 +32,6 @@ struct Box {
 };
 
 using Shape3D = std::variant<SphericalSegment, Cylinder, Box>;
-
-// x_global = rotation * x_local + translation.
-struct Placement {
-  Mat3 rotation = Mat3::Identity();
-  Vec3 translation = Vec3::Zero();
-
-  Vec3 to_global(const Vec3& x_local) const { return rotation * x_local + translation; }
-  Vec3 to_local(const Vec3& x_global) const {
-    return rotation.transpose() * (x_global - translation);
-  }
-  // Rigid rotation by `angle` (right-hand rule) about `axis` through `point`, applied after
-  // this placement.
-  Placement rotated(const Vec3& axis, double angle, const Vec3& point) const {
-    const Mat3 r = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-    return {r * rotation, r * (translation - point) + point};
-  }
-};
 
 struct Part3D {
   std::string name;
@@ -82,6 +62,7 @@ struct MeshOptions3D {
 
 struct Geometry3D {
   std::vector<Part3D> parts;
+  std::vector<Coil3D> coils; // not meshed: they enter through their source field
   OuterBoundary3D outer;
   MeshOptions3D options;
 };

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/constants.hpp"
+#include "solver/coil_source3d.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -64,8 +65,18 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
     for (const auto& q : tet_rule(5)) {
       const double dv = q.weight * field.volume_density(t, q.bary);
       const Eigen::Vector3d h = field.H(t, q.bary);
-      const double w = in_shell ? 0.5 * mu0 * h.dot(shell.metric<3>(field.point(t, q.bary)) * h)
-                                : energy_density(mat, h);
+      double w = 0;
+      if (!in_shell) {
+        w = energy_density(mat, h);
+      } else if (problem.source && problem.source->active()) {
+        // Physical H' = H_s(x') + J^-1 (-grad phi), energy density times |det J|.
+        const Eigen::Vector3d x = field.point(t, q.bary);
+        const Eigen::Vector3d hp =
+            problem.source->field->H(shell.map(x)) + shell.inverse_jacobian(x) * h;
+        w = 0.5 * mu0 * hp.squaredNorm() * shell.det_jacobian(x);
+      } else {
+        w = 0.5 * mu0 * h.dot(shell.metric<3>(field.point(t, q.bary)) * h);
+      }
       reg.volume_m3 += dv;
       reg.energy_J += dv * w;
     }

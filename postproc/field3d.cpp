@@ -1,6 +1,7 @@
 #include "postproc/field3d.hpp"
 
 #include "core/constants.hpp"
+#include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 
 namespace magfem {
@@ -63,10 +64,28 @@ Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) con
     count = tet_gradients(dofs_.order(), g, bary, grad.data());
   }
   const int* dof = dofs_.element_dofs(t);
+  const CoilSource3D* src = problem_.source;
+  const bool coils = src && src->active();
+  const bool total = coils && src->is_total(t);
   Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)
-    grad_phi += phi_[dof[i]] * grad[i];
+    grad_phi += (phi_[dof[i]] + (total ? src->offset[dof[i]] : 0.0)) * grad[i];
+  if (coils && !total && !problem_.is_shell(t))
+    return src->field->H(point(t, bary)) - grad_phi;
   return -grad_phi;
+}
+
+int Field3D::shape_gradients(std::size_t t, const std::array<double, 4>& bary,
+                             std::array<Eigen::Vector3d, 10>& grad, Eigen::Vector3d& x) const {
+  if (dofs_.is_curved(t)) {
+    tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
+    return 10;
+  }
+  const auto& tet = problem_.mesh->tets[t];
+  const auto& p = problem_.mesh->nodes;
+  x = bary[0] * p[tet[0]] + bary[1] * p[tet[1]] + bary[2] * p[tet[2]] + bary[3] * p[tet[3]];
+  return tet_gradients(dofs_.order(), TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]),
+                       bary, grad.data());
 }
 
 Eigen::Vector3d Field3D::magnetization(std::size_t t, const Eigen::Vector3d& x) const {

@@ -24,7 +24,9 @@ public:
   const Eigen::VectorXd& phi() const { return phi_; }
 
   double potential(std::size_t t, const std::array<double, 4>& bary) const;
-  // H = -grad phi in A/m.
+  // H = H_0 - grad phi in A/m: H_0 is the coils' source field in reduced regions and the
+  // gradient of the source potential in total ones (coil_source3d.hpp); zero without coils.
+  // Shell tets: -grad phi in the mesh's (mapped) coordinates, without the source.
   Eigen::Vector3d H(std::size_t t, const std::array<double, 4>& bary) const;
   // B = mu(|H|^2) H + B_r m_hat(x) in T, from the region's law.
   Eigen::Vector3d B(std::size_t t, const std::array<double, 4>& bary) const;
@@ -35,6 +37,11 @@ public:
   // Volume element of tet t at bary relative to the barycentric measure (weights of
   // tet_rule sum to 1): the tet volume for straight tets, det J / 6 for curved ones.
   double volume_density(std::size_t t, const std::array<double, 4>& bary) const;
+
+  // Gradients of the element's shape functions at bary (isoparametric for curved tets);
+  // returns their number and the point in x.
+  int shape_gradients(std::size_t t, const std::array<double, 4>& bary,
+                      std::array<Eigen::Vector3d, 10>& grad, Eigen::Vector3d& x) const;
 
   // Volume-weighted average of the element B values at every DOF point (shell excluded;
   // DOFs touched only by the shell get zero). Computed once and cached by the caller.

@@ -13,15 +13,18 @@ struct ForceSpec {
   enum class Kind {
     circle,  // 2D: Maxwell stress tensor on a circle in air (force on what it encloses)
     band,    // 2D: Arkkio's band average of the stress tensor over an air annulus
-    lorentz, // 2D: integral of J x B over current-carrying regions
-    sphere   // 3D: Maxwell stress tensor on a sphere in air (force on what it encloses)
+    lorentz, // integral of J x B over current-carrying regions (2D) or coils (3D)
+    sphere,  // 3D: Maxwell stress tensor on a sphere in air (force on what it encloses)
+    box      // 3D: Maxwell stress tensor on an axis-aligned box surface in air
   };
   std::string name;
   Kind kind = Kind::sphere;
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   double radius = 0;                // circle, sphere
   double r_inner = 0, r_outer = 0;  // band
-  std::vector<std::string> regions; // lorentz
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();       // box edge lengths
+  Eigen::Vector3d check_size = Eigen::Vector3d::Zero(); // box: second surface (0 = none)
+  std::vector<std::string> regions; // lorentz: regions (2D) or coils (3D)
   Eigen::Vector3d torque_point = Eigen::Vector3d::Zero();
   double check_radius = 0; // circle, sphere: also evaluate this radius and report the spread
   int line = 0;            // line in the case file, for messages

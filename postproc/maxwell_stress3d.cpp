@@ -1,8 +1,13 @@
 #include "postproc/maxwell_stress3d.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/constants.hpp"
+#include "core/gauss_legendre.hpp"
+#include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 
 namespace magfem {
@@ -39,7 +44,11 @@ std::vector<Eigen::Vector3d> air_recovered_B(const Field3D& field) {
             .volume;
     const int* dof = dofs.element_dofs(t);
     for (int i = 0; i < dofs.dofs_per_element(); ++i) {
-      sum[dof[i]] += vol * field.B(t, tet_dof_nodes[i]);
+      // The coils' free-space field is known exactly: recover only the rest (see B()).
+      Eigen::Vector3d b = field.B(t, tet_dof_nodes[i]);
+      if (const CoilSource3D* src = problem.source; src && src->active())
+        b -= mu0 * src->field->H(field.point(t, tet_dof_nodes[i]));
+      sum[dof[i]] += vol * b;
       weight[dof[i]] += vol;
     }
   }
@@ -67,8 +76,12 @@ Eigen::Vector3d FieldSampler3D::B(const Eigen::Vector3d& x) const {
   if (!is_air(problem.physics(problem.mesh->tet_part[loc->tet])))
     throw std::invalid_argument("Maxwell stress: point " + where(x) +
                                 " is not in air (the surface must lie in air)");
-  return sampling_ == FieldSampling::element ? field_.B(loc->tet, loc->bary)
-                                             : field_.interpolate(recovered_, loc->tet, loc->bary);
+  if (sampling_ == FieldSampling::element)
+    return field_.B(loc->tet, loc->bary);
+  Eigen::Vector3d b = field_.interpolate(recovered_, loc->tet, loc->bary);
+  if (const CoilSource3D* src = problem.source; src && src->active())
+    b += mu0 * src->field->H(x);
+  return b;
 }
 
 std::vector<Eigen::Vector3d> FieldSampler3D::B(const std::vector<Eigen::Vector3d>& xs) const {
@@ -84,6 +97,43 @@ ForceTorque maxwell_stress_sphere_3d(const FieldSampler3D& B, const Eigen::Vecto
   const int n_theta = options.n_theta > 0 ? options.n_theta : default_theta;
   const int n_phi = options.n_phi > 0 ? options.n_phi : 2 * n_theta;
   const std::vector<SurfacePoint> pts = sphere_quadrature(center, radius, n_theta, n_phi);
+  std::vector<Eigen::Vector3d> xs(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    xs[i] = pts[i].x;
+  return maxwell_stress_sum(pts, B.B(xs), torque_point);
+}
+
+std::vector<SurfacePoint> box_quadrature(const Eigen::Vector3d& center, const Eigen::Vector3d& size,
+                                         int n_long) {
+  const double longest = size.maxCoeff();
+  std::vector<SurfacePoint> pts;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const int nu = std::max(8, static_cast<int>(std::ceil(n_long * size[u] / longest)));
+    const int nv = std::max(8, static_cast<int>(std::ceil(n_long * size[v] / longest)));
+    const QuadratureRule ru = gauss_legendre(nu, -0.5 * size[u], 0.5 * size[u]);
+    const QuadratureRule rv = gauss_legendre(nv, -0.5 * size[v], 0.5 * size[v]);
+    for (double side : {-1.0, 1.0})
+      for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+          SurfacePoint p;
+          p.x = center;
+          p.x[axis] += side * 0.5 * size[axis];
+          p.x[u] += ru.x[i];
+          p.x[v] += rv.x[j];
+          p.n = Eigen::Vector3d::Zero();
+          p.n[axis] = side;
+          p.w = ru.w[i] * rv.w[j];
+          pts.push_back(p);
+        }
+  }
+  return pts;
+}
+
+ForceTorque maxwell_stress_box_3d(const FieldSampler3D& B, const Eigen::Vector3d& center,
+                                  const Eigen::Vector3d& size, const Eigen::Vector3d& torque_point,
+                                  int n_long) {
+  const std::vector<SurfacePoint> pts = box_quadrature(center, size, n_long);
   std::vector<Eigen::Vector3d> xs(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
     xs[i] = pts[i].x;

@@ -57,6 +57,14 @@ ForceTorque maxwell_stress_sphere_3d(const FieldSampler3D& B, const Eigen::Vecto
                                      double radius, const Eigen::Vector3d& torque_point,
                                      const StressOptions3D& options = {});
 
+// The same on the surface of an axis-aligned box (centre, edge lengths in metres): for
+// parts that are not round (a pole piece in a narrow gap). Gauss-Legendre on every face,
+// n_long points along the longest edge and proportionally fewer on the shorter ones.
+std::vector<SurfacePoint> box_quadrature(const Eigen::Vector3d& center, const Eigen::Vector3d& size,
+                                         int n_long);
+ForceTorque maxwell_stress_box_3d(const FieldSampler3D& B, const Eigen::Vector3d& center,
+                                  const Eigen::Vector3d& size, const Eigen::Vector3d& torque_point,
+                                  int n_long = 96);
 // Consistency check: the sphere result at two radii, and their relative difference.
 ForceComparison maxwell_stress_two_spheres_3d(const FieldSampler3D& B,
                                               const Eigen::Vector3d& center, double radius_a,

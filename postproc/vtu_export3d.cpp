@@ -1,5 +1,7 @@
 #include "postproc/vtu_export3d.hpp"
 
+#include "solver/coil_source3d.hpp"
+
 namespace magfem {
 
 VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& recovered_B,
@@ -20,9 +22,20 @@ VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& re
     bpm.values.push_back(b.norm());
   }
   g.point_data = {std::move(phi), std::move(bp), std::move(bpm)};
+  const CoilSource3D* src = problem.source;
+  const bool coils = src && src->active();
+  if (coils) {
+    // The coils' free-space field, and the reduced potential's meaning made visible.
+    VtuArray hs{"H_s", 3, {}};
+    for (const auto& x : g.points) {
+      const Eigen::Vector3d h = src->field->H(x);
+      hs.values.insert(hs.values.end(), {h.x(), h.y(), h.z()});
+    }
+    g.point_data.push_back(std::move(hs));
+  }
 
   VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"B", 3, {}},
-      bcm{"|B|", 1, {}}, hc{"H", 3, {}}, mc{"magnetization", 3, {}};
+      bcm{"|B|", 1, {}}, hc{"H", 3, {}}, mc{"magnetization", 3, {}}, jc{"J", 3, {}};
   const int per = dofs.dofs_per_element();
   const int type = dofs.order() == 1 ? 10 : 24;
   const std::array<double, 4> centroid = {0.25, 0.25, 0.25, 0.25};
@@ -44,8 +57,15 @@ VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& re
     bcm.values.push_back(b.norm());
     hc.values.insert(hc.values.end(), {h.x(), h.y(), h.z()});
     mc.values.insert(mc.values.end(), {m.x(), m.y(), m.z()});
+    if (coils) {
+      // Coils are not meshed: J at the centroid shows where the bundles are.
+      const Eigen::Vector3d j = src->field->J(x);
+      jc.values.insert(jc.values.end(), {j.x(), j.y(), j.z()});
+    }
   }
   g.cell_data = {region, material, bc, bcm, hc, mc};
+  if (coils)
+    g.cell_data.push_back(jc);
   return g;
 }
 

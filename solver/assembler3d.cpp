@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "core/constants.hpp"
+#include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
 
@@ -63,7 +64,9 @@ Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs, Assembl
       linear_(problem_is_linear(problem)), pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
   if (options_.threads <= 0)
     options_.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  // The residual at phi = 0 is minus the external load (the remanence).
+  if (problem_.source && problem_.source->active())
+    source_load_ = source_load(-1);
+  // The residual at phi = 0 is minus the external load (remanence and coils).
   Eigen::VectorXd r;
   evaluate(Eigen::VectorXd::Zero(n_eqs_), r, nullptr, TangentKind::newton);
   load_norm_ = r.norm();
@@ -107,6 +110,15 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
       xn[i] = dofs_.dof_points()[dof[i]];
   // grad N_i . grad N_j has degree 2(order-1); the shell metric, nonlinear laws and radial
   // remanence are not polynomial and get the degree-5 rule, as do curved elements.
+  const CoilSource3D* src = problem_.source;
+  const bool coils = src && src->active();
+  const bool total = coils && src->is_total(t);
+  // Reduced nonlinear elements (iron that links a coil) need H_s inside the law; linear
+  // reduced elements take H_s through the precomputed source load.
+  const bool source_inside = coils && !total && !in_shell && mat.is_nonlinear();
+  std::array<double, 10> value;
+  for (int i = 0; i < n; ++i)
+    value[i] = phi_full[dof[i]] + (total ? src->offset[dof[i]] : 0.0);
   const int degree = (in_shell || mat.is_nonlinear() || radial || curved) ? 5 : 2 * (order - 1);
 
   std::fill(re, re + n, 0.0);
@@ -126,7 +138,7 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
     }
     Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
     for (int i = 0; i < n; ++i)
-      grad_phi += phi_full[dof[i]] * grad[i];
+      grad_phi += value[i] * grad[i];
     Eigen::Matrix3d d;
     Eigen::Vector3d flux; // -B (or its shell-metric counterpart)
     if (in_shell) {
@@ -134,7 +146,9 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
       d = mu0 * shell_.metric<3>(x);
       flux = d * grad_phi;
     } else {
-      const Eigen::Vector3d h = -grad_phi;
+      Eigen::Vector3d h = -grad_phi;
+      if (source_inside)
+        h += src->field->H(x);
       double mu = 0, dmu = 0;
       mat.permeability(h.squaredNorm(), mu, dmu);
       flux = -mu * h;
@@ -192,6 +206,8 @@ void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   const std::size_t n_tets = problem_.mesh->n_tets();
   const int n_threads =
       static_cast<int>(std::min<std::size_t>(options_.threads, 1 + n_tets / 20000));
+  if (source_load_.size() > 0)
+    residual = source_load_;
   if (n_threads <= 1) {
     evaluate_range(0, n_tets, phi_full, residual.data(), matrix, kind, false);
     return;
@@ -206,6 +222,113 @@ void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   }
   for (auto& th : pool)
     th.join();
+}
+
+template <class Body> void Assembler3D::parallel_over_tets(const Body& body) const {
+  const std::size_t n_tets = problem_.mesh->n_tets();
+  const int n_threads =
+      static_cast<int>(std::min<std::size_t>(options_.threads, 1 + n_tets / 20000));
+  std::vector<std::thread> pool;
+  for (int k = 0; k < n_threads; ++k) {
+    const std::size_t b = n_tets * k / n_threads, e = n_tets * (k + 1) / n_threads;
+    pool.emplace_back([&, b, e] { body(b, e, n_threads > 1); });
+  }
+  for (auto& th : pool)
+    th.join();
+}
+
+void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
+  const auto& mesh = *problem_.mesh;
+  const CoilSource3D& src = *problem_.source;
+  const int n = dofs_.dofs_per_element();
+  std::fill(re, re + n, 0.0);
+  const Material& mat = *problem_.physics(mesh.tet_part[t]).material;
+  const bool in_shell = problem_.is_shell(t);
+  if (src.is_total(t) || (!in_shell && mat.is_nonlinear()))
+    return;
+  const auto& tet = mesh.tets[t];
+  const auto& nodes = mesh.nodes;
+  const auto g = TetGeometry::of(nodes[tet[0]], nodes[tet[1]], nodes[tet[2]], nodes[tet[3]]);
+  const int* dof = dofs_.element_dofs(t);
+  const bool curved = dofs_.is_curved(t);
+  std::array<Eigen::Vector3d, 10> xn;
+  if (curved)
+    for (int i = 0; i < n; ++i)
+      xn[i] = dofs_.dof_points()[dof[i]];
+  double mu = mu0, dmu = 0;
+  if (!in_shell)
+    mat.permeability(0.0, mu, dmu);
+  std::array<Eigen::Vector3d, 10> grad;
+  // H_s is not polynomial: the degree-5 rule, as for the other non-polynomial integrands.
+  for (const auto& q : tet_rule(5)) {
+    Eigen::Vector3d x;
+    double w = 0;
+    if (curved) {
+      w = q.weight * tet_iso_gradients(xn, q.bary, grad.data(), x);
+    } else {
+      tet_gradients(dofs_.order(), g, q.bary, grad.data());
+      w = q.weight * g.volume;
+      x = q.bary[0] * nodes[tet[0]] + q.bary[1] * nodes[tet[1]] + q.bary[2] * nodes[tet[2]] +
+          q.bary[3] * nodes[tet[3]];
+    }
+    Eigen::Vector3d b;
+    if (in_shell) {
+      const Eigen::Vector3d xp = shell_.map(x);
+      const Eigen::Vector3d hs =
+          coil < 0 ? src.field->H(xp) : src.field->H_per_ampere(coil, xp);
+      b = mu0 * (shell_.det_times_inverse_jacobian(x) * hs);
+    } else {
+      b = mu * (coil < 0 ? src.field->H(x) : src.field->H_per_ampere(coil, x));
+    }
+    for (int i = 0; i < n; ++i)
+      re[i] -= w * grad[i].dot(b);
+  }
+}
+
+Eigen::VectorXd Assembler3D::source_load(int coil) const {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(n_eqs_);
+  const int n = dofs_.dofs_per_element();
+  parallel_over_tets([&](std::size_t b, std::size_t e, bool atomic) {
+    std::array<double, 10> re{};
+    for (std::size_t t = b; t < e; ++t) {
+      element_source(t, coil, re.data());
+      const int* eq = &element_eqs_[t * n];
+      for (int i = 0; i < n; ++i)
+        if (eq[i] >= 0 && re[i] != 0)
+          add_to(load[eq[i]], re[i], atomic);
+    }
+  });
+  return load;
+}
+
+Eigen::VectorXd Assembler3D::current_derivative(const Eigen::VectorXd& u, int coil,
+                                                TangentKind kind) const {
+  Eigen::VectorXd out = source_load(coil);
+  const CoilSource3D& src = *problem_.source;
+  const Eigen::VectorXd phi_full = expand(u);
+  const Eigen::VectorXd& per_ampere = src.offset_per_ampere[coil];
+  const int n = dofs_.dofs_per_element();
+  // Total regions: r depends on the current through u + I Phi_s, so dr/dI = K_e Phi_s.
+  parallel_over_tets([&](std::size_t b, std::size_t e, bool atomic) {
+    std::array<double, 10> re{};
+    std::array<double, 100> ke{};
+    for (std::size_t t = b; t < e; ++t) {
+      if (!src.is_total(t))
+        continue;
+      element(t, phi_full, re.data(), ke.data(), kind);
+      const int* dof = dofs_.element_dofs(t);
+      const int* eq = &element_eqs_[t * n];
+      for (int i = 0; i < n; ++i) {
+        if (eq[i] < 0)
+          continue;
+        double sum = 0;
+        for (int j = 0; j < n; ++j)
+          sum += ke[i * n + j] * per_ampere[dof[j]];
+        add_to(out[eq[i]], sum, atomic);
+      }
+    }
+  });
+  return out;
 }
 
 } // namespace magfem

@@ -40,6 +40,11 @@ public:
   Eigen::VectorXd expand(const Eigen::VectorXd& u) const;
   Eigen::VectorXd restrict_to_free(const Eigen::VectorXd& phi_full) const;
   const SparsePattern& pattern() const { return pattern_; }
+  // d r / d I_coil at u: the load that a unit change of the coil's current adds (reduced
+  // regions: the Biot-Savart field; total regions: the tangent applied to Phi_s per ampere).
+  // The incremental (differential) inductance follows from K du = -this.
+  Eigen::VectorXd current_derivative(const Eigen::VectorXd& u, int coil,
+                                     TangentKind kind = TangentKind::newton) const;
   const std::vector<int>& dof_to_equation() const { return dof_to_eq_; }
 
   // Element residual re (n) and, if ke != nullptr, tangent ke (n x n, row major) of tet t at
@@ -48,6 +53,10 @@ public:
                TangentKind kind) const;
 
 private:
+  // -integral mu H_0 . grad N_i over the reduced elements (H_0 = coil field), per equation.
+  Eigen::VectorXd source_load(int coil) const; // coil < 0: all coils at their currents
+  void element_source(std::size_t t, int coil, double* re) const;
+  template <class Body> void parallel_over_tets(const Body& body) const;
   void evaluate_range(std::size_t begin, std::size_t end, const Eigen::VectorXd& phi_full,
                       double* residual, Eigen::SparseMatrix<double>* matrix, TangentKind kind,
                       bool atomic) const;
@@ -61,6 +70,7 @@ private:
   std::vector<int> element_eqs_;
   bool linear_ = true;
   SparsePattern pattern_;
+  Eigen::VectorXd source_load_; // empty without coils
   double load_norm_ = 0;
 };
 

@@ -34,6 +34,39 @@ struct ShellTransform {
       return df * pt + (f * f / (r * r * df)) * pr;
     }
   }
+
+  // The physical point x' = (f(r)/r) x that the shell point x stands for.
+  Eigen::Vector3d map(const Eigen::Vector3d& x) const {
+    const double r = x.norm();
+    return (r_inner * (r_outer - r_inner) / ((r_outer - r) * r)) * x;
+  }
+  // |det J| J^-1 (J is symmetric): a physical vector field v' enters the shell's weak form as
+  // integral v'(x') . J^-T grad N |det J| dx = integral (|det J| J^-1 v') . grad N dx.
+  Eigen::Matrix3d det_times_inverse_jacobian(const Eigen::Vector3d& x) const {
+    const double r = x.norm();
+    const double gap = r_outer - r;
+    const Eigen::Vector3d e = x / r;
+    const Eigen::Matrix3d pr = e * e.transpose();
+    const double f = r_inner * (r_outer - r_inner) / gap;
+    const double df = f / gap;
+    return (f / r) * df * (Eigen::Matrix3d::Identity() - pr) + (f / r) * (f / r) * pr;
+  }
+  // J^-1 (maps -grad phi in the mesh to the physical -grad' phi) and |det J|.
+  Eigen::Matrix3d inverse_jacobian(const Eigen::Vector3d& x) const {
+    const double r = x.norm();
+    const double gap = r_outer - r;
+    const Eigen::Vector3d e = x / r;
+    const Eigen::Matrix3d pr = e * e.transpose();
+    const double f = r_inner * (r_outer - r_inner) / gap;
+    const double df = f / gap;
+    return (r / f) * (Eigen::Matrix3d::Identity() - pr) + (1 / df) * pr;
+  }
+  double det_jacobian(const Eigen::Vector3d& x) const {
+    const double r = x.norm();
+    const double gap = r_outer - r;
+    const double f = r_inner * (r_outer - r_inner) / gap;
+    return (f / r) * (f / r) * (f / gap);
+  }
 };
 
 } // namespace magfem

@@ -1,0 +1,64 @@
+#pragma once
+// The coil part of the 3D pipeline: the coils' source field for the solver, the check that
+// coils lie in air, and the per-coil results (resistance, loss, flux linkage, Lorentz force
+// and torque, inductance matrix) for summary.json and forces.csv.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "app/force_results.hpp"
+#include "mesh/coil3d.hpp"
+#include "solver/source_field3d.hpp"
+
+namespace magfem {
+
+class CoilField;
+struct Run3D;
+class Assembler3D;
+
+// SourceField3D over the case's coils (sources/coil_field.hpp).
+class CaseCoils : public SourceField3D {
+public:
+  explicit CaseCoils(const std::vector<Coil3D>& coils);
+  ~CaseCoils() override;
+  int n_coils() const override { return static_cast<int>(fields_.size()); }
+  double current(int coil) const override { return coils_[coil].current; }
+  double turns(int coil) const override { return coils_[coil].turns; }
+  Eigen::Vector3d H(const Eigen::Vector3d& x) const override;
+  Eigen::Vector3d H_per_ampere(int coil, const Eigen::Vector3d& x) const override;
+  Eigen::Vector3d J(const Eigen::Vector3d& x) const override;
+  const CoilField& field(int coil) const { return *fields_[coil]; }
+  const Coil3D& coil(int k) const { return coils_[k]; }
+
+private:
+  std::vector<Coil3D> coils_;
+  std::vector<std::unique_ptr<CoilField>> fields_;
+};
+
+struct CoilResult {
+  std::string name;
+  double turns = 0, current_A = 0, resistance_ohm = 0, power_W = 0, flux_linkage_Wb = 0;
+  Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque_Nm = Eigen::Vector3d::Zero(); // about the origin
+};
+
+struct CoilResults {
+  std::vector<CoilResult> coils;
+  Eigen::MatrixXd inductance_H; // empty if not computed
+  std::vector<std::string> warnings;
+};
+
+// Exit-2 error (InputError naming the coil's line) if a coil overlaps a meshed part.
+void check_coils_in_air(const Run3D& run);
+// u: the converged free-DOF solution.
+CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
+                                 const Eigen::VectorXd& u);
+// Lorentz force specs of the case (sums over the named coils) as force results.
+std::vector<ForceResult> coil_lorentz_forces(const Run3D& run);
+nlohmann::ordered_json coil_results_json(const CoilResults& results);
+std::string describe_coils(const CoilResults& results);
+
+} // namespace magfem
