@@ -1,6 +1,7 @@
 #include "sources/coil_field.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -29,9 +30,9 @@ std::array<Corner, 4> racetrack_corners(const Racetrack& r) {
   return {{{hx, -hy, -0.5 * pi}, {hx, hy, 0.0}, {-hx, hy, 0.5 * pi}, {-hx, -hy, pi}}};
 }
 
-// A straight side: start of its inner-bottom edge, current direction, outward... in the
-// StraightBundle convention (e_q = t x e_p = +z, so e_p points inwards for a counter-clockwise
-// current), and length.
+// A straight side in the StraightBundle convention: the corner of its box where the current
+// enters, on the outer face and the bottom (z = -height/2); the current direction t; e_p
+// pointing inwards, so that e_q = t x e_p = +z for a counter-clockwise current; its length.
 struct Side {
   Vec3 origin, t, e_p;
   double length;
