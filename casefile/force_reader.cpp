@@ -1,5 +1,6 @@
 #include "casefile/force_reader.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "casefile/reader_helpers.hpp"
@@ -12,6 +13,21 @@ Eigen::Vector3d read_point(const YamlNode& n, double s, int dim) {
     return read_point3(n, s);
   const Eigen::Vector2d p = read_point2(n, s);
   return {p.x(), p.y(), 0};
+}
+
+// A non-empty list of names, each one of `known` (what: "region" or "coil").
+std::vector<std::string> read_names(const YamlNode& list, const std::vector<std::string>& known,
+                                    const std::string& what) {
+  std::vector<std::string> out;
+  for (const auto& r : list.items()) {
+    const std::string name = r.as_string();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      r.fail("no " + what + " named '" + name + "'");
+    out.push_back(name);
+  }
+  if (out.empty())
+    list.fail("list at least one " + what);
+  return out;
 }
 
 ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
@@ -49,18 +65,10 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
   } else if (type == "lorentz" && dim == 2) {
     f.allow_keys({"name", "type", "regions", "torque_point"});
     spec.kind = ForceSpec::Kind::lorentz;
-    for (const auto& r : f.at("regions").items()) {
-      const std::string name = r.as_string();
-      bool found = false;
-      for (const auto& reg : c.regions)
-        if (reg.name == name)
-          found = true;
-      if (!found)
-        r.fail("no region named '" + name + "'");
-      spec.regions.push_back(name);
-    }
-    if (spec.regions.empty())
-      f.at("regions").fail("list at least one region");
+    std::vector<std::string> known;
+    for (const auto& reg : c.regions)
+      known.push_back(reg.name);
+    spec.regions = read_names(f.at("regions"), known, "region");
   } else if (type == "box" && dim == 3) {
     f.allow_keys({"name", "type", "center", "size", "torque_point", "check_size"});
     spec.kind = ForceSpec::Kind::box;
@@ -79,18 +87,10 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
   } else if (type == "lorentz" && dim == 3) {
     f.allow_keys({"name", "type", "coils", "torque_point"});
     spec.kind = ForceSpec::Kind::lorentz;
-    for (const auto& r : f.at("coils").items()) {
-      const std::string name = r.as_string();
-      bool found = false;
-      for (const auto& coil : c.geometry3d.coils)
-        if (coil.name == name)
-          found = true;
-      if (!found)
-        r.fail("no coil named '" + name + "'");
-      spec.regions.push_back(name);
-    }
-    if (spec.regions.empty())
-      f.at("coils").fail("list at least one coil");
+    std::vector<std::string> known;
+    for (const auto& coil : c.geometry3d.coils)
+      known.push_back(coil.name);
+    spec.regions = read_names(f.at("coils"), known, "coil");
   } else {
     f.at("type").fail("unknown force type '" + type + "' for dimension " + std::to_string(dim) +
                       (dim == 2 ? " (circle, band, lorentz)" : " (sphere, box, lorentz)"));

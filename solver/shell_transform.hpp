@@ -43,29 +43,36 @@ struct ShellTransform {
   // |det J| J^-1 (J is symmetric): a physical vector field v' enters the shell's weak form as
   // integral v'(x') . J^-T grad N |det J| dx = integral (|det J| J^-1 v') . grad N dx.
   Eigen::Matrix3d det_times_inverse_jacobian(const Eigen::Vector3d& x) const {
-    const double r = x.norm();
-    const double gap = r_outer - r;
-    const Eigen::Vector3d e = x / r;
-    const Eigen::Matrix3d pr = e * e.transpose();
-    const double f = r_inner * (r_outer - r_inner) / gap;
-    const double df = f / gap;
-    return (f / r) * df * (Eigen::Matrix3d::Identity() - pr) + (f / r) * (f / r) * pr;
+    const Radial q = radial(x);
+    return (q.f / q.r) * q.df * q.pt + (q.f / q.r) * (q.f / q.r) * q.pr;
   }
-  // J^-1 (maps -grad phi in the mesh to the physical -grad' phi) and |det J|.
+  // J^-1 (maps -grad phi in the mesh to the physical -grad' phi).
   Eigen::Matrix3d inverse_jacobian(const Eigen::Vector3d& x) const {
-    const double r = x.norm();
-    const double gap = r_outer - r;
-    const Eigen::Vector3d e = x / r;
-    const Eigen::Matrix3d pr = e * e.transpose();
-    const double f = r_inner * (r_outer - r_inner) / gap;
-    const double df = f / gap;
-    return (r / f) * (Eigen::Matrix3d::Identity() - pr) + (1 / df) * pr;
+    const Radial q = radial(x);
+    return (q.r / q.f) * q.pt + (1 / q.df) * q.pr;
   }
+  // |det J| = (f/r)^2 f'.
   double det_jacobian(const Eigen::Vector3d& x) const {
-    const double r = x.norm();
-    const double gap = r_outer - r;
-    const double f = r_inner * (r_outer - r_inner) / gap;
-    return (f / r) * (f / r) * (f / gap);
+    const Radial q = radial(x);
+    return (q.f / q.r) * (q.f / q.r) * q.df;
+  }
+
+private:
+  // r, f(r), f'(r) and the radial/tangential projectors at a 3D shell point.
+  struct Radial {
+    double r, f, df;
+    Eigen::Matrix3d pr, pt;
+  };
+  Radial radial(const Eigen::Vector3d& x) const {
+    Radial q;
+    q.r = x.norm();
+    const double gap = r_outer - q.r;
+    const Eigen::Vector3d e = x / q.r;
+    q.pr = e * e.transpose();
+    q.pt = Eigen::Matrix3d::Identity() - q.pr;
+    q.f = r_inner * (r_outer - r_inner) / gap;
+    q.df = q.f / gap;
+    return q;
   }
 };
 

@@ -5,6 +5,8 @@
 // integrated over the arc angle numerically (Gauss-Legendre, split at the field point's angle
 // and graded towards it when the filament passes close); the cross-section integral uses the
 // rules of source_quadrature.hpp. The azimuthal component is exact in closed form.
+#include <vector>
+
 #include "mesh/placement3d.hpp"
 #include "sources/coil_field_options.hpp"
 #include "sources/source_quadrature.hpp"
@@ -26,11 +28,20 @@ private:
     double h_rho = 0, h_phi = 0, h_z = 0;
   };
   struct PointFrame; // the field point in the ring's cylindrical coordinates, with its arc rules
-  void add_arc(double a, double z, double di, const PointFrame& f, ArcSums& sums) const;
+  // n_psi: order of the plain arc rule, or 0 to choose it for this filament.
+  void add_arc(double a, double z, double di, const PointFrame& f, int n_psi, ArcSums& sums) const;
+
+  // Gauss nodes of orders 1..far_order_max on [phi0, phi1]: weights and cos, sin of the angle.
+  struct ArcNodes {
+    std::vector<double> w, cos_phi, sin_phi;
+  };
 
   Vec3 center_;
   double phi0_, phi1_, a0_, a1_, z0_, z1_;
   double current_density_; // A/m^2
+  int graded_order_;       // points per panel of the graded arc rules
+  int n_entire_;           // arc points the entire factor cos(psi) needs at the tolerance
+  std::vector<ArcNodes> arc_nodes_;
   CoilFieldOptions options_;
 };
 

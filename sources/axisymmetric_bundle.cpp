@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 
@@ -28,15 +29,15 @@ ZonalExpansion make_expansion(ZonalExpansion::Kind kind, double center, double r
 
 AxisymmetricBundle::AxisymmetricBundle(const SphericalCoil& c, double current,
                                        const CoilFieldOptions& options)
-    : spherical_(true), rect_{c.r_inner, c.r_outer, c.alpha_min, c.alpha_max},
-      options_(options) {
-  if (!(c.r_inner >= 0 && c.r_outer > c.r_inner && c.alpha_min >= 0 &&
-        c.alpha_max > c.alpha_min && c.alpha_max <= pi)) {
+    : spherical_(true), rect_{c.r_inner, c.r_outer, c.alpha_min, c.alpha_max}, options_(options) {
+  check_options(options);
+  if (!(c.r_inner >= 0 && c.r_outer > c.r_inner && c.alpha_min >= 0 && c.alpha_max > c.alpha_min &&
+        c.alpha_max <= pi)) {
     throw std::invalid_argument("SphericalCoil: need 0 <= r_inner < r_outer and "
                                 "0 <= alpha_min < alpha_max <= pi");
   }
-  current_density_ =
-      current / (0.5 * (c.r_outer * c.r_outer - c.r_inner * c.r_inner) * (c.alpha_max - c.alpha_min));
+  current_density_ = current / (0.5 * (c.r_outer * c.r_outer - c.r_inner * c.r_inner) *
+                                (c.alpha_max - c.alpha_min));
   if (options.use_expansions) {
     build_exterior();
     if (c.r_inner > 0) {
@@ -52,6 +53,7 @@ AxisymmetricBundle::AxisymmetricBundle(const Solenoid& c, double current,
                                        const CoilFieldOptions& options)
     : spherical_(false), rect_{c.r_inner, c.r_outer, -0.5 * c.length, 0.5 * c.length},
       options_(options) {
+  check_options(options);
   if (!(c.r_inner >= 0 && c.r_outer > c.r_inner && c.length > 0)) {
     throw std::invalid_argument("Solenoid: need 0 <= r_inner < r_outer and length > 0");
   }
@@ -203,7 +205,8 @@ void AxisymmetricBundle::far_orders(double rho, double z, int& nu, int& nv) cons
   const double mu = 0.5 * (rect_.u0 + rect_.u1), hu = 0.5 * (rect_.u1 - rect_.u0);
   const double mv = 0.5 * (rect_.v0 + rect_.v1), hv = 0.5 * (rect_.v1 - rect_.v0);
   if (!spherical_) {
-    nu = gauss_order_for(mu, hu, rho, interval_distance(z, rect_.v0, rect_.v1), tol, n_min, n_max);
+    nu = gauss_order_for(mu, hu, rho, interval_distance(z, rect_.v0, rect_.v1), tol, n_min, n_max,
+                         2, 0.0);
     nv = gauss_order_for(mv, hv, z, interval_distance(rho, rect_.u0, rect_.u1), tol, n_min, n_max);
     return;
   }
@@ -216,7 +219,7 @@ void AxisymmetricBundle::far_orders(double rho, double z, int& nu, int& nv) cons
       image = other;
     }
   }
-  nu = gauss_order_for(mu, hu, r * std::cos(delta), r * std::sin(delta), tol, n_min, n_max);
+  nu = gauss_order_for(mu, hu, r * std::cos(delta), r * std::sin(delta), tol, n_min, n_max, 3, 0.0);
   const double eta = r > 0 ? interval_distance(std::log(r), std::log(rect_.u0), std::log(rect_.u1))
                            : std::numeric_limits<double>::infinity();
   // The integrand also carries sin^2(v) and cos(v) factors, entire but growing off the real
@@ -250,13 +253,16 @@ MeridianField AxisymmetricBundle::H_integrated(double rho, double z) const {
     p.u = std::hypot(rho, z);
     p.v = std::atan2(rho, z);
     p.su = 1.0;
-    p.sv = std::clamp(p.u, rect_.u0, rect_.u1);
+    // Arc length per radian; kept away from zero for a cap reaching the sphere's centre, where
+    // the map degenerates.
+    p.sv = std::max(std::clamp(p.u, rect_.u0, rect_.u1), 1e-3 * rect_.u1);
   } else {
     p.u = rho;
     p.v = z;
     p.su = p.sv = 1.0;
   }
   p.width = meridian_distance(rho, z);
+  p.singular = p.width == 0;
   p.n = options_.near_order;
   thread_local std::vector<Node2> nodes;
   nodes.clear();

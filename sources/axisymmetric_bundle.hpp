@@ -5,7 +5,7 @@
 // height r cos(alpha) and area element r dr dalpha; (rho, z) for the solenoid. Away from it the
 // zonal expansions (zonal_expansion.hpp) answer when they converge, otherwise a tensor Gauss
 // rule whose order follows the distance; near and inside, the split + Duffy rule of
-// source_quadrature.hpp. All in the coil's local frame, per ampere-turn scaled by `turns`.
+// source_quadrature.hpp. All in the coil's local frame, for the bundle's total current.
 #include <vector>
 
 #include "mesh/coil3d.hpp"

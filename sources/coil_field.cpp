@@ -74,7 +74,7 @@ CoilField::CoilField(const Coil3D& coil, const CoilFieldOptions& options) : coil
 
 Vec3 CoilField::H_local_per_ampere(const Vec3& xl) const {
   if (axisymmetric_) {
-    const double rho = std::hypot(xl.x(), xl.y());
+    const double rho = std::sqrt(xl.x() * xl.x() + xl.y() * xl.y()); // hot path: not hypot
     const MeridianField m = axisymmetric_->H(rho, xl.z());
     Vec3 h(0.0, 0.0, m.h_z);
     if (rho > 0) {
@@ -150,7 +150,8 @@ Vec3 CoilField::current_density(const Vec3& x) const {
 
 double CoilField::cross_section_area() const {
   if (const auto* c = std::get_if<SphericalCoil>(&coil_.shape)) {
-    return 0.5 * (c->r_outer * c->r_outer - c->r_inner * c->r_inner) * (c->alpha_max - c->alpha_min);
+    return 0.5 * (c->r_outer * c->r_outer - c->r_inner * c->r_inner) *
+           (c->alpha_max - c->alpha_min);
   }
   if (const auto* s = std::get_if<Solenoid>(&coil_.shape)) {
     return (s->r_outer - s->r_inner) * s->length;
@@ -209,8 +210,8 @@ std::vector<CoilQuadraturePoint> CoilField::volume_quadrature(int order) const {
   const double j = coil_.turns / cross_section_area();
   std::vector<CoilQuadraturePoint> out;
   auto add = [&](const Vec3& xl, double w) {
-    out.push_back({coil_.placement.to_global(xl), w,
-                   coil_.placement.rotation * (j * direction_local(xl))});
+    out.push_back(
+        {coil_.placement.to_global(xl), w, coil_.placement.rotation * (j * direction_local(xl))});
   };
   // Axisymmetric coils: Gauss in the meridian parameters (in cos(alpha) for the spherical coil,
   // so that r^2 dr dcos(alpha) is polynomial and the volume exact), equally spaced azimuths
@@ -221,8 +222,9 @@ std::vector<CoilQuadraturePoint> CoilField::volume_quadrature(int order) const {
     const auto* s = std::get_if<Solenoid>(&coil_.shape);
     const QuadratureRule gu = c ? gauss_legendre(order, c->r_inner, c->r_outer)
                                 : gauss_legendre(order, s->r_inner, s->r_outer);
-    const QuadratureRule gv = c ? gauss_legendre(order, std::cos(c->alpha_max), std::cos(c->alpha_min))
-                                : gauss_legendre(order, -0.5 * s->length, 0.5 * s->length);
+    const QuadratureRule gv =
+        c ? gauss_legendre(order, std::cos(c->alpha_max), std::cos(c->alpha_min))
+          : gauss_legendre(order, -0.5 * s->length, 0.5 * s->length);
     for (std::size_t a = 0; a < gu.x.size(); ++a) {
       for (std::size_t b = 0; b < gv.x.size(); ++b) {
         double rho, z, w;

@@ -25,8 +25,8 @@ Vec3 CoilSet::H(const Vec3& x) const {
 
 void CoilSet::H_at(const std::vector<Vec3>& points, std::vector<Vec3>& out, int threads) const {
   out.assign(points.size(), Vec3::Zero());
-  std::size_t n_threads =
-      threads > 0 ? static_cast<std::size_t>(threads) : std::max(1u, std::thread::hardware_concurrency());
+  std::size_t n_threads = threads > 0 ? static_cast<std::size_t>(threads)
+                                      : std::max(1u, std::thread::hardware_concurrency());
   // Blocks of a few hundred points keep the threads busy to the end (the cost per point varies
   // by orders of magnitude between far and near points) at negligible scheduling cost.
   constexpr std::size_t block = 256;

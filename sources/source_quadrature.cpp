@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <complex>
+#include <initializer_list>
 
 namespace magfem {
 
@@ -18,25 +18,35 @@ const QuadratureRule& cached_gauss(int n) {
   return rules[static_cast<std::size_t>(std::clamp(n, 1, max_cached_gauss_order) - 1)];
 }
 
-int gauss_order_for(double mid, double half, double re, double im, double tol, int n_min,
-                    int n_max) {
+int gauss_order_for(double mid, double half, double re, double im, double tol, int n_min, int n_max,
+                    int poly_degree, double poly_root) {
   if (!(half > 0)) {
     return n_min;
   }
-  const std::complex<double> w((re - mid) / half, std::abs(im) / half);
-  const std::complex<double> z = w + std::sqrt(w - 1.0) * std::sqrt(w + 1.0);
-  const double rho = std::max(std::abs(z), 1.0 / std::abs(z));
-  if (!(rho > 1.0 + 1e-12)) {
+  // The ellipse with foci -1, 1 through w: semi-major axis (|w - 1| + |w + 1|) / 2 = cosh(ln rho).
+  const double x = (re - mid) / half, y = im / half;
+  const double a =
+      0.5 * (std::sqrt((x - 1.0) * (x - 1.0) + y * y) + std::sqrt((x + 1.0) * (x + 1.0) + y * y));
+  const double rho_max = a + std::sqrt(std::max(a * a - 1.0, 0.0));
+  if (!(rho_max > 1.0 + 1e-12)) {
     return n_max + 1;
   }
-  // The constant in front of rho^-2n grows like 1/(rho - 1) as the singularity approaches
-  // (the integrand's size on the ellipse); the extra 2 is the margin measured in tests/sources.
-  const double n = (std::log(1.0 / tol) + 2.0 + std::log(1.0 + 1.0 / (rho - 1.0))) /
-                   (2.0 * std::log(rho));
-  if (!(n <= n_max)) {
+  // Error ~ M(rho) rho^-2n, M(rho) the integrand's size on the ellipse relative to the
+  // interval: 1 + 1/(rho - 1) from the singularity, and (|z - root| / |x - root|)^degree from a
+  // polynomial factor (a^2 of a loop, the Jacobian r). Since ln M grows at most like
+  // degree ln rho, slower than the 2 n ln rho it is compared with, the largest ellipse is the
+  // best. The extra 2 is the margin measured in tests/sources.
+  double cost = std::log(1.0 / tol) + 2.0 + std::log(1.0 + 1.0 / (rho_max - 1.0));
+  if (poly_degree > 0) {
+    const double semi_major = 0.5 * half * (rho_max + 1.0 / rho_max);
+    const double dist_root = std::max(std::abs(mid - poly_root) - half, 0.05 * half);
+    cost += poly_degree * std::log((std::abs(mid - poly_root) + semi_major) / dist_root);
+  }
+  const double best = cost / (2.0 * std::log(rho_max));
+  if (!(best <= n_max)) {
     return n_max + 1;
   }
-  return std::max(n_min, static_cast<int>(std::ceil(n)));
+  return std::max(n_min, static_cast<int>(std::ceil(best)));
 }
 
 int gauss_order_entire(double type, double half, double tol, int n_min, int n_max) {
@@ -64,16 +74,16 @@ void append_gauss(double a, double b, int n, std::vector<Node1>& out) {
 }
 
 // One side of a graded rule: from x_s (singular end) to x_end.
-void append_graded_side(double x_s, double x_end, double width, int n, double ratio,
-                        int min_panels, bool square_innermost, std::vector<Node1>& out) {
+void append_graded_side(double x_s, double x_end, double width, int n, double ratio, int min_panels,
+                        bool square_innermost, std::vector<Node1>& out) {
   const double length = std::abs(x_end - x_s);
   if (length <= 0) {
     return;
   }
   int panels = min_panels;
   if (width > 0 && width < length) {
-    panels = std::max(panels, 1 + static_cast<int>(std::ceil(std::log(length / width) /
-                                                              std::log(1.0 / ratio))));
+    panels = std::max(
+        panels, 1 + static_cast<int>(std::ceil(std::log(length / width) / std::log(1.0 / ratio))));
   } else if (width <= 0) {
     panels = std::max(panels, 1);
   }
@@ -90,8 +100,8 @@ void append_graded_side(double x_s, double x_end, double width, int n, double ra
       const QuadratureRule& g = cached_gauss(n);
       for (std::size_t i = 0; i < g.x.size(); ++i) {
         const double sigma = 0.5 * (1.0 + g.x[i]);
-        out.push_back({x_s + (outer - x_s) * sigma * sigma,
-                       std::abs(outer - x_s) * g.w[i] * sigma});
+        out.push_back(
+            {x_s + (outer - x_s) * sigma * sigma, std::abs(outer - x_s) * g.w[i] * sigma});
       }
     } else {
       append_gauss(inner, outer, n, out);
@@ -133,13 +143,13 @@ void append_corner_rect(double uc, double vc, double du, double dv, const NearPo
   const double lu = std::abs(du) * p.su, lv = std::abs(dv) * p.sv;
   const double side = std::min(lu, lv);
   if (side <= 1e-12 * std::max(lu, lv)) {
-    return; // a sliver of zero area: the split point lies on this edge
+    return; // the split point lies on (or within 1e-12 of) this edge: nothing to integrate
   }
   // Square part.
   const double su = std::copysign(side / p.su, du), sv = std::copysign(side / p.sv, dv);
   std::vector<Node1> radial;
   radial.reserve(64);
-  append_graded_rule(0.0, 1.0, 0.0, p.width / side, p.n, 0.2, 1, true, radial);
+  append_graded_rule(0.0, 1.0, 0.0, p.width / side, p.n, 0.2, 1, p.singular, radial);
   const QuadratureRule& g = cached_gauss(p.n);
   const double jac = std::abs(su * sv);
   for (const Node1& s : radial) {

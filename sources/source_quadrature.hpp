@@ -19,12 +19,13 @@ inline constexpr int max_cached_gauss_order = 64;
 const QuadratureRule& cached_gauss(int n);
 
 // Points with which Gauss-Legendre integrates, to relative error ~`tol`, a function on the
-// interval [mid - half, mid + half] that is analytic except for singularities at re +- i im.
-// The error falls like rho^-2n, rho = |w + sqrt(w^2 - 1)| the parameter of the Bernstein
-// ellipse through w = (re - mid + i im) / half. Clamped to [n_min, n_max]; n_max + 1 means
-// "more than n_max" (the singularity is too close for a plain rule).
-int gauss_order_for(double mid, double half, double re, double im, double tol, int n_min,
-                    int n_max);
+// interval [mid - half, mid + half] that is analytic except for singularities at re +- i im,
+// times a polynomial factor of degree `poly_degree` vanishing at `poly_root` (the a^2 of a loop
+// of radius a, say). The error falls like rho^-2n, rho the parameter of a Bernstein ellipse
+// within the one through the singularity, weighted by the integrand's growth on it. At least
+// n_min; n_max + 1 means "more than n_max" (the singularity is too close for a plain rule).
+int gauss_order_for(double mid, double half, double re, double im, double tol, int n_min, int n_max,
+                    int poly_degree = 0, double poly_root = 0.0);
 
 // Points with which Gauss-Legendre integrates, to relative error ~`tol`, an entire factor of
 // exponential type `type` (cos(type x), sin^2 x has type 2) over an interval of half-length
@@ -55,10 +56,12 @@ struct ParamRect {
 
 // How the near rule adapts to the field point.
 struct NearPoint {
-  double u, v;     // parameter coordinates of the field point (clamped to the rectangle here)
-  double su, sv;   // physical length per unit of u and of v there (the map's metric)
-  double width;    // physical scale the Duffy radial panels must resolve (0: exactly singular)
-  int n;           // Gauss points per panel and direction
+  double u, v;   // parameter coordinates of the field point (clamped to the rectangle here)
+  double su, sv; // physical length per unit of u and of v there (the map's metric)
+  double width;  // physical scale the Duffy radial panels must resolve (0: none)
+  bool singular; // the point lies in the bundle: 1/d and log d at the corner itself, the
+                 // innermost radial panel is then mapped by s = sigma^2
+  int n;         // Gauss points per panel and direction
 };
 
 // Appends the split + Duffy rule on `rect` for a kernel singular like 1/d at `p` (see the file

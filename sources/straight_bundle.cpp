@@ -12,8 +12,8 @@ namespace {
 
 // (cos t1 - cos t2) / d^2 for a point at axial coordinates s1 (from the start) and s2 = s1 - L
 // (from the end), at distance^2 d2 from the line. Beyond the ends (s1 s2 > 0) the two cosines
-// are both near +-1 and their difference is rewritten as d2 (s1^2 - s2^2) / (r1 r2 (s1 r2 + s2 r1)),
-// which has neither the cancellation nor the division by d2.
+// are both near +-1 and their difference is rewritten as d2 (s1^2 - s2^2) / (r1 r2 (s1 r2 + s2
+// r1)), which has neither the cancellation nor the division by d2.
 double filament_factor(double s1, double s2, double d2) {
   const double r1 = std::sqrt(s1 * s1 + d2), r2 = std::sqrt(s2 * s2 + d2);
   if (s1 * s2 > 0) {
@@ -44,6 +44,7 @@ StraightBundle::StraightBundle(const Vec3& origin, const Vec3& t, const Vec3& e_
                                const CoilFieldOptions& options)
     : origin_(origin), t_(t.normalized()), e_p_(e_p.normalized()), e_q_(t_.cross(e_p_)),
       length_(length), width_(width), height_(height), options_(options) {
+  check_options(options);
   if (!(length > 0 && width > 0 && height > 0)) {
     throw std::invalid_argument("StraightBundle: length, width and height must be positive");
   }
@@ -72,10 +73,10 @@ Vec3 StraightBundle::H(const Vec3& x) const {
   const double dist_q = interval_distance(qx, 0.0, height_);
   const double tol = options_.tolerance;
   const int n_max = options_.far_order_max;
-  const int np = gauss_order_for(0.5 * width_, 0.5 * width_, px, std::hypot(dist_q, e), tol, 2,
-                                 n_max);
-  const int nq = gauss_order_for(0.5 * height_, 0.5 * height_, qx, std::hypot(dist_p, e), tol, 2,
-                                 n_max);
+  const int np =
+      gauss_order_for(0.5 * width_, 0.5 * width_, px, std::hypot(dist_q, e), tol, 2, n_max);
+  const int nq =
+      gauss_order_for(0.5 * height_, 0.5 * height_, qx, std::hypot(dist_p, e), tol, 2, n_max);
   double hp = 0, hq = 0;
   if (np <= n_max && nq <= n_max) {
     const QuadratureRule& gp = cached_gauss(np);
@@ -99,6 +100,7 @@ Vec3 StraightBundle::H(const Vec3& x) const {
     } else {
       np_.width = d_cs > 0 ? d_cs : std::min(s, length_ - s);
     }
+    np_.singular = d_cs == 0 && e == 0;
     np_.n = options_.near_order;
     thread_local std::vector<Node2> nodes;
     nodes.clear();

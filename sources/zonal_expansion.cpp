@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <initializer_list>
 
 #include "core/constants.hpp"
 #include "sources/source_quadrature.hpp"
@@ -58,7 +58,7 @@ struct LegendreRecurrence {
 const LegendreRecurrence& legendre_recurrence() {
   static const LegendreRecurrence r = [] {
     LegendreRecurrence t;
-    for (int m = 0; m <= 4096; ++m) {
+    for (int m = 0; m <= 2048; ++m) { // beyond the largest expansion_terms allowed
       t.a.push_back((2.0 * m + 1.0) / (m + 1.0));
       t.b.push_back(m / (m + 1.0));
     }
@@ -99,8 +99,8 @@ bool ZonalExpansion::evaluate(double rho, double z, MeridianField& h) const {
     if (tail[m + 1] * qa * qs <= stop) {
       break;
     }
-    const double p_next = rec.a[static_cast<std::size_t>(m)] * t * p -
-                          rec.b[static_cast<std::size_t>(m)] * p_prev;
+    const double p_next =
+        rec.a[static_cast<std::size_t>(m)] * t * p - rec.b[static_cast<std::size_t>(m)] * p_prev;
     const double dp_next = dp_prev + (2 * m + 1) * p;
     p_prev = p;
     p = p_next;
@@ -181,8 +181,8 @@ std::vector<double> exterior_coefficients(const std::vector<LoopSample>& loops, 
 // integrated by composite Gauss with panels short against its period.
 std::vector<double> spherical_coil_interior_coefficients(const SphericalCoil& c, double current,
                                                          int n_terms) {
-  const double area = 0.5 * (c.r_outer * c.r_outer - c.r_inner * c.r_inner) *
-                      (c.alpha_max - c.alpha_min);
+  const double area =
+      0.5 * (c.r_outer * c.r_outer - c.r_inner * c.r_inner) * (c.alpha_max - c.alpha_min);
   const double j = current / area;
   std::vector<double> s(static_cast<std::size_t>(n_terms + 1), 0.0), p, dp;
   const int panels = 1 + static_cast<int>(std::ceil(n_terms * (c.alpha_max - c.alpha_min) / 4.0));
@@ -213,14 +213,12 @@ std::vector<double> spherical_coil_interior_coefficients(const SphericalCoil& c,
 // then integrated over a by composite Gauss (smooth in a; panels short against the variation
 // of (R/R_e)^n and of the angle of each end). The series converges like (r / |z_e + i a|)^n,
 // faster than the (r / r_inner)^n of its region of validity.
-std::vector<double> solenoid_interior_coefficients(const Solenoid& c, double current,
-                                                   int n_terms) {
+std::vector<double> solenoid_interior_coefficients(const Solenoid& c, double current, int n_terms) {
   const double j = current / ((c.r_outer - c.r_inner) * c.length);
   const double half = 0.5 * c.length;
   const double radius = c.r_inner;
-  const double variation =
-      std::log(std::hypot(c.r_outer, half) / std::hypot(c.r_inner, half)) +
-      std::abs(std::atan2(c.r_outer, half) - std::atan2(c.r_inner, half));
+  const double variation = std::log(std::hypot(c.r_outer, half) / std::hypot(c.r_inner, half)) +
+                           std::abs(std::atan2(c.r_outer, half) - std::atan2(c.r_inner, half));
   const int panels = 1 + static_cast<int>(std::ceil(n_terms * variation / 4.0));
   std::vector<double> coef(static_cast<std::size_t>(n_terms + 1), 0.0), p, dp;
   for (const Node1& node : composite_rule(c.r_inner, c.r_outer, panels)) {

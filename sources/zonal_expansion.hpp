@@ -53,8 +53,8 @@ private:
   double q_limit_ = 0;
   int max_terms_ = 0;
   std::vector<double> coefficients_;
-  std::vector<double> radial_;  // (m+1) c_m (exterior) or -m c_m (interior): H_r's factors
-  std::vector<double> tail_;    // tail_[m] = max_{k >= m} 2 (k+1) |c_k| / |c_1|
+  std::vector<double> radial_; // (m+1) c_m (exterior) or -m c_m (interior): H_r's factors
+  std::vector<double> tail_;   // tail_[m] = max_{k >= m} 2 (k+1) |c_k| / |c_1|
 };
 
 // A coaxial loop of radius a at height z0 carrying `current` (A): one node of a quadrature of
@@ -74,7 +74,6 @@ std::vector<double> exterior_coefficients(const std::vector<LoopSample>& loops, 
 // (r_inner for both shapes), m = 0..n_terms.
 std::vector<double> spherical_coil_interior_coefficients(const SphericalCoil& c, double current,
                                                          int n_terms);
-std::vector<double> solenoid_interior_coefficients(const Solenoid& c, double current,
-                                                   int n_terms);
+std::vector<double> solenoid_interior_coefficients(const Solenoid& c, double current, int n_terms);
 
 } // namespace magfem
