@@ -16,6 +16,7 @@
 #include "app/run_analytic.hpp"
 #include "app/sweep.hpp"
 #include "app/sweep_plot.hpp"
+#include "app/validate.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
@@ -31,6 +32,8 @@ constexpr const char* usage =
     "       magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
     "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
     "                    [--surface-radius R] [--jobs N] [--out DIR]\n"
+    "       magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] "
+    "[--out DIR]\n"
     "\n"
     "  solve     mesh and solve a case (FE), write summary.json, one CSV per probe and\n"
     "            solution.vtu into DIR (default: out/<case name>)\n"
@@ -275,6 +278,9 @@ int main(int argc, char** argv) {
       std::cout << usage;
       return 0;
     }
+    if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
+      return magfem::run_validate(
+          magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
     const Args args = parse_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);

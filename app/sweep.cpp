@@ -142,7 +142,9 @@ SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angl
             member = in_group(p, o.group);
         (member ? group : rest).push_back(m);
       }
-      const ForceTorque ft = charge_interaction(group, rest, Vec3::Zero());
+      ChargeInteractionOptions copt;
+      copt.tolerance = copt.field.tolerance = o.analytic_tolerance;
+      const ForceTorque ft = charge_interaction(group, rest, Vec3::Zero(), copt);
       on_group.force = ft.force;
       on_group.torque = ft.torque;
     } else {

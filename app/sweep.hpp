@@ -29,6 +29,7 @@ struct SweepOptions {
   int jobs = 0;                                    // worker threads (0: one per core)
   double mesh_scale = 0;                           // FE: RunOverrides::mesh_scale
   int order = 0;                                   // FE: RunOverrides::order
+  double analytic_tolerance = 1e-6;                // analytic: charge interaction tolerance
 };
 
 struct SweepRow {

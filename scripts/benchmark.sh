@@ -84,6 +84,15 @@ start=$(date +%s.%N)
 $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:10:180 \
   --analytic --out "$out/sweep_a" 2> /dev/null | tail -n +1
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+echo
+echo "== magfem validate (issue 12: quick tier <= 10 min, full tier <= 60 min on 2 cores)"
+tiers="quick"
+((full)) && tiers="quick full"
+for tier in $tiers; do
+  start=$(date +%s.%N)
+  $magfem validate --tier $tier --out "$out/validate_$tier" 2> /dev/null | head -1 | sed 's/^/    /' || true
+  awk -v a="$start" -v b="$(date +%s.%N)" -v t=$tier 'BEGIN { printf "    %s tier wall %.1f s\n", t, b - a }'
+done
 if ((full)); then
   echo
   echo "== the same sweep by FE (target: 19 positions in < 10 min on 2 cores)"

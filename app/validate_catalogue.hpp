@@ -1,0 +1,55 @@
+#pragma once
+// The validation catalogue (validation/catalogue.yaml): one entry per published figure, with
+// where it was published, the value, the tolerance and its reason, and how magfem computes
+// it (a named evaluator with its parameters). The catalogue is data; the evaluators are the
+// small registry in validate_evaluators.hpp.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/yaml_node.hpp"
+
+namespace magfem {
+
+enum class ValidationTier { quick, full };
+
+struct CatalogueEntry {
+  std::string id;
+  std::string source;  // seed file, e.g. 003_8d5b5c90a0e7438f.txt
+  std::string section; // section / table / figure
+  std::string quantity;
+  std::string unit;
+  std::optional<double> published; // absent for entries not yet computed (skipped)
+  double tolerance_pct = 0;
+  std::string tolerance_reason;
+  // relative: |value - published| / |published| <= tolerance_pct;
+  // at_most:  the value is itself a percentage (an error measure) and must be <= tolerance_pct.
+  enum class Check { relative, at_most } check = Check::relative;
+  // compute: pass/fail; finding: published value we show cannot be reproduced as printed
+  // (the evaluator still runs: it is the independent computation); skipped: not evaluated.
+  enum class Expect { compute, finding, skipped } expect = Expect::compute;
+  std::string reason; // finding / skipped: why
+  std::string paper;  // what the paper says (report paragraph)
+  ValidationTier tier = ValidationTier::quick; // lowest tier that runs the entry
+  std::string evaluator;
+  std::string evaluator_quantity;          // evaluate.quantity
+  std::string case_file;                   // resolved path, empty if none
+  std::optional<YamlNode> evaluate;        // the whole evaluate map (evaluator parameters)
+  int line = 0;
+};
+
+struct Catalogue {
+  std::string file;
+  std::vector<CatalogueEntry> entries;
+};
+
+// Reads and checks the catalogue: every field, unique ids, the evaluator and its quantity
+// known to the registry, case files present (paths relative to the catalogue's folder).
+// Throws InputError naming the entry id, file and line.
+Catalogue read_catalogue(const std::string& path);
+
+std::string to_string(ValidationTier tier);
+std::string to_string(CatalogueEntry::Check check);
+std::string to_string(CatalogueEntry::Expect expect);
+
+} // namespace magfem
