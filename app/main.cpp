@@ -4,12 +4,15 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "app/build_info.hpp"
+#include "app/command_help.hpp"
 #include "app/resource_usage.hpp"
 #include "app/run2d.hpp"
 #include "app/run3d.hpp"
@@ -23,28 +26,6 @@
 #include "postproc/probe_compare.hpp"
 
 namespace {
-
-constexpr const char* usage =
-    "usage: magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]\n"
-    "       magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
-    "[--n-max N]\n"
-    "       magfem compare REFERENCE.csv TEST.csv\n"
-    "       magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
-    "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
-    "                    [--surface-radius R] [--jobs N] [--out DIR]\n"
-    "       magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] "
-    "[--out DIR]\n"
-    "\n"
-    "  solve     mesh and solve a case (FE), write summary.json, one CSV per probe and\n"
-    "            solution.vtu into DIR (default: out/<case name>)\n"
-    "  analytic  the same probes from the analytic models (3D magnets in air, permeable\n"
-    "            spheres): charge model with imaging, or spherical harmonics\n"
-    "  compare   per field component: eq. 3.117 rms discrepancy and pointwise rms error\n"
-    "  sweep     rotate a group of parts (right-hand rule, axis through the origin or\n"
-    "            --point) and write sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about the\n"
-    "            origin and force on the group) and sweep.png; FE by default (stress tensor\n"
-    "            on a sphere of radius R in the air gap, default mid-gap), or --analytic\n"
-    "            (charge interaction). Lengths in the case's unit, angles in degrees.\n";
 
 struct Args {
   std::string command;
@@ -72,7 +53,8 @@ double parse_number(const std::string& option, const char* text) {
 
 Args parse_args(int argc, char** argv) {
   if (argc < 2)
-    throw magfem::InputError("<command line>", 0, "", std::string("missing command\n") + usage);
+    throw magfem::InputError("<command line>", 0, "",
+                             std::string("missing command\n") + magfem::usage_overview());
   Args a;
   a.command = argv[1];
   std::vector<std::string> positional;
@@ -117,8 +99,10 @@ Args parse_args(int argc, char** argv) {
   a.positional = positional;
   const std::size_t wanted = a.command == "compare" ? 2 : 1;
   if (positional.size() != wanted)
-    throw magfem::InputError("<command line>", 0, "",
-                             std::string("wrong number of arguments\n") + usage);
+    throw magfem::InputError(
+        "<command line>", 0, "",
+        std::string("wrong number of arguments\n") +
+            magfem::command_usage(a.command).value_or(magfem::usage_overview()));
   a.case_file = positional[0];
   if (a.out_dir.empty())
     a.out_dir = (std::filesystem::path("out") / std::filesystem::path(a.case_file).stem()).string();
@@ -214,6 +198,7 @@ int run_sweep(const Args& args) {
   if (!plotted)
     std::cerr << "magfem: note: no sweep.png: " << why << "\n";
   nlohmann::ordered_json j;
+  magfem::add_provenance(j);
   j["case"] = spec.file;
   j["method"] = o.analytic ? "charge_interaction" : "maxwell_stress_sphere";
   j["group"] = o.group;
@@ -270,14 +255,42 @@ int run_compare(const Args& args) {
   return 0;
 }
 
+bool is_help(const char* arg) {
+  return std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0;
+}
+
+// --help, --version, `help [COMMAND]` and `COMMAND --help`: printed to stdout, exit 0.
+std::optional<int> answer_help_or_version(int argc, char** argv) {
+  if (argc < 2)
+    return std::nullopt;
+  const std::string first = argv[1];
+  if (first == "--version" || first == "-V") {
+    std::cout << "magfem " << magfem::magfem_version() << " (commit " << magfem::magfem_git_commit()
+              << ")\n";
+    return 0;
+  }
+  if (is_help(argv[1]) || (first == "help" && argc == 2)) {
+    std::cout << magfem::usage_overview();
+    return 0;
+  }
+  const std::string command = first == "help" ? argv[2] : first;
+  const bool asked = first == "help" || (argc >= 3 && is_help(argv[2]));
+  if (!asked)
+    return std::nullopt;
+  if (const auto page = magfem::command_usage(command)) {
+    std::cout << *page;
+    return 0;
+  }
+  throw magfem::InputError("<command line>", 0, "",
+                           "unknown command '" + command + "'\n" + magfem::usage_overview());
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   try {
-    if (argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-      std::cout << usage;
-      return 0;
-    }
+    if (const auto code = answer_help_or_version(argc, argv))
+      return *code;
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
       return magfem::run_validate(
           magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
@@ -291,7 +304,7 @@ int main(int argc, char** argv) {
     if (args.command == "sweep")
       return run_sweep(args);
     throw magfem::InputError("<command line>", 0, "",
-                             "unknown command '" + args.command + "'\n" + usage);
+                             "unknown command '" + args.command + "'\n" + magfem::usage_overview());
   } catch (const magfem::InputError& e) {
     std::cerr << "magfem: error: " << e.what() << "\n";
     return 2;

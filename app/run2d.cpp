@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/build_info.hpp"
 #include "app/force2d.hpp"
 #include "app/resource_usage.hpp"
 #include "core/output_stage.hpp"
@@ -136,6 +137,7 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   }
 
   nlohmann::ordered_json j;
+  add_provenance(j);
   j["case"] = run.spec.file;
   j["dimension"] = 2;
   j["order"] = run.spec.order;

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/build_info.hpp"
 #include "app/force3d.hpp"
 #include "app/resource_usage.hpp"
 #include "core/constants.hpp"
@@ -146,6 +147,7 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
               make_vtu_3d(*run.field, run.recovered_B, material_of_part, 0, material_names));
   }
   nlohmann::ordered_json j;
+  add_provenance(j);
   j["case"] = run.spec.file;
   j["dimension"] = 3;
   j["order"] = run.spec.order;

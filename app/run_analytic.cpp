@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/build_info.hpp"
 #include "app/coil_run3d.hpp"
 #include "app/resource_usage.hpp"
 #include "core/constants.hpp"
@@ -19,7 +20,9 @@
 namespace magfem {
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 using BatchField = std::function<std::vector<Eigen::Vector3d>(const std::vector<Eigen::Vector3d>&)>;
 
@@ -60,7 +63,8 @@ BatchField make_magnet_model(const AnalyticRun& run) {
     }
   }
   if (run.options.model != "charge")
-    throw InputError("<command line>", 0, "--model", "unknown model '" + run.options.model + "' (charge, harmonic)");
+    throw InputError("<command line>", 0, "--model",
+                     "unknown model '" + run.options.model + "' (charge, harmonic)");
   ChargeModelOptions o;
   o.tolerance = run.options.tolerance;
   try {
@@ -102,14 +106,18 @@ std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOpti
 void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
-  for (const auto& p : run.probes) stage.write_text(p.name + ".csv", p.to_csv());
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
   nlohmann::ordered_json j;
+  add_provenance(j);
   j["case"] = run.spec.file;
   j["dimension"] = 3;
   j["method"] = "analytic";
   j["model"] = run.options.model;
-  if (run.options.model == "charge") j["tolerance"] = run.options.tolerance;
-  else j["n_max"] = run.options.n_max;
+  if (run.options.model == "charge")
+    j["tolerance"] = run.options.tolerance;
+  else
+    j["n_max"] = run.options.n_max;
   j["magnets"] = run.scene.magnets.size();
   j["permeable_spheres"] = run.scene.spheres.size();
   j["points"] = run.n_points;
@@ -118,7 +126,8 @@ void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path&
   j["ms_per_point"] = run.n_points ? 1e3 * run.evaluate_s / static_cast<double>(run.n_points) : 0.0;
   j["peak_memory_MB"] = peak_memory_mb();
   j["notes"] = run.scene.notes;
-  for (const auto& p : run.probes) j["probes"].push_back(p.name + ".csv");
+  for (const auto& p : run.probes)
+    j["probes"].push_back(p.name + ".csv");
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
@@ -130,9 +139,11 @@ std::string describe_analytic(const AnalyticRun& run) {
                 "points   %zu in %.3f s (%.3f ms per point), setup %.3f s\n",
                 run.options.model.c_str(), run.scene.magnets.size(), run.scene.spheres.size(),
                 run.n_points, run.evaluate_s,
-                run.n_points ? 1e3 * run.evaluate_s / static_cast<double>(run.n_points) : 0.0, run.setup_s);
+                run.n_points ? 1e3 * run.evaluate_s / static_cast<double>(run.n_points) : 0.0,
+                run.setup_s);
   std::string s = buf;
-  for (const auto& n : run.scene.notes) s += "note     " + n + "\n";
+  for (const auto& n : run.scene.notes)
+    s += "note     " + n + "\n";
   return s;
 }
 

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "app/build_info.hpp"
 #include "app/validate_report.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
@@ -20,7 +21,9 @@ namespace magfem {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 const std::string cli = "<command line>";
 
@@ -35,6 +38,8 @@ std::vector<std::string> split_list(const std::string& text) {
 }
 
 std::string default_catalogue() {
+  if (const auto share = installed_data_dir())
+    return (*share / "validation" / "catalogue.yaml").string();
   if (std::filesystem::is_regular_file("validation/catalogue.yaml"))
     return "validation/catalogue.yaml";
   return std::string(MAGFEM_SOURCE_DIR) + "/validation/catalogue.yaml";
@@ -184,8 +189,8 @@ int run_validate(const ValidateOptions& options) {
   for (std::size_t i = 0; i < selected.size(); ++i)
     run.results[i].entry = selected[i];
   const int n_hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  run.jobs = std::max(1, std::min<int>(options.jobs > 0 ? options.jobs : n_hw,
-                                       static_cast<int>(selected.size())));
+  run.jobs = std::max(
+      1, std::min<int>(options.jobs > 0 ? options.jobs : n_hw, static_cast<int>(selected.size())));
   ComputeCache cache;
   std::atomic<std::size_t> next{0};
   std::mutex print_mutex;

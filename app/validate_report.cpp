@@ -7,16 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "magfem_build_info.hpp"
+#include "app/build_info.hpp"
 
 namespace magfem {
 
 const char* const validation_csv_header =
     "id,source,section,quantity,unit,published,fe,analytic,tolerance_pct,fe_error_pct,"
     "analytic_error_pct,status,seconds";
-
-std::string magfem_version() { return MAGFEM_VERSION; }
-std::string magfem_git_commit() { return MAGFEM_GIT_COMMIT; }
 
 namespace {
 
@@ -41,11 +38,20 @@ std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    default: out += c;
+    case '&':
+      out += "&amp;";
+      break;
+    case '<':
+      out += "&lt;";
+      break;
+    case '>':
+      out += "&gt;";
+      break;
+    case '"':
+      out += "&quot;";
+      break;
+    default:
+      out += c;
     }
   }
   return out;
@@ -114,7 +120,8 @@ std::string validation_json(const ValidationRun& run) {
   auto opt = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
   json j;
   j["magfem_version"] = magfem_version();
-  j["git_commit"] = magfem_git_commit();
+  j["git_commit"] = magfem_git_commit(); // kept for readers of the first format
+  j["commit"] = magfem_git_commit();
   j["catalogue"] = run.catalogue_file;
   j["tier"] = to_string(run.options.tier);
   j["jobs"] = run.jobs;
@@ -170,21 +177,21 @@ std::string validation_markdown(const ValidationRun& run) {
                 "magfem %s (commit %s), `--tier %s`, %zu entries in %.0f s on %d jobs: "
                 "%d pass, %d fail, %d finding, %d skipped.\n\n",
                 magfem_version().c_str(), magfem_git_commit().substr(0, 12).c_str(),
-                to_string(run.options.tier).c_str(), run.results.size(), run.wall_seconds,
-                run.jobs, count("pass"), count("fail"), count("finding"), count("skipped"));
+                to_string(run.options.tier).c_str(), run.results.size(), run.wall_seconds, run.jobs,
+                count("pass"), count("fail"), count("finding"), count("skipped"));
   out += buf;
   out += "| id | source | section | quantity | unit | published | FE | analytic | tol % | FE err % "
          "| analytic err % | FE disc. % | status |\n";
   out += "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const auto& r : run.results) {
     const CatalogueEntry& e = *r.entry;
-    const std::string tol = tolerance(r) ? (e.check == CatalogueEntry::Check::at_most ? "<= " : "") +
-                                               num(tolerance(r))
-                                         : "";
+    const std::string tol =
+        tolerance(r) ? (e.check == CatalogueEntry::Check::at_most ? "<= " : "") + num(tolerance(r))
+                     : "";
     out += "| " + md_cell(e.id) + " | " + md_cell(e.source.substr(0, 3)) + " | " +
            md_cell(e.section) + " | " + md_cell(e.quantity) + " | " + md_cell(e.unit) + " | " +
-           num(e.published, "%.4g") + " | " + num(r.fe, "%.4g") + " | " +
-           num(r.analytic, "%.4g") + " | " + tol + " | " + num(r.fe_error_pct, "%.2g") + " | " +
+           num(e.published, "%.4g") + " | " + num(r.fe, "%.4g") + " | " + num(r.analytic, "%.4g") +
+           " | " + tol + " | " + num(r.fe_error_pct, "%.2g") + " | " +
            num(r.analytic_error_pct, "%.2g") + " | " + num(r.discretisation_pct, "%.2g") + " | " +
            (r.status == "fail" ? "**fail**" : r.status) + " |\n";
   }
@@ -194,8 +201,8 @@ std::string validation_markdown(const ValidationRun& run) {
   std::string notes;
   for (const auto& r : run.results)
     if (!r.note.empty() || r.status == "finding")
-      notes += "- `" + r.entry->id + "` (" + r.status + "): " +
-               (r.status == "finding" ? r.entry->reason : r.note) + "\n";
+      notes += "- `" + r.entry->id + "` (" + r.status +
+               "): " + (r.status == "finding" ? r.entry->reason : r.note) + "\n";
   if (!notes.empty())
     out += "\nNotes:\n\n" + notes;
   return out;
@@ -241,9 +248,10 @@ std::string plot_svg(const Plot& plot) {
                   L, py(yv), W - R, py(yv), L - 4, py(yv) + 4, yv);
     svg += buf;
   }
-  std::snprintf(buf, sizeof buf,
-                "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"black\"/>\n",
-                L, T, W - L - R, H - T - B);
+  std::snprintf(
+      buf, sizeof buf,
+      "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"black\"/>\n", L, T,
+      W - L - R, H - T - B);
   svg += buf;
   std::snprintf(buf, sizeof buf, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">", (L + W - R) / 2,
                 H - 12);
@@ -300,8 +308,8 @@ std::string validation_html(const ValidationRun& run) {
     h += "<tr class=\"" + r.status + "\"><td><a href=\"#" + html_escape(e.id) + "\">" +
          html_escape(e.id) + "</a></td><td>" + html_escape(e.section) + "</td><td>" +
          html_escape(e.quantity) + "</td><td>" + html_escape(e.unit) + "</td><td class=n>" +
-         num(e.published, "%.4g") + "</td><td class=n>" + num(r.fe, "%.4g") +
-         "</td><td class=n>" + num(r.analytic, "%.4g") + "</td><td class=n>" +
+         num(e.published, "%.4g") + "</td><td class=n>" + num(r.fe, "%.4g") + "</td><td class=n>" +
+         num(r.analytic, "%.4g") + "</td><td class=n>" +
          (e.check == CatalogueEntry::Check::at_most && tolerance(r) ? "&le; " : "") +
          num(tolerance(r)) + "</td><td class=n>" + num(r.fe_error_pct, "%.2g") +
          "</td><td class=n>" + num(r.analytic_error_pct, "%.2g") + "</td><td class=n>" +
@@ -320,15 +328,16 @@ std::string validation_html(const ValidationRun& run) {
     if (e.expect != CatalogueEntry::Expect::skipped) {
       h += "<p><b>Agreement:</b> published " + num(e.published) + " " + html_escape(e.unit) +
            "; FE " + (r.fe ? num(r.fe) : std::string("not computed")) + ", analytic " +
-           (r.analytic ? num(r.analytic) : std::string("not computed")) + ". Tolerance: " +
-           check_text(e) + " (" + html_escape(e.tolerance_reason) + ").";
+           (r.analytic ? num(r.analytic) : std::string("not computed")) +
+           ". Tolerance: " + check_text(e) + " (" + html_escape(e.tolerance_reason) + ").";
       if (r.discretisation_pct)
         h += " Discretisation estimate (change from the next coarser mesh): " +
              num(r.discretisation_pct, "%.2g") + ".";
       h += "</p>\n";
     }
     if (e.expect != CatalogueEntry::Expect::compute)
-      h += "<p><b>" + std::string(e.expect == CatalogueEntry::Expect::finding ? "Finding" : "Skipped") +
+      h += "<p><b>" +
+           std::string(e.expect == CatalogueEntry::Expect::finding ? "Finding" : "Skipped") +
            ":</b> " + html_escape(e.reason) + "</p>\n";
     if (!r.note.empty())
       h += "<p><b>Note:</b> " + html_escape(r.note) + "</p>\n";

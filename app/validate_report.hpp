@@ -22,8 +22,4 @@ std::string plot_svg(const Plot& plot);
 // Writes the four files into the stage (the caller commits).
 void write_validation_outputs(const ValidationRun& run, OutputStage& stage);
 
-// magfem version (CMake project version) and the git commit it was configured from.
-std::string magfem_version();
-std::string magfem_git_commit();
-
 } // namespace magfem

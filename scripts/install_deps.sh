@@ -3,11 +3,14 @@
 # everything is already installed, so repeated runs are fast.
 set -euo pipefail
 # libopenblas0-pthread replaces the reference BLAS behind CHOLMOD's supernodal factorization
-# (measured: nonlinear motor, 108k unknowns, 3.9 s -> 2.6 s); gnuplot-nox draws sweep plots.
+# (measured: nonlinear motor, 108k unknowns, 3.9 s -> 2.6 s); gnuplot-nox draws sweep plots;
+# python3-jsonschema/python3-yaml check docs/case.schema.json against the examples; dpkg-dev
+# and file let CPack compute the Debian package's runtime dependencies.
 packages=(cmake g++ make ccache pkg-config
           libeigen3-dev libyaml-cpp-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libsuitesparse-dev libtet1.5-dev libvtk9-dev nlohmann-json3-dev libtbb-dev
-          libgtest-dev gnuplot-nox libopenblas0-pthread)
+          libgtest-dev gnuplot-nox libopenblas0-pthread
+          python3-jsonschema python3-yaml dpkg-dev file)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -18,5 +21,12 @@ if ((${#missing[@]})); then
   SUDO=""
   [[ $(id -u) -eq 0 ]] || SUDO="sudo"
   $SUDO apt-get update -qq
-  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  # --no-remove: never take away a package the user has. On Debian 12, libvtk9-dev and
+  # ParaView's Python module (python3-paraview) conflict; apt then stops instead of removing one.
+  if ! $SUDO apt-get install -y -qq --no-install-recommends --no-remove "${missing[@]}"; then
+    echo "install_deps: apt-get could not install ${missing[*]} without removing packages." >&2
+    echo "  A known case: python3-paraview conflicts with libvtk9-dev (see README, ParaView)." >&2
+    echo "  Resolve the conflict by hand, then run this script again." >&2
+    exit 1
+  fi
 fi

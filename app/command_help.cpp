@@ -1,0 +1,84 @@
+#include "app/command_help.hpp"
+
+#include <array>
+
+namespace magfem {
+
+namespace {
+
+struct CommandHelp {
+  const char* name;
+  const char* synopsis; // one line per form
+  const char* summary;  // the overview's one-liner
+  const char* details;  // options and outputs
+};
+
+constexpr std::array<CommandHelp, 5> commands{{
+    {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]",
+     "mesh and solve a case by FE",
+     "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
+     "  mesh and solver figures, magfem_version and commit), one CSV per probe, forces.csv\n"
+     "  and solution.vtu for ParaView.\n"
+     "  --order 1|2       element order (overrides the case's mesh.order)\n"
+     "  --mesh-scale S    multiply every mesh size by S (S > 1 is coarser)\n"},
+    {"analytic",
+     "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
+     "[--n-max N]",
+     "the same probes from the analytic models",
+     "  3D magnets in air or with permeable spheres (spherical imaging) and coils\n"
+     "  (Biot-Savart): the charge model, or the spherical-harmonic model.\n"
+     "  --model charge|harmonic   (default charge)\n"
+     "  --tolerance T             relative cubature tolerance of the charge model\n"
+     "  --n-max N                 harmonic degree of the harmonic model\n"},
+    {"compare", "magfem compare REFERENCE.csv TEST.csv", "compare two probe CSVs",
+     "  Per field component: the rms discrepancy of thesis eq. 3.117 and the pointwise rms\n"
+     "  error, in % of the reference.\n"},
+    {"sweep",
+     "magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
+     "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
+     "                    [--surface-radius R] [--jobs N] [--out DIR]",
+     "torque and force while a group of parts rotates",
+     "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
+     "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
+     "  the origin and force on the group), sweep.png and summary.json. FE by default\n"
+     "  (stress tensor on a sphere of radius R in the air gap, default mid-gap) or\n"
+     "  --analytic (charge interaction). Lengths in the case's unit, angles in degrees.\n"
+     "  --jobs N   positions solved in parallel (default: one per core)\n"},
+    {"validate",
+     "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",
+     "recompute the published figures and report the agreement",
+     "  Runs the catalogue (share/magfem/validation/catalogue.yaml when installed) and\n"
+     "  writes results.csv, results.json, report.md and report.html into DIR (default\n"
+     "  out/validate). Exit 0 when nothing fails, 4 when an entry fails, 2 on bad input.\n"},
+}};
+
+} // namespace
+
+std::vector<std::string> command_names() {
+  std::vector<std::string> names;
+  for (const auto& c : commands)
+    names.emplace_back(c.name);
+  return names;
+}
+
+std::string usage_overview() {
+  std::string text = "usage: magfem COMMAND [ARGS]\n       magfem --version\n"
+                     "       magfem help COMMAND\n\ncommands:\n";
+  for (const auto& c : commands) {
+    std::string name = c.name;
+    name.resize(10, ' ');
+    text += "  " + name + c.summary + "\n";
+  }
+  text += "\nExit codes: 0 success, 1 internal error, 2 bad input (file, line and field named),\n"
+          "3 the solver did not converge, 4 a validation entry failed.\n";
+  return text;
+}
+
+std::optional<std::string> command_usage(const std::string& command) {
+  for (const auto& c : commands)
+    if (command == c.name)
+      return std::string("usage: ") + c.synopsis + "\n\n  " + c.summary + ".\n" + c.details;
+  return std::nullopt;
+}
+
+} // namespace magfem

@@ -1,0 +1,42 @@
+# bash completion for magfem: commands, each command's options and their values, case files.
+# Installed as share/bash-completion/completions/magfem; from a source tree:
+#   source scripts/magfem-completion.bash
+_magfem() {
+  local cur prev command
+  cur="${COMP_WORDS[COMP_CWORD]}"
+  prev="${COMP_WORDS[COMP_CWORD-1]}"
+  command="${COMP_WORDS[1]}"
+  local commands="solve analytic compare sweep validate help"
+
+  if ((COMP_CWORD == 1)); then
+    COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
+    return
+  fi
+  case "$prev" in
+    --out) COMPREPLY=($(compgen -d -- "$cur")); return ;;
+    --order) COMPREPLY=($(compgen -W "1 2" -- "$cur")); return ;;
+    --model) COMPREPLY=($(compgen -W "charge harmonic" -- "$cur")); return ;;
+    --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
+    --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
+    --mesh-scale | --tolerance | --n-max | --rotate | --angles | --point | --surface-radius | \
+      --jobs | --only | --source) return ;;
+  esac
+  local options
+  case "$command" in
+    solve) options="--out --order --mesh-scale --help" ;;
+    analytic) options="--out --model --tolerance --n-max --help" ;;
+    compare) options="--help" ;;
+    sweep) options="--rotate --axis --angles --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;
+    validate) options="--tier --only --source --jobs --out --help" ;;
+    help) COMPREPLY=($(compgen -W "${commands% help}" -- "$cur")); return ;;
+  esac
+  if [[ "$cur" == -* ]]; then
+    COMPREPLY=($(compgen -W "$options" -- "$cur"))
+    return
+  fi
+  case "$command" in
+    compare) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
+    solve | analytic | sweep) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
+  esac
+}
+complete -o filenames -F _magfem magfem
