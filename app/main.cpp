@@ -1,5 +1,6 @@
 // magfem command-line front end. Exit codes: 0 success, 1 internal error, 2 bad input
 // (case file, options), 3 the solver did not converge.
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -43,12 +44,12 @@ double parse_number(const std::string& option, const char* text) {
   try {
     std::size_t used = 0;
     const double v = std::stod(text, &used);
-    if (used == std::strlen(text))
+    if (used == std::strlen(text) && std::isfinite(v))
       return v;
   } catch (const std::exception&) {
   }
   throw magfem::InputError("<command line>", 0, option,
-                           std::string("expected a number, got '") + text + "'");
+                           std::string("expected a finite number, got '") + text + "'");
 }
 
 Args parse_args(int argc, char** argv) {
@@ -69,9 +70,11 @@ Args parse_args(int argc, char** argv) {
       a.out_dir = value();
     else if (arg == "--order")
       a.overrides.order = static_cast<int>(parse_number(arg, value()));
-    else if (arg == "--mesh-scale")
+    else if (arg == "--mesh-scale") {
       a.overrides.mesh_scale = parse_number(arg, value());
-    else if (arg == "--model")
+      if (!(a.overrides.mesh_scale > 0)) // 0 would silently mean "as in the case"
+        throw magfem::InputError("<command line>", 0, arg, "must be positive");
+    } else if (arg == "--model")
       a.analytic.model = value();
     else if (arg == "--tolerance")
       a.analytic.tolerance = parse_number(arg, value());
@@ -87,9 +90,11 @@ Args parse_args(int argc, char** argv) {
       a.point = value();
     else if (arg == "--surface-radius")
       a.surface_radius = value();
-    else if (arg == "--jobs")
+    else if (arg == "--jobs") {
       a.jobs = static_cast<int>(parse_number(arg, value()));
-    else if (arg == "--analytic")
+      if (a.jobs < 1)
+        throw magfem::InputError("<command line>", 0, arg, "must be at least 1");
+    } else if (arg == "--analytic")
       a.analytic_sweep = true;
     else if (arg.rfind("--", 0) == 0)
       throw magfem::InputError("<command line>", 0, arg, "unknown option");

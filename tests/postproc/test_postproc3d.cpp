@@ -6,6 +6,13 @@
 #include <cmath>
 #include <filesystem>
 
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
 #include "../solver/structured_mesh3d.hpp"
 #include "core/constants.hpp"
 #include "postproc/energy3d.hpp"
@@ -208,7 +215,29 @@ TEST(VtuExport3D, QuadraticTetsWithAllArrays) {
   EXPECT_EQ(g.point_data[0].name, "phi");
   const auto path = std::filesystem::temp_directory_path() / "magfem_test_vtu3d.vtu";
   write_vtu(path.string(), g);
-  EXPECT_GT(std::filesystem::file_size(path), 1000u);
+  // Read back through VTK: what ParaView will see is what was meant to be written.
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* ug = reader->GetOutput();
+  ASSERT_EQ(ug->GetNumberOfCells(), static_cast<vtkIdType>(box.mesh.n_tets()));
+  ASSERT_EQ(ug->GetNumberOfPoints(), static_cast<vtkIdType>(g.points.size()));
+  EXPECT_EQ(ug->GetCellType(0), 24);
+  for (const auto& array : g.point_data) {
+    vtkDataArray* read = ug->GetPointData()->GetArray(array.name.c_str());
+    ASSERT_NE(read, nullptr) << array.name;
+    ASSERT_EQ(read->GetNumberOfComponents(), array.components) << array.name;
+    for (std::size_t i = 0; i < array.values.size(); i += 7)
+      EXPECT_EQ(read->GetComponent(i / array.components, i % array.components), array.values[i])
+          << array.name << " value " << i;
+  }
+  for (const auto& array : g.cell_data) {
+    vtkDataArray* read = ug->GetCellData()->GetArray(array.name.c_str());
+    ASSERT_NE(read, nullptr) << array.name;
+    for (std::size_t i = 0; i < array.values.size(); i += 5)
+      EXPECT_EQ(read->GetComponent(i / array.components, i % array.components), array.values[i])
+          << array.name << " value " << i;
+  }
   std::filesystem::remove(path);
 }
 

@@ -1,0 +1,253 @@
+// The command line as a user runs it: every output of `solve` read back and checked against
+// the physics (the VTU through VTK), option errors, a solver failure, the analytic model's
+// refusals, `compare` on a hand-computed case and parallel sweeps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include "case_helpers.hpp"
+#include "core/constants.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int status = -1;
+  std::string out; // stdout and stderr
+};
+
+Outcome run(const std::string& args) {
+  const std::string cmd = std::string(MAGFEM_BINARY) + " " + args + " 2>&1";
+  Outcome o;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (pipe && fgets(buf.data(), buf.size(), pipe))
+    o.out += buf.data();
+  const int raw = pipe ? pclose(pipe) : -1;
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return o;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / "magfem_tests" / "cli" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A 2D case with nonlinear iron that Newton cannot finish in one iteration.
+const char* nonlinear_case = R"(title: magnet and nonlinear iron disk
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
+regions:
+  - {name: magnet, shape: disk, center: [-6, 0], radius: 4, material: pm,
+     magnetization: {type: parallel, angle: 0}}
+  - {name: iron, shape: disk, center: [6, 0], radius: 5, material: steel_1010}
+boundary: {type: open, radius: 30}
+mesh: {size: 3}
+solver: {order: 1, max_iterations: 1, tolerance: 1e-12}
+)";
+
+} // namespace
+
+// The diametric cylinder (B_r 1 T, mu_r 1) has B = B_r/2 x_hat inside exactly, and the
+// exterior field of a 2D dipole. Every output file is read back: summary.json, the probe
+// CSVs and the VTU through VTK's reader.
+TEST(Cli, SolveWritesEveryOutputAndTheVtuHoldsTheField) {
+  const auto out = fresh_dir("cylinder");
+  const auto r = run("solve " + magfem::test::example("2d/diametric_cylinder.yaml") + " --out " +
+                     out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_FALSE(summary.at("magfem_version").get<std::string>().empty());
+  EXPECT_FALSE(summary.at("commit").get<std::string>().empty());
+  EXPECT_TRUE(summary.at("converged").get<bool>());
+  double interior_area = 0;
+  for (const auto& region : summary.at("regions"))
+    if (region.at("name") != "exterior (open boundary)")
+      interior_area += region.at("area_m2").get<double>();
+  for (const char* probe : {"r12.csv", "r5.csv", "x_axis.csv"})
+    EXPECT_TRUE(fs::is_regular_file(out / probe)) << probe;
+  EXPECT_EQ(read_text(out / "x_axis.csv").substr(0, 10), "x,y,Bx,By\n");
+
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName((out / "solution.vtu").c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  ASSERT_GT(grid->GetNumberOfCells(), 1000);
+  // The VTU holds every element but the shell's: their areas, computed here from the
+  // corner coordinates, add up to the regions' areas in summary.json (straight-sided P2
+  // triangles, so only round-off separates the two sums).
+  double area = 0;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      grid->GetPoint(grid->GetCell(c)->GetPointId(k), p[k]);
+    area += 0.5 * std::abs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                           (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]));
+  }
+  EXPECT_NEAR(area, interior_area, 1e-9 * interior_area);
+
+  for (const char* name : {"A_z", "B", "|B|"})
+    EXPECT_NE(grid->GetPointData()->GetArray(name), nullptr) << name;
+  vtkDataArray* region = grid->GetCellData()->GetArray("region_id");
+  vtkDataArray* b = grid->GetCellData()->GetArray("B");
+  vtkDataArray* h = grid->GetCellData()->GetArray("H");
+  ASSERT_TRUE(region && b && h);
+  // Inside the magnet (region 0) B = (0.5, 0) T and H = (B - B_r)/mu0 = (-0.5/mu0, 0). The
+  // circle is a polygon (chord tolerance 5 um on 10 mm): its vertices perturb the field of
+  // the elements that touch them by up to ~0.5 % (a wedge of 1.6 degrees turning), while the
+  // mean over the magnet sees only the polygon's shape error, ~1e-4.
+  int magnet_cells = 0;
+  double max_deviation = 0, mean_bx = 0, mean_hx = 0;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    if (region->GetComponent(c, 0) != 0)
+      continue;
+    ++magnet_cells;
+    max_deviation = std::max({max_deviation, std::abs(b->GetComponent(c, 0) - 0.5),
+                              std::abs(b->GetComponent(c, 1))});
+    mean_bx += b->GetComponent(c, 0);
+    mean_hx += h->GetComponent(c, 0) * magfem::mu0;
+  }
+  ASSERT_GT(magnet_cells, 100);
+  EXPECT_LT(max_deviation, 5e-3);
+  EXPECT_NEAR(mean_bx / magnet_cells, 0.5, 5e-4);
+  EXPECT_NEAR(mean_hx / magnet_cells, -0.5, 5e-4);
+  std::printf("magnet cells %d: max |B - B_exact| %.2e T, mean Bx %.6f T\n", magnet_cells,
+              max_deviation, mean_bx / magnet_cells);
+}
+
+TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
+  const auto out = fresh_dir("options");
+  const std::string c = magfem::test::example("2d/diametric_cylinder.yaml");
+  const std::string o = " --out " + out.string();
+  const std::array<std::pair<std::string, std::string>, 8> cases{{
+      {"solve " + c + o + " --order 3", "--order"},
+      {"solve " + c + o + " --mesh-scale 0", "--mesh-scale"},
+      {"solve " + c + o + " --mesh-scale nan", "--mesh-scale"},
+      {"solve " + c + " --out", "--out"},
+      {"solve " + c + o + " --frobnicate 2", "--frobnicate"},
+      {"solve" + o, "wrong number of arguments"},
+      {"sweep " + c + o + " --rotate arm --axis z --angles 0:10:20 --jobs 0", "--jobs"},
+      {"transmogrify " + c, "unknown command"},
+  }};
+  for (const auto& [args, named] : cases) {
+    const auto r = run(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find(named), std::string::npos) << args << "\n" << r.out;
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// Newton stopped at max_iterations is a failure: exit 3, a message, no output directory.
+TEST(Cli, NewtonThatDoesNotConvergeExits3AndWritesNothing) {
+  const auto out = fresh_dir("newton");
+  const auto r = run("solve " + magfem::test::write_temp_case("cli_newton.yaml", nonlinear_case) +
+                     " --out " + out.string());
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find("solver failed"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// The analytic models have no nonlinear iron: refused with exit 2, the region named.
+TEST(Cli, AnalyticRefusesNonlinearIronNamingTheRegion) {
+  const auto out = fresh_dir("analytic_refusal");
+  const auto r = run("analytic " +
+                     magfem::test::write_temp_case("cli_analytic.yaml", R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
+regions:
+  - {name: ball, shape: spherical_segment, r_outer: 5, material: pm,
+     magnetization: {type: parallel, direction: [0, 0, 1]}}
+  - {name: yoke, shape: box, size: [10, 10, 4], material: steel_1010,
+     placement: {translate: [0, 0, 12]}}
+boundary: {type: open, radius: 40}
+mesh: {size: 8}
+probes:
+  - {name: axis, type: line, start: [0, 0, 6], end: [0, 0, 9], points: 4}
+)") + " --out " + out.string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("yoke"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// Reference Bx = +-1 (rms 1); test Bx = +-1 + 0.1 alternating to 1.1 / -0.9: rms(test) =
+// sqrt((1.21 + 0.81)/2), eq. 3.117 = (1 - rms_test)/1 = -0.4988 %, pointwise rms error =
+// rms(0.1) = 10 %, max difference 0.1 T. By is 1 against a reference of 2 everywhere:
+// eq. 3.117 = (2 - 1)/2 = 50 %, pointwise 50 %.
+TEST(Cli, CompareReportsEquation3117AndThePointwiseErrorOfAHandComputedCase) {
+  const auto dir = fresh_dir("compare");
+  fs::create_directories(dir);
+  std::ofstream(dir / "ref.csv") << "x,y,Bx,By\n0,0,1,2\n1,0,-1,2\n2,0,1,2\n3,0,-1,2\n";
+  std::ofstream(dir / "test.csv") << "x,y,Bx,By\n0,0,1.1,1\n1,0,-0.9,1\n2,0,1.1,1\n3,0,-0.9,1\n";
+  const auto r = run("compare " + (dir / "ref.csv").string() + " " + (dir / "test.csv").string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  auto row = [&](const std::string& comp) {
+    std::istringstream lines(r.out);
+    std::string line;
+    while (std::getline(lines, line))
+      if (line.rfind(comp + " ", 0) == 0) {
+        std::istringstream f(line.substr(comp.size()));
+        std::array<double, 5> v{};
+        for (auto& x : v)
+          f >> x;
+        return v;
+      }
+    ADD_FAILURE() << "no row " << comp << " in\n" << r.out;
+    return std::array<double, 5>{};
+  };
+  const auto bx = row("Bx");
+  EXPECT_NEAR(bx[0], 1.0, 1e-5);
+  EXPECT_NEAR(bx[1], std::sqrt(1.01), 1e-5);
+  EXPECT_NEAR(bx[2], 100 * (1 - std::sqrt(1.01)), 1e-3);
+  EXPECT_NEAR(bx[3], 10.0, 1e-3);
+  EXPECT_NEAR(bx[4], 0.1, 1e-6);
+  const auto by = row("By");
+  EXPECT_NEAR(by[2], 50.0, 1e-3);
+  EXPECT_NEAR(by[3], 50.0, 1e-3);
+
+  std::ofstream(dir / "short.csv") << "x,y,Bx,By\n0,0,1,2\n";
+  const auto mismatch =
+      run("compare " + (dir / "ref.csv").string() + " " + (dir / "short.csv").string());
+  EXPECT_EQ(mismatch.status, 2) << mismatch.out;
+}
+
+// Positions are independent, so the number of worker threads cannot change the numbers.
+TEST(Cli, ParallelSweepEqualsTheSerialOne) {
+  const std::string c = magfem::test::example("3d/two_spheres.yaml");
+  const std::string sweep = "sweep " + c + " --rotate arm --axis y --angles 0:30:150 --analytic";
+  const auto one = fresh_dir("sweep1"), two = fresh_dir("sweep2");
+  ASSERT_EQ(run(sweep + " --jobs 1 --out " + one.string()).status, 0);
+  ASSERT_EQ(run(sweep + " --jobs 2 --out " + two.string()).status, 0);
+  const std::string serial = read_text(one / "sweep.csv");
+  EXPECT_EQ(std::count(serial.begin(), serial.end(), '\n'), 7); // header + 6 angles
+  EXPECT_EQ(serial, read_text(two / "sweep.csv"));
+}
