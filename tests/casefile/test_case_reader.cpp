@@ -1,0 +1,190 @@
+// casefile/: what a case file says arrives in SI, in the global frame, with every shape,
+// placement, sign and radial centre as documented; bad input names the exact line and
+// dotted field path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <regex>
+#include <string>
+
+#include "casefile/case_spec.hpp"
+#include "core/input_error.hpp"
+
+using namespace magfem;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+std::string write_case(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "magfem_tests" / "casefile";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+// In centimetres, so that a missed unit conversion is a factor 10 off, not 1000 (a factor
+// that could hide behind mm defaults).
+const char* case3d = R"(dimension: 3
+unit: cm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
+regions:
+  - name: ball
+    shape: spherical_segment
+    r_outer: 1
+    theta: [0, 90]
+    material: pm
+    magnetization: {type: radial, center: [0, 0, 0.5], sign: -1}
+    placement: {translate: [0, 0, 2], rotate: {axis: [0, 1, 0], angle: 90}}
+  - name: can
+    shape: cylinder
+    r_inner: 0.5
+    r_outer: 1
+    height: 2
+    material: pm
+    magnetization: {type: axial}
+    placement: {translate: [0, 0, -4]}
+    group: arm
+  - name: brick
+    shape: box
+    size: [1, 2, 3]
+    material: pm
+    magnetization: {type: parallel, direction: [3, 0, 4]}
+    placement: {translate: [4, 0, 0]}
+    mesh_size: 0.25
+boundary: {type: open, radius: 8}
+mesh: {size: 2}
+forces:
+  - {name: on_ball, type: sphere, center: [0, 0, 2], radius: 1.5, check_radius: 1.7,
+     torque_point: [0, 0, 1]}
+  - {name: on_brick, type: box, center: [4, 0, 0], size: [2, 3, 4]}
+)";
+
+} // namespace
+
+TEST(CaseReader3D, ShapesPlacementsAndMagnetizationsArriveInSiAndTheGlobalFrame) {
+  const auto spec = read_case(write_case("case3d.yaml", case3d));
+  ASSERT_EQ(spec.dimension, 3);
+  EXPECT_DOUBLE_EQ(spec.length_unit, 0.01);
+  const auto& parts = spec.geometry3d.parts;
+  ASSERT_EQ(parts.size(), 3u);
+
+  const auto& ball = std::get<SphericalSegment>(parts[0].shape);
+  EXPECT_DOUBLE_EQ(ball.r_inner, 0);
+  EXPECT_DOUBLE_EQ(ball.r_outer, 0.01);
+  EXPECT_DOUBLE_EQ(ball.theta_min, 0);
+  EXPECT_DOUBLE_EQ(ball.theta_max, pi / 2);
+  EXPECT_DOUBLE_EQ(ball.phi_max - ball.phi_min, 2 * pi); // default: the full azimuth
+  // Rotated 90 degrees about +y (right-hand rule): local +z points along global +x; then
+  // moved to z = 2 cm.
+  const Vec3 tip = parts[0].placement.to_global(Vec3(0, 0, 0.01));
+  EXPECT_LT((tip - Vec3(0.01, 0, 0.02)).norm(), 1e-15);
+  // The radial centre (0, 0, 0.5) cm local is (0.5, 0, 2) cm global, and sign -1 points
+  // the remanence at it: just beyond it along +x the direction is -x.
+  const auto& radial = spec.regions[0].magnetization;
+  const Vec3 centre(0.005, 0, 0.02);
+  EXPECT_LT((radial.unit_at(centre + Vec3(1e-4, 0, 0)) - Vec3(-1, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((radial.unit_at(centre + Vec3(0, 0, 1e-4)) - Vec3(0, 0, -1)).norm(), 1e-12);
+
+  const auto& can = std::get<Cylinder>(parts[1].shape);
+  EXPECT_DOUBLE_EQ(can.r_inner, 0.005);
+  EXPECT_DOUBLE_EQ(can.r_outer, 0.01);
+  EXPECT_DOUBLE_EQ(can.height, 0.02);
+  EXPECT_EQ(parts[1].group, "arm");
+  EXPECT_LT((parts[1].placement.translation - Vec3(0, 0, -0.04)).norm(), 1e-15);
+  EXPECT_LT((spec.regions[1].magnetization.unit_at(Vec3(0.007, 0, -0.03)) - Vec3::UnitZ()).norm(),
+            1e-15); // axial: the cylinder's axis
+
+  const auto& brick = std::get<Box>(parts[2].shape);
+  EXPECT_LT((brick.size - Vec3(0.01, 0.02, 0.03)).norm(), 1e-15);
+  EXPECT_DOUBLE_EQ(parts[2].max_size, 0.0025);
+  EXPECT_LT((spec.regions[2].magnetization.unit_at(Vec3::Zero()) - Vec3(0.6, 0, 0.8)).norm(),
+            1e-15); // normalised
+
+  EXPECT_DOUBLE_EQ(spec.geometry3d.outer.radius, 0.08);
+  EXPECT_DOUBLE_EQ(spec.geometry3d.options.default_size, 0.02);
+  ASSERT_EQ(spec.regions[0].material->name, "pm");
+  EXPECT_DOUBLE_EQ(spec.regions[0].material->B_r, 1.2);
+}
+
+TEST(CaseReader3D, ForceSpecsConvertLengthsAndKeepTheirLines) {
+  const auto spec = read_case(write_case("case3d_forces.yaml", case3d));
+  ASSERT_EQ(spec.forces.size(), 2u);
+  const auto& s = spec.forces[0];
+  EXPECT_EQ(s.kind, ForceSpec::Kind::sphere);
+  EXPECT_LT((s.center - Vec3(0, 0, 0.02)).norm(), 1e-15);
+  EXPECT_DOUBLE_EQ(s.radius, 0.015);
+  EXPECT_DOUBLE_EQ(s.check_radius, 0.017);
+  EXPECT_LT((s.torque_point - Vec3(0, 0, 0.01)).norm(), 1e-15);
+  EXPECT_EQ(s.line, 32);
+  const auto& b = spec.forces[1];
+  EXPECT_EQ(b.kind, ForceSpec::Kind::box);
+  EXPECT_LT((b.size - Vec3(0.02, 0.03, 0.04)).norm(), 1e-15);
+  EXPECT_LT((b.center - Vec3(0.04, 0, 0)).norm(), 1e-15);
+}
+
+TEST(CaseReader2D, MagnetizationAnglesSignsAndMetres) {
+  const auto spec = read_case(write_case("case2d.yaml", R"(unit: m
+materials:
+  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
+regions:
+  - {name: a, shape: disk, center: [0, 0], radius: 0.01, material: pm,
+     magnetization: {type: parallel, angle: 30}}
+  - {name: b, shape: disk, center: [0.03, 0], radius: 0.01, material: pm,
+     magnetization: {type: parallel, angle: 120, sign: -1}}
+  - {name: c, shape: annulus, center: [0, 0.04], r_inner: 0.005, r_outer: 0.01, material: pm,
+     magnetization: {type: radial, center: [0, 0.04]}}
+boundary: {type: open, radius: 0.1}
+mesh: {size: 0.01}
+)"));
+  EXPECT_DOUBLE_EQ(spec.length_unit, 1.0);
+  const double c30 = std::cos(pi / 6), s30 = 0.5;
+  EXPECT_LT((spec.regions[0].magnetization.unit_at(Vec3::Zero()) - Vec3(c30, s30, 0)).norm(),
+            1e-15);
+  // 120 degrees, reversed: 300 degrees.
+  EXPECT_LT((spec.regions[1].magnetization.unit_at(Vec3::Zero()) - Vec3(0.5, -c30, 0)).norm(),
+            1e-15);
+  EXPECT_LT((spec.regions[2].magnetization.unit_at(Vec3(-0.007, 0.04, 0)) - Vec3(-1, 0, 0)).norm(),
+            1e-15);
+  EXPECT_DOUBLE_EQ(spec.geometry2d.outer.radius, 0.1);
+}
+
+// Each edit of the good 3D case is an InputError at the line and field path it names.
+TEST(CaseReader3D, BadInputNamesTheExactLineAndFieldPath) {
+  struct Bad {
+    std::string from, to;
+    int line;
+    std::string field;
+  };
+  const std::vector<Bad> cases{
+      {"r_outer: 1\n", "r_outer: -1\n", 8, "regions[0].r_outer"},
+      {"angle: 90}", "angle: ninety}", 12, "regions[0].placement.rotate.angle"},
+      {"direction: [3, 0, 4]", "direction: [0, 0, 0]", 26, "regions[2].magnetization.direction"},
+      {"radius: 1.5,", "radius: 0,", 32, "forces[0].radius"},
+      {"size: [1, 2, 3]", "size: [1, 2]", 24, "regions[2].size"},
+      {"theta: [0, 90]", "theta: [0, 200]", 9, "regions[0].theta"},
+      {"sign: -1}", "sign: 2}", 11, "regions[0].magnetization.sign"},
+      {"height: 2\n", "hieght: 2\n", 17, "regions[1].hieght"},
+      {"shape: box", "shape: cube", 23, "regions[2].shape"},
+      {"unit: cm", "unit: furlong", 2, "unit"},
+  };
+  for (const auto& bad : cases) {
+    std::string text = case3d;
+    const auto at = text.find(bad.from);
+    ASSERT_NE(at, std::string::npos) << bad.from;
+    text.replace(at, bad.from.size(), bad.to);
+    try {
+      read_case(write_case("bad3d.yaml", text));
+      ADD_FAILURE() << "accepted: " << bad.to;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), bad.line) << e.what();
+      EXPECT_EQ(e.field(), bad.field) << e.what();
+      EXPECT_NE(std::string(e.what()).find("bad3d.yaml"), std::string::npos) << e.what();
+    }
+  }
+}
