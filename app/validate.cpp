@@ -215,7 +215,7 @@ int run_validate(const ValidateOptions& options) {
   run.wall_seconds = since(t_start);
 
   std::filesystem::create_directories(options.out_dir);
-  OutputStage stage(options.out_dir);
+  OutputStage stage(options.out_dir, "results.csv");
   write_validation_outputs(run, stage);
   stage.commit();
 

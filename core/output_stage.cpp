@@ -1,12 +1,14 @@
 #include "core/output_stage.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 #include <unistd.h>
 
 namespace magfem {
 
-OutputStage::OutputStage(std::filesystem::path out_dir) : out_dir_(std::move(out_dir)) {
+OutputStage::OutputStage(std::filesystem::path out_dir, std::string record)
+    : out_dir_(std::move(out_dir)), record_(std::move(record)) {
   staging_ = out_dir_ / (".magfem-staging-" + std::to_string(::getpid()));
   created_out_dir_ = !std::filesystem::exists(out_dir_);
 }
@@ -29,13 +31,46 @@ void OutputStage::write_text(const std::string& name, const std::string& text) {
   const auto path = path_for(name);
   std::ofstream out(path, std::ios::binary);
   out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  if (!out)
+    throw std::runtime_error("cannot write " + path.string());
 }
 
+namespace {
+
+std::vector<std::string> read_manifest(const std::filesystem::path& path) {
+  std::vector<std::string> names;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);)
+    // Only plain names: a manifest edited to point elsewhere cannot make us delete it.
+    if (!line.empty() && line.find('/') == std::string::npos && line != "." && line != "..")
+      names.push_back(line);
+  return names;
+}
+
+} // namespace
+
 void OutputStage::commit() {
-  for (const auto& name : names_) {
-    std::filesystem::rename(staging_ / name, out_dir_ / name);
-  }
+  namespace fs = std::filesystem;
+  const bool has_record = std::find(names_.begin(), names_.end(), record_) != names_.end();
+  std::string manifest;
+  for (const auto& name : names_)
+    manifest += name + "\n";
+  // Staged before anything moves, so a full disk fails here, with the old run intact.
+  write_text(manifest_name, manifest);
+  names_.pop_back();
+
+  // From here on the directory is in transition: no record until the end.
+  if (has_record)
+    fs::remove(out_dir_ / record_);
+  for (const auto& old : read_manifest(out_dir_ / manifest_name))
+    if (std::find(names_.begin(), names_.end(), old) == names_.end())
+      fs::remove(out_dir_ / old);
+  for (const auto& name : names_)
+    if (name != record_)
+      fs::rename(staging_ / name, out_dir_ / name);
+  fs::rename(staging_ / manifest_name, out_dir_ / manifest_name);
+  if (has_record)
+    fs::rename(staging_ / record_, out_dir_ / record_);
   committed_ = true;
 }
 
