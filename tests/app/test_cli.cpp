@@ -131,8 +131,8 @@ TEST(Cli, SolveWritesEveryOutputAndTheVtuHoldsTheField) {
     if (region->GetComponent(c, 0) != 0)
       continue;
     ++magnet_cells;
-    max_deviation = std::max({max_deviation, std::abs(b->GetComponent(c, 0) - 0.5),
-                              std::abs(b->GetComponent(c, 1))});
+    max_deviation = std::max(
+        {max_deviation, std::abs(b->GetComponent(c, 0) - 0.5), std::abs(b->GetComponent(c, 1))});
     mean_bx += b->GetComponent(c, 0);
     mean_hx += h->GetComponent(c, 0) * magfem::mu0;
   }
@@ -250,4 +250,24 @@ TEST(Cli, ParallelSweepEqualsTheSerialOne) {
   const std::string serial = read_text(one / "sweep.csv");
   EXPECT_EQ(std::count(serial.begin(), serial.end(), '\n'), 7); // header + 6 angles
   EXPECT_EQ(serial, read_text(two / "sweep.csv"));
+}
+
+// Rotated about (0, 0, 7) mm, the small sphere sits inside the large one at 180 degrees: that
+// position fails (no air sphere separates the group), the 0-degree one is kept and listed.
+TEST(Cli, SweepWithAFailingPositionExits3AndKeepsTheOthers) {
+  const auto out = fresh_dir("sweep_fail");
+  const auto r = run("sweep " + magfem::test::example("3d/two_spheres.yaml") +
+                     " --rotate arm --axis y --point 0,0,7 --angles 0,180 --mesh-scale 4 --out " +
+                     out.string());
+  EXPECT_EQ(r.status, 3) << r.out;
+  EXPECT_NE(r.out.find("1 of 2 positions failed"), std::string::npos) << r.out;
+  const std::string csv = read_text(out / "sweep.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2) << csv; // header + the 0-degree row
+  EXPECT_EQ(csv.find("\n180,"), std::string::npos) << csv;
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary.at("failed_positions"), 1);
+  const auto& failed = summary.at("positions").at(1);
+  EXPECT_EQ(failed.at("angle_deg"), 180.0);
+  EXPECT_FALSE(failed.at("ok").get<bool>());
+  EXPECT_NE(failed.at("error").get<std::string>().find("not separated"), std::string::npos);
 }
