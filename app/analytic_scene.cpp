@@ -13,7 +13,9 @@ namespace {
 // for its "infinitely permeable" boundary).
 constexpr double permeable_threshold = 1000.0;
 
-bool is_air(const Material& m) { return m.kind == MaterialKind::linear && m.mu_r == 1.0; }
+bool is_air(const Material& m) {
+  return m.kind == MaterialKind::linear && m.mu_r == 1.0;
+}
 
 bool full_sphere_at_origin(const Part3D& part) {
   const auto* seg = std::get_if<SphericalSegment>(&part.shape);
@@ -26,9 +28,12 @@ double max_extent(const AnalyticMagnet& m) {
   const double local = std::visit(
       [](const auto& s) -> double {
         using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, SphericalSegment>) return s.r_outer;
-        else if constexpr (std::is_same_v<T, Cylinder>) return std::hypot(s.r_outer, s.height);
-        else return 0.5 * s.size.norm();
+        if constexpr (std::is_same_v<T, SphericalSegment>)
+          return s.r_outer;
+        else if constexpr (std::is_same_v<T, Cylinder>)
+          return std::hypot(s.r_outer, s.height);
+        else
+          return 0.5 * s.size.norm();
       },
       m.shape);
   return m.placement.translation.norm() + local;
@@ -41,33 +46,39 @@ AnalyticScene analytic_scene(const CaseSpec& spec) {
     throw InputError(spec.file, 0, "dimension",
                      "the analytic models are 3D; 2D closed forms are compared in the tests");
   AnalyticScene scene;
-  std::vector<std::pair<const Part3D*, const RegionSpec*>> permeable;
+  std::vector<std::pair<const Part3D*, std::size_t>> permeable; // part, region index
   for (std::size_t i = 0; i < spec.regions.size(); ++i) {
     const auto& part = spec.geometry3d.parts[i];
     const auto& region = spec.regions[i];
     const Material& mat = *region.material;
     auto reject = [&](const std::string& why) {
-      throw InputError(spec.file, region.line, "regions." + region.name,
-                       "not representable by the analytic models: " + why);
+      throw InputError(spec.file, region.line, "regions[" + std::to_string(i) + "].material",
+                       "region " + region.name +
+                           " is not representable by the analytic models: " + why);
     };
-    if (is_air(mat)) continue;
+    if (is_air(mat))
+      continue;
     if (mat.is_magnet()) {
       if (mat.mu_r != 1.0)
-        scene.notes.push_back("region " + region.name + ": recoil mu_r " + std::to_string(mat.mu_r) +
+        scene.notes.push_back("region " + region.name + ": recoil mu_r " +
+                              std::to_string(mat.mu_r) +
                               " taken as 1 (the charge model assumes mu_r = 1)");
-      scene.magnets.push_back({part.shape, part.placement, region.magnetization, mat.B_r, region.name});
+      scene.magnets.push_back(
+          {part.shape, part.placement, region.magnetization, mat.B_r, region.name});
     } else if (mat.is_nonlinear()) {
       reject("nonlinear material '" + mat.name + "'");
     } else if (mat.mu_r >= permeable_threshold && full_sphere_at_origin(part)) {
-      permeable.emplace_back(&part, &region);
+      permeable.emplace_back(&part, i);
     } else {
       reject("linear material '" + mat.name + "' with mu_r " + std::to_string(mat.mu_r) +
              " (only mu_r = 1, or mu_r >= 1000 as full spheres/shells about the origin)");
     }
   }
   double extent = 0;
-  for (const auto& m : scene.magnets) extent = std::max(extent, max_extent(m));
-  for (const auto& [part, region] : permeable) {
+  for (const auto& m : scene.magnets)
+    extent = std::max(extent, max_extent(m));
+  for (const auto& [part, index] : permeable) {
+    const RegionSpec* region = &spec.regions[index];
     const auto& seg = std::get<SphericalSegment>(part->shape);
     if (extent <= seg.r_inner + 1e-12) {
       scene.spheres.push_back({Eigen::Vector3d::Zero(), seg.r_inner, true});
@@ -75,11 +86,13 @@ AnalyticScene analytic_scene(const CaseSpec& spec) {
       // The magnets must all lie outside the iron ball/shell: it acts as an inner core.
       for (const auto& m : scene.magnets)
         if (m.placement.translation.norm() < seg.r_outer)
-          throw InputError(spec.file, region->line, "regions." + region->name,
-                           "not representable: permeable shell between magnets");
+          throw InputError(spec.file, region->line, "regions[" + std::to_string(index) + "]",
+                           "not representable: permeable shell " + region->name +
+                               " between magnets");
       scene.spheres.push_back({Eigen::Vector3d::Zero(), seg.r_outer, false});
     }
-    scene.notes.push_back("region " + region->name + ": mu_r " + std::to_string(region->material->mu_r) +
+    scene.notes.push_back("region " + region->name + ": mu_r " +
+                          std::to_string(region->material->mu_r) +
                           " treated as infinitely permeable (imaging)");
   }
   if (spec.geometry3d.outer.kind == OuterKind3D::dirichlet)

@@ -31,10 +31,12 @@ Mesh2D mesh_case(const CaseSpec& spec) {
     return build_mesh_2d(spec.geometry2d);
   } catch (const MeshError& e) {
     // Point at the region that caused it when we know it, else at the mesh settings.
-    for (const auto& r : spec.regions)
-      if (r.name == e.part)
+    for (std::size_t i = 0; i < spec.regions.size(); ++i)
+      if (const auto& r = spec.regions[i]; r.name == e.part)
         throw InputError(spec.file, r.line,
-                         "regions." + r.name + (e.field.empty() ? "" : "." + e.field), e.reason);
+                         "regions[" + std::to_string(i) + "]" +
+                             (e.field.empty() ? "" : "." + e.field),
+                         e.reason);
     throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
                      e.reason);
   }

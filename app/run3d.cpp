@@ -48,10 +48,12 @@ Mesh3D mesh_case(const CaseSpec& spec) {
   try {
     return build_mesh_3d(spec.geometry3d, probe_surfaces(spec));
   } catch (const MeshError& e) {
-    for (const auto& r : spec.regions)
-      if (r.name == e.part)
+    for (std::size_t i = 0; i < spec.regions.size(); ++i)
+      if (const auto& r = spec.regions[i]; r.name == e.part)
         throw InputError(spec.file, r.line,
-                         "regions." + r.name + (e.field.empty() ? "" : "." + e.field), e.what());
+                         "regions[" + std::to_string(i) + "]" +
+                             (e.field.empty() ? "" : "." + e.field),
+                         e.what());
     throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
                      e.what());
   }

@@ -1,5 +1,7 @@
 #include "casefile/reader_helpers.hpp"
 
+#include "core/input_error.hpp"
+
 #include "casefile/case_spec.hpp"
 #include "core/constants.hpp"
 #include "materials/material_library.hpp"
@@ -9,10 +11,14 @@ namespace magfem {
 
 double unit_scale(const YamlNode& node) {
   const std::string u = node.as_string();
-  if (u == "m") return 1.0;
-  if (u == "cm") return 1e-2;
-  if (u == "mm") return 1e-3;
-  if (u == "um") return 1e-6;
+  if (u == "m")
+    return 1.0;
+  if (u == "cm")
+    return 1e-2;
+  if (u == "mm")
+    return 1e-3;
+  if (u == "um")
+    return 1e-6;
   node.fail("unknown length unit '" + u + "' (use m, cm, mm or um)");
 }
 
@@ -28,13 +34,15 @@ Eigen::Vector3d read_point3(const YamlNode& node, double scale) {
 
 Eigen::Vector3d read_direction3(const YamlNode& node) {
   const Eigen::Vector3d d = read_point3(node, 1.0);
-  if (d.norm() == 0) node.fail("a direction must not be the zero vector");
+  if (d.norm() == 0)
+    node.fail("a direction must not be the zero vector");
   return d.normalized();
 }
 
 std::pair<double, double> read_angle_range(const YamlNode& node, double lo, double hi) {
   const auto v = node.as_doubles(2);
-  if (!(v[0] < v[1])) node.fail("the range must increase ([min, max] in degrees)");
+  if (!(v[0] < v[1]))
+    node.fail("the range must increase ([min, max] in degrees)");
   if (v[0] < lo || v[1] > hi)
     node.fail("the range must lie within [" + std::to_string(lo) + ", " + std::to_string(hi) +
               "] degrees");
@@ -44,9 +52,12 @@ std::pair<double, double> read_angle_range(const YamlNode& node, double lo, doub
 void read_region_material(const YamlNode& r, const CaseSpec& c, const MaterialLibrary& lib,
                           RegionSpec& spec) {
   const std::string mat = r.has("material") ? r.at("material").as_string() : "air";
-  spec.material = &resolve_material(mat, c.materials, lib, r.has("material") ? r.at("material") : r);
+  spec.material =
+      &resolve_material(mat, c.materials, lib, r.has("material") ? r.at("material") : r);
   if (spec.material->is_magnet() && !r.has("magnetization") && !r.has("pattern"))
-    r.fail("magnet region '" + spec.name + "' (material '" + mat + "') needs a magnetization");
+    throw InputError(r.file(), r.line(), r.path() + ".magnetization",
+                     "magnet region '" + spec.name + "' (material '" + mat +
+                         "') needs a magnetization");
   if (!spec.material->is_magnet() && (r.has("magnetization") || r.has("pattern")))
     (r.has("magnetization") ? r.at("magnetization") : r.at("pattern"))
         .fail("material '" + mat + "' is not a permanent magnet");
