@@ -1,10 +1,12 @@
 #include "app/analytic_scene.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <variant>
 
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "mesh/part_overlap3d.hpp"
 
 namespace magfem {
 namespace {
@@ -37,6 +39,32 @@ double max_extent(const AnalyticMagnet& m) {
       },
       m.shape);
   return m.placement.translation.norm() + local;
+}
+
+// The charge model superposes magnets: two that share volume would be added up without
+// complaint (the mesher refuses them in FE). Parts that only touch are fine.
+void reject_overlaps(const CaseSpec& spec) {
+  const auto& parts = spec.geometry3d.parts;
+  for (std::size_t j = 0; j < parts.size(); ++j) {
+    if (is_air(*spec.regions[j].material))
+      continue;
+    for (std::size_t i = 0; i < j; ++i) {
+      if (is_air(*spec.regions[i].material))
+        continue;
+      auto x = overlap_point(parts[i], parts[j], 12);
+      if (!x)
+        x = overlap_point(parts[j], parts[i], 12);
+      if (!x)
+        continue;
+      const Vec3 p = *x / spec.length_unit;
+      char where[96];
+      std::snprintf(where, sizeof where, "(%.3g, %.3g, %.3g) %s", p.x(), p.y(), p.z(),
+                    spec.unit_name.c_str());
+      throw InputError(spec.file, spec.regions[j].line, "regions[" + std::to_string(j) + "]",
+                       "region " + parts[j].name + " overlaps region " + parts[i].name +
+                           " (e.g. at " + where + "); parts must not share volume");
+    }
+  }
 }
 
 } // namespace
@@ -74,6 +102,7 @@ AnalyticScene analytic_scene(const CaseSpec& spec) {
              " (only mu_r = 1, or mu_r >= 1000 as full spheres/shells about the origin)");
     }
   }
+  reject_overlaps(spec);
   double extent = 0;
   for (const auto& m : scene.magnets)
     extent = std::max(extent, max_extent(m));
