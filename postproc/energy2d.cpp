@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/constants.hpp"
+#include "solver/curl2d.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/triangle_lagrange.hpp"
 #include "solver/triangle_quadrature.hpp"
@@ -68,7 +69,9 @@ EnergySummary2D summarize_energy_2d(const Field2D& field, const std::vector<std:
       const Eigen::Vector2d x = field.point(t, q.bary);
       const Eigen::Vector2d b = field.B(t, q.bary);
       double w = 0;
-      if (in_shell) {
+      if (in_shell && problem.axisymmetric()) {
+        w = 0.5 * nu0 * b.dot(shell.curl_metric_meridional(x) * b);
+      } else if (in_shell) {
         const Eigen::Vector2d grad_a(-b.y(), b.x());
         w = 0.5 * nu0 * grad_a.dot(shell.metric<2>(x) * grad_a);
       } else {
@@ -78,7 +81,7 @@ EnergySummary2D summarize_energy_2d(const Field2D& field, const std::vector<std:
         // b_eff = B - B_r m_hat; for non-magnets it is B itself.
         w = energy_density(mat, mat.is_magnet() ? Eigen::Vector2d(h / nu) : b);
       }
-      reg.energy_J_per_m += q.weight * area * w;
+      reg.energy_J_per_m += q.weight * area * measure_2d(problem.symmetry, x) * w;
     }
     // B is a polynomial of degree order-1 <= 1 per element: its maximum is at a corner.
     if (!in_shell)

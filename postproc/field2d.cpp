@@ -1,5 +1,6 @@
 #include "postproc/field2d.hpp"
 
+#include "solver/curl2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 
 namespace magfem {
@@ -31,7 +32,8 @@ Eigen::Vector2d Field2D::B(std::size_t t, const std::array<double, 3>& bary) con
   const int* dof = dofs_.element_dofs(t);
   Eigen::Vector2d grad_a = Eigen::Vector2d::Zero();
   for (int i = 0; i < count; ++i) grad_a += a_[dof[i]] * grad[i];
-  return {grad_a.y(), -grad_a.x()};
+  const double a = problem_.axisymmetric() ? A(t, bary) : 0.0;
+  return curl_2d(problem_.symmetry, a, grad_a, point(t, bary));
 }
 
 Eigen::Vector2d Field2D::H(std::size_t t, const Eigen::Vector2d& x, const Eigen::Vector2d& b) const {
