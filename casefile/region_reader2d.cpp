@@ -15,9 +15,9 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 
 // Shape keys allowed per primitive, besides the common region keys.
-const std::vector<std::string> region_common = {"name",          "material", "shape",
-                                                "magnetization", "current_density",
-                                                "turns",         "current", "mesh_size"};
+const std::vector<std::string> region_common = {"name",          "material",        "shape",
+                                                "magnetization", "current_density", "turns",
+                                                "current",       "mesh_size",       "group"};
 
 std::vector<std::string> with_common(std::initializer_list<const char*> extra) {
   std::vector<std::string> keys = region_common;
@@ -163,6 +163,11 @@ void read_region(const YamlNode& r, double s, const CaseSpec& c, const MaterialL
   if (axi)
     to_half_plane(r, part.shape, s);
   if (r.has("mesh_size")) part.max_size = r.at("mesh_size").as_positive() * s;
+  if (r.has("group")) {
+    if (!axi)
+      r.at("group").fail("2D groups exist in axisymmetric cases only (sweep --move)");
+    spec.group = r.at("group").as_string();
+  }
   read_region_material(r, c, lib, spec);
   if (r.has("magnetization"))
     spec.magnetization = read_magnetization(r.at("magnetization"), s, axi);
