@@ -16,12 +16,15 @@
 namespace magfem {
 
 // B at point x from the potential's value a and gradient there. On the axis (r = 0 exactly)
-// A/r is replaced by its limit dA/dr.
+// A/r is replaced by its limit dA/dr, and B_r = -dA/dz by 0: A vanishes all along the axis
+// (an element touching it at one vertex only would otherwise report its own slope there).
 inline Eigen::Vector2d curl_2d(Symmetry2D s, double a, const Eigen::Vector2d& grad,
                                const Eigen::Vector2d& x) {
   if (s == Symmetry2D::planar)
     return {grad.y(), -grad.x()};
-  return {-grad.y(), grad.x() + (x.x() > 0 ? a / x.x() : grad.x())};
+  if (x.x() > 0)
+    return {-grad.y(), grad.x() + a / x.x()};
+  return {0.0, 2 * grad.x()};
 }
 
 // Volume per unit cross-section area at x: 1 (per metre of length) or 2 pi r (whole turn).
