@@ -1,12 +1,14 @@
 #include "app/force2d.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "app/run2d.hpp"
 #include "core/input_error.hpp"
 #include "postproc/lorentz2d.hpp"
 #include "postproc/maxwell_stress2d.hpp"
+#include "postproc/maxwell_stress_axi.hpp"
 #include "postproc/point_locator2d.hpp"
 
 namespace magfem {
@@ -37,6 +39,34 @@ ForceTorque stress_circle(const FieldSampler2D& sampler, bool axi, const Eigen::
                           double radius, const Eigen::Vector2d& p) {
   return axi ? stress_sphere_axi(sampler, c, radius)
              : maxwell_stress_circle_2d(sampler, c, radius, p);
+}
+
+// F_z on a region by the stress tensor on the revolved box `margin` outside the bounding box
+// of its mesh nodes (a box hugs cylinders, rings and coils, which a sphere about the axis
+// often cannot separate from their neighbours).
+ForceTorque stress_contour_axi(const FieldSampler2D& sampler, const Mesh2D& mesh, int part,
+                               double margin) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector2d hi = -lo;
+  for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+    if (mesh.triangle_part[t] == part)
+      for (const int v : mesh.triangles[t]) {
+        lo = lo.cwiseMin(mesh.nodes[v]);
+        hi = hi.cwiseMax(mesh.nodes[v]);
+      }
+  const double r_min = lo.x() - margin > 0 ? lo.x() - margin : 0.0;
+  const auto contour = box_contour(r_min, hi.x() + margin, lo.y() - margin, hi.y() + margin);
+  ForceTorque ft;
+  ft.force.z() =
+      maxwell_stress_axial_force([&](const Eigen::Vector2d& x) { return sampler.B(x); }, contour);
+  return ft;
+}
+
+int part_index(const Run2D& run, const std::string& name) {
+  for (std::size_t i = 0; i < run.spec.regions.size(); ++i)
+    if (run.spec.regions[i].name == name)
+      return static_cast<int>(i);
+  return -1; // the reader checked the names
 }
 
 ForceResult from(const ForceTorque& ft, double length) {
@@ -87,6 +117,12 @@ std::vector<ForceResult> compute_forces_2d(const Run2D& run) {
         r.method = "lorentz";
         break;
       }
+      case ForceSpec::Kind::contour:
+        r = from(
+            stress_contour_axi(sampler, run.mesh, part_index(run, f.regions.front()), f.margin),
+            length);
+        r.method = "stress_contour";
+        break;
       case ForceSpec::Kind::sphere:
       case ForceSpec::Kind::box:
         continue; // 3D only; the reader does not allow it in 2D

@@ -72,6 +72,17 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
     for (const auto& reg : c.regions)
       known.push_back(reg.name);
     spec.regions = read_names(f.at("regions"), known, "region");
+  } else if (type == "contour" && c.axisymmetric()) {
+    f.allow_keys({"name", "type", "region", "margin"});
+    spec.kind = ForceSpec::Kind::contour;
+    std::vector<std::string> known;
+    for (const auto& reg : c.regions)
+      known.push_back(reg.name);
+    const auto region = f.at("region");
+    if (std::find(known.begin(), known.end(), region.as_string()) == known.end())
+      region.fail("no region named '" + region.as_string() + "'");
+    spec.regions = {region.as_string()};
+    spec.margin = f.at("margin").as_positive() * s;
   } else if (type == "box" && dim == 3) {
     f.allow_keys({"name", "type", "center", "size", "torque_point", "check_size"});
     spec.kind = ForceSpec::Kind::box;
@@ -96,7 +107,7 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
     spec.regions = read_names(f.at("coils"), known, "coil");
   } else {
     f.at("type").fail("unknown force type '" + type + "' for dimension " + std::to_string(dim) +
-                      (c.axisymmetric() ? " (circle, lorentz)"
+                      (c.axisymmetric() ? " (circle, contour, lorentz)"
                        : dim == 2       ? " (circle, band, lorentz)"
                                         : " (sphere, box, lorentz)"));
   }
