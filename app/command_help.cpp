@@ -36,13 +36,17 @@ constexpr std::array<CommandHelp, 5> commands{{
     {"sweep",
      "magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
      "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
-     "                    [--surface-radius R] [--jobs N] [--out DIR]",
-     "torque and force while a group of parts rotates",
+     "                    [--surface-radius R] [--jobs N] [--out DIR]\n"
+     "       magfem sweep CASE.yaml --move GROUP --axis z --positions START:STEP:END|A,B,C\n"
+     "                    [--jobs N] [--out DIR]          (axisymmetric cases)",
+     "torque and force while a group of parts rotates (or, axisymmetric, moves)",
      "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
      "  the origin and force on the group), sweep.png and summary.json. FE by default\n"
      "  (stress tensor on a sphere of radius R in the air gap, default mid-gap) or\n"
      "  --analytic (charge interaction). Lengths in the case's unit, angles in degrees.\n"
+     "  Axisymmetric cases: --move translates GROUP along the axis by the positions (mm)\n"
+     "  and writes sweep.csv (position_mm,Fz_N: the Lorentz force on the group).\n"
      "  --jobs N   positions solved in parallel (default: one per core)\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",

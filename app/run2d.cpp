@@ -13,6 +13,7 @@
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesher2d.hpp"
+#include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probes2d.hpp"
 #include "postproc/vtu_export2d.hpp"
@@ -60,6 +61,7 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
   p.mesh = &mesh;
   p.order = spec.order;
   p.boundary = spec.geometry2d.outer.kind;
+  p.symmetry = spec.geometry2d.symmetry;
   p.air.material = MaterialLibrary::bundled().find("air");
   const auto areas = part_areas(mesh, spec.regions.size());
   for (std::size_t i = 0; i < spec.regions.size(); ++i) {
@@ -71,6 +73,33 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
     p.parts.push_back(phys);
   }
   return p;
+}
+
+std::vector<CoilResult2D> coil_results(const Run2D& run) {
+  std::vector<CoilResult2D> out;
+  if (!run.spec.axisymmetric())
+    return out;
+  for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
+    const RegionSpec& r = run.spec.regions[i];
+    if (r.turns == 0)
+      continue;
+    CoilResult2D c{r.name, r.turns, r.current, 0, 0};
+    c.flux_linkage_Wb = flux_linkage_axi(*run.field, static_cast<int>(i), r.turns);
+    c.inductance_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
+    out.push_back(c);
+  }
+  return out;
+}
+
+nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
+  auto j = nlohmann::ordered_json::array();
+  for (const auto& c : coils)
+    j.push_back({{"name", c.name},
+                 {"turns", c.turns},
+                 {"current_A", c.current_A},
+                 {"flux_linkage_Wb", c.flux_linkage_Wb},
+                 {"inductance_H", c.inductance_H}});
+  return j;
 }
 
 } // namespace
@@ -113,6 +142,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
   run->forces = compute_forces_2d(*run);
+  run->coils = coil_results(*run);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -141,7 +171,11 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   nlohmann::ordered_json j;
   add_provenance(j);
   j["case"] = run.spec.file;
-  j["dimension"] = 2;
+  const bool axi = run.spec.axisymmetric();
+  if (axi)
+    j["dimension"] = "axi";
+  else
+    j["dimension"] = 2;
   j["order"] = run.spec.order;
   j["elements"] = run.mesh.n_triangles();
   j["nodes"] = run.mesh.n_nodes();
@@ -150,7 +184,9 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
   const double length = run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
   j["energy_J"] = run.energy.total_J_per_m * length;
-  j["energy_per"] = run.spec.stack_length > 0 ? "stack" : "metre of length";
+  j["energy_per"] = axi                         ? "body of revolution"
+                    : run.spec.stack_length > 0 ? "stack"
+                                                : "metre of length";
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
   j["residual_history"] = run.report.residual_history;
@@ -174,10 +210,14 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   for (const auto& p : run.probes)
     j["probes"].push_back(p.name + ".csv");
   if (!run.forces.empty()) {
-    j["forces_per"] = run.spec.stack_length > 0 ? "stack" : "metre of length";
+    j["forces_per"] = axi                         ? "body of revolution"
+                      : run.spec.stack_length > 0 ? "stack"
+                                                  : "metre of length";
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
   }
+  if (!run.coils.empty())
+    j["coils"] = coils_json(run.coils);
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
@@ -192,7 +232,8 @@ std::string describe_run_2d(const Run2D& run) {
                 run.spec.order, run.dofs->n_dofs(), run.report.linear_solver.c_str(),
                 run.report.iterations, run.report.residual_history.back());
   s += buf;
-  std::snprintf(buf, sizeof buf, "energy   %.6g J/m\n", run.energy.total_J_per_m);
+  std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
+                run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
   s += buf;
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.area_m2 > 0) {
@@ -200,7 +241,12 @@ std::string describe_run_2d(const Run2D& run) {
                     r.peak_B_T);
       s += buf;
     }
-  s += describe_forces(run.forces, run.spec.stack_length <= 0);
+  s += describe_forces(run.forces, run.spec.stack_length <= 0 && !run.spec.axisymmetric());
+  for (const auto& c : run.coils) {
+    std::snprintf(buf, sizeof buf, "coil     %-20s linkage %.6g Wb, L = linkage / I = %.6g H\n",
+                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H);
+    s += buf;
+  }
   std::snprintf(buf, sizeof buf,
                 "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
                 run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,

@@ -29,6 +29,13 @@ struct RunOverrides {
   double domain_radius = 0; // metres; 0 = as in the case
 };
 
+// An axisymmetric coil (region with turns and current): its flux linkage with the total field
+// and linkage / current (the self-inductance when it is the only source in linear media).
+struct CoilResult2D {
+  std::string name;
+  double turns = 0, current_A = 0, flux_linkage_Wb = 0, inductance_H = 0;
+};
+
 struct Run2D {
   CaseSpec spec;
   Mesh2D mesh;
@@ -39,6 +46,7 @@ struct Run2D {
   EnergySummary2D energy;
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
+  std::vector<CoilResult2D> coils; // axisymmetric only
   Timings timings;
 };
 

@@ -252,8 +252,7 @@ StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
   return s;
 }
 
-std::vector<double> parse_angle_list(const std::string& text) {
-  const std::string option = "--angles";
+std::vector<double> parse_angle_list(const std::string& text, const std::string& option) {
   if (text.find(':') != std::string::npos) {
     const auto v = parse_list(option, text, ':');
     if (v.size() != 3 || !(v[1] > 0) || v[2] < v[0])
@@ -266,7 +265,7 @@ std::vector<double> parse_angle_list(const std::string& text) {
   }
   auto out = parse_list(option, text, ',');
   if (out.empty())
-    throw InputError(cli, 0, option, "no angles given");
+    throw InputError(cli, 0, option, "no values given");
   return out;
 }
 

@@ -57,8 +57,10 @@ struct StressSurface {
 StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
                              std::optional<double> radius);
 
-// Parses "START:STEP:END" (END included within round-off) or "A,B,C"; throws InputError.
-std::vector<double> parse_angle_list(const std::string& text);
+// Parses "START:STEP:END" (END included within round-off) or "A,B,C"; throws InputError
+// naming `option` (also used for --positions).
+std::vector<double> parse_angle_list(const std::string& text,
+                                     const std::string& option = "--angles");
 // Parses "x,y,z" (three numbers); throws InputError naming the option.
 Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text);
 // Parses x|y|z or "ax,ay,az"; throws InputError.

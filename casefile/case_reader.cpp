@@ -100,11 +100,21 @@ void read_solver(const YamlNode& n, CaseSpec& c) {
          ")");
 }
 
-void read_line_probe(const YamlNode& p, double s, int dim, double domain, ProbeSpec& probe) {
+void check_half_plane(const YamlNode& p, double r, const std::string& what) {
+  if (r < 0)
+    p.fail("the " + what + " has r < 0: axisymmetric cases live in the half plane r >= 0");
+}
+
+void read_line_probe(const YamlNode& p, double s, int dim, bool axi, double domain,
+                     ProbeSpec& probe) {
   p.allow_keys({"name", "type", "start", "end", "points"});
   probe.kind = ProbeSpec::Kind::line;
   if (dim == 2) {
     const Eigen::Vector2d a = read_point2(p.at("start"), s), b = read_point2(p.at("end"), s);
+    if (axi) {
+      check_half_plane(p.at("start"), a.x(), "start point");
+      check_half_plane(p.at("end"), b.x(), "end point");
+    }
     probe.start = {a.x(), a.y(), 0};
     probe.end = {b.x(), b.y(), 0};
   } else {
@@ -117,7 +127,7 @@ void read_line_probe(const YamlNode& p, double s, int dim, double domain, ProbeS
     outside(p, probe, domain, s);
 }
 
-void read_circle_probe(const YamlNode& p, double s, double domain, ProbeSpec& probe) {
+void read_circle_probe(const YamlNode& p, double s, bool axi, double domain, ProbeSpec& probe) {
   p.allow_keys({"name", "type", "center", "radius", "points", "angle_start", "angle_end"});
   probe.kind = ProbeSpec::Kind::circle;
   const Eigen::Vector2d ctr =
@@ -129,6 +139,13 @@ void read_circle_probe(const YamlNode& p, double s, double domain, ProbeSpec& pr
   probe.angle_end = p.get_double("angle_end", 360.0) * deg_to_rad;
   if (!(probe.angle_end > probe.angle_start))
     p.at("angle_end").fail("angle_end must exceed angle_start");
+  // An arc in the r-z plane must stay at r >= 0: check its leftmost point.
+  if (axi) {
+    const double a0 = probe.angle_start, a1 = probe.angle_end;
+    const double left = pi + 2 * pi * std::ceil((a0 - pi) / (2 * pi)); // first angle pi >= a0
+    const double cos_min = left <= a1 ? -1.0 : std::min(std::cos(a0), std::cos(a1));
+    check_half_plane(p, ctr.x() + probe.radius * cos_min + 1e-12 * domain, "arc");
+  }
   if (ctr.norm() + probe.radius > domain)
     outside(p, probe, domain, s);
 }
@@ -186,9 +203,9 @@ ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
   const double s = c.length_unit;
   const double domain = c.dimension == 2 ? c.geometry2d.outer.radius : c.geometry3d.outer.radius;
   if (type == "line")
-    read_line_probe(p, s, c.dimension, domain, probe);
+    read_line_probe(p, s, c.dimension, c.axisymmetric(), domain, probe);
   else if (type == "circle" && c.dimension == 2)
-    read_circle_probe(p, s, domain, probe);
+    read_circle_probe(p, s, c.axisymmetric(), domain, probe);
   else if (type == "sphere" && c.dimension == 3)
     read_sphere_probe(p, s, domain, probe);
   else if (type == "points" && c.dimension == 3)
@@ -210,17 +227,23 @@ CaseSpec read_case(const std::string& path) {
                    "regions", "coils", "boundary", "mesh", "solver", "probes", "forces", "output"});
   CaseSpec c;
   c.file = path;
-  c.dimension = root.get_int("dimension", 2);
+  if (root.has("dimension") && root.at("dimension").as_string() == "axi") {
+    c.dimension = 2;
+    c.geometry2d.symmetry = Symmetry2D::axisymmetric;
+  } else {
+    c.dimension = root.get_int("dimension", 2);
+  }
   if (c.dimension != 2 && c.dimension != 3)
-    root.at("dimension").fail("dimension must be 2 or 3");
+    root.at("dimension").fail("dimension must be 2, 3 or axi");
+  const bool axi = c.axisymmetric();
   if (root.has("unit")) {
     c.unit_name = root.at("unit").as_string();
     c.length_unit = unit_scale(root.at("unit"));
   }
   const double s = c.length_unit;
   if (root.has("stack_length")) {
-    if (c.dimension == 3)
-      root.at("stack_length").fail("stack_length applies to 2D cases only");
+    if (c.dimension == 3 || axi)
+      root.at("stack_length").fail("stack_length applies to planar 2D cases only");
     c.stack_length = root.at("stack_length").as_positive() * s;
   }
   const auto& lib = MaterialLibrary::bundled();

@@ -19,8 +19,10 @@ struct RegionSpec {
   std::string name;
   const Material* material = nullptr; // resolved: case materials or the bundled library
   Magnetization magnetization;
-  double current_density = 0; // A/m^2 along +z
+  double current_density = 0; // A/m^2 along +z (planar) or +phi (axisymmetric)
   double ampere_turns = 0;    // if non-zero, J = ampere_turns / meshed area of the region
+  double turns = 0, current = 0; // when given as turns and current (A); ampere_turns = N I
+  std::string group;             // axisymmetric: sweep group (magfem sweep --move)
   int line = 0;               // line of the region in the case file
 };
 
@@ -42,6 +44,11 @@ struct CaseSpec {
   int boundary_line = 0;
   std::vector<int> coil_lines; // parallel to geometry3d.coils
   bool coil_inductance = true; // 3D: the inductance matrix (one extra solve per coil)
+
+  // `dimension: axi`: a 2D case in the r-z half plane (geometry2d.symmetry says so).
+  bool axisymmetric() const {
+    return dimension == 2 && geometry2d.symmetry == Symmetry2D::axisymmetric;
+  }
 };
 
 // Reads and validates a case file. Every problem is an InputError naming file, line, field.

@@ -48,12 +48,15 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
     spec.radius = f.at("radius").as_positive() * s;
     if (spec.center.norm() + spec.radius >= domain)
       f.at("radius").fail("the surface leaves the meshed domain");
+    // Axisymmetric: the circle revolves into a sphere, which is closed only about the axis.
+    if (c.axisymmetric() && spec.center.x() != 0)
+      f.at("center").fail("an axisymmetric stress circle must be centred on the axis (r = 0)");
     if (f.has("check_radius")) {
       spec.check_radius = f.at("check_radius").as_positive() * s;
       if (spec.center.norm() + spec.check_radius >= domain)
         f.at("check_radius").fail("the surface leaves the meshed domain");
     }
-  } else if (type == "band" && dim == 2) {
+  } else if (type == "band" && dim == 2 && !c.axisymmetric()) {
     f.allow_keys({"name", "type", "center", "r_inner", "r_outer", "torque_point"});
     spec.kind = ForceSpec::Kind::band;
     spec.r_inner = f.at("r_inner").as_positive() * s;
@@ -69,6 +72,17 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
     for (const auto& reg : c.regions)
       known.push_back(reg.name);
     spec.regions = read_names(f.at("regions"), known, "region");
+  } else if (type == "contour" && c.axisymmetric()) {
+    f.allow_keys({"name", "type", "region", "margin"});
+    spec.kind = ForceSpec::Kind::contour;
+    std::vector<std::string> known;
+    for (const auto& reg : c.regions)
+      known.push_back(reg.name);
+    const auto region = f.at("region");
+    if (std::find(known.begin(), known.end(), region.as_string()) == known.end())
+      region.fail("no region named '" + region.as_string() + "'");
+    spec.regions = {region.as_string()};
+    spec.margin = f.at("margin").as_positive() * s;
   } else if (type == "box" && dim == 3) {
     f.allow_keys({"name", "type", "center", "size", "torque_point", "check_size"});
     spec.kind = ForceSpec::Kind::box;
@@ -93,7 +107,9 @@ ForceSpec read_force(const YamlNode& f, const CaseSpec& c) {
     spec.regions = read_names(f.at("coils"), known, "coil");
   } else {
     f.at("type").fail("unknown force type '" + type + "' for dimension " + std::to_string(dim) +
-                      (dim == 2 ? " (circle, band, lorentz)" : " (sphere, box, lorentz)"));
+                      (c.axisymmetric() ? " (circle, contour, lorentz)"
+                       : dim == 2       ? " (circle, band, lorentz)"
+                                        : " (sphere, box, lorentz)"));
   }
   return spec;
 }

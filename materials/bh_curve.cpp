@@ -1,6 +1,7 @@
 #include "materials/bh_curve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <sstream>
@@ -237,6 +238,32 @@ void BhCurve::nu_of_b2(double b2, double& nu, double& dnu_db2) const {
   secant_permeability(h, b, d, mu, dmu);
   nu = 1.0 / mu;
   dnu_db2 = -dmu * nu * nu * nu / d;
+}
+
+double BhCurve::energy_density(double b) const {
+  static constexpr std::array<double, 8> x = {
+      -0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+      0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+  static constexpr std::array<double, 8> w = {
+      0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+      0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  const auto piece = [&](double lo, double hi) {
+    double sum = 0;
+    for (int i = 0; i < 8; ++i)
+      sum += w[i] * h_of_b(lo + 0.5 * (hi - lo) * (x[i] + 1));
+    return 0.5 * (hi - lo) * sum;
+  };
+  b = std::abs(b);
+  double sum = 0, lo = 0;
+  for (const double k : b_) {
+    if (k <= lo)
+      continue;
+    if (k >= b)
+      break;
+    sum += piece(lo, k);
+    lo = k;
+  }
+  return sum + piece(lo, b);
 }
 
 } // namespace magfem

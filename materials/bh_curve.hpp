@@ -46,6 +46,10 @@ public:
   double dbdh(double h) const;
   double h_of_b(double b) const;    // b >= 0
   double dhdb(double b) const;
+  // Stored energy density integral_0^|b| h(b') db' (J/m^3): 8-point Gauss-Legendre on each
+  // piece between the table's B values (the curve is smooth between them, not across them, nor
+  // across the last one where the extrapolation begins).
+  double energy_density(double b) const;
 
   // Reluctivity form used by B-formulations: nu(b2) = h(b)/b, b = sqrt(b2), and its
   // derivative with respect to b2 (finite as b -> 0).

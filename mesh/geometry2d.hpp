@@ -64,7 +64,13 @@ struct MeshOptions2D {
   double size_scale = 1.0;       // multiplies every size (uniform refinement studies)
 };
 
+// Planar: the xy-plane (A_z). Axisymmetric: the r-z half plane x = r >= 0, y = z, standing for
+// a body of revolution about the y axis; the domain and shell are then half disks whose
+// straight side is the axis.
+enum class Symmetry2D { planar, axisymmetric };
+
 struct Geometry2D {
+  Symmetry2D symmetry = Symmetry2D::planar;
   std::vector<Part2D> parts;
   OuterBoundary2D outer;
   MeshOptions2D options;

@@ -23,6 +23,7 @@ struct Mesh2D {
   std::vector<std::array<int, 3>> triangles;    // counter-clockwise
   std::vector<int> triangle_part;               // Geometry2D::parts index or region_*
   std::vector<std::array<int, 2>> outer_edges;  // edges on the outermost boundary
+  std::vector<std::array<int, 2>> axis_edges;   // axisymmetric: edges on the axis r = 0
   double shell_inner_radius = 0;                // set when the boundary is open
   double shell_outer_radius = 0;
   MeshQuality2D quality;

@@ -121,7 +121,7 @@ double merge_distance(const Geometry2D& g) {
   return 0.01 * std::min(1.0, o.size_scale) * o.chord_tolerance / o.gap_layers;
 }
 
-void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge) {
+void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge, bool axi) {
   // A square frame around the outermost circle keeps that circle off the convex hull: a point
   // CGAL puts on a hull edge by rounding lands just outside it and leaves a flat triangle.
   const Outline2D& outer = map.shell() ? *map.shell() : map.domain();
@@ -135,7 +135,13 @@ void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge) {
   for (std::size_t i = 0; i < map.n_parts(); ++i)
     for (const auto& loop : map.part(i).loops())
       loops.push_back(loop);
-  const ConstraintSet2D set = build_constraint_set(loops, merge);
+  ConstraintSet2D set = build_constraint_set(loops, merge);
+  // Arc ends on the axis come out of cos(pi/2) a hair off it; exactly on it, CGAL splits the
+  // axis side there instead of leaving a sliver beside it.
+  if (axi)
+    for (Vec2& p : set.points)
+      if (std::abs(p.x()) < merge)
+        p.x() = 0;
   std::vector<VertexHandle> vs;
   FaceHandle hint;
   for (const Vec2& p : set.points) {
@@ -219,7 +225,7 @@ void collect_interfaces(const CDT& cdt, const RegionMap2D& map, std::vector<Size
 // Pass 1: the size field from interfaces and gaps of the outlines at their own sizes.
 SizeField2D build_size_field(const Geometry2D& g, const RegionMap2D& coarse) {
   CDT cdt;
-  insert_outlines(cdt, coarse, merge_distance(g));
+  insert_outlines(cdt, coarse, merge_distance(g), g.symmetry == Symmetry2D::axisymmetric);
   classify(cdt, coarse);
   std::vector<SizeSource2D> sources;
   std::vector<AirBoundary2D> air;
@@ -284,6 +290,15 @@ void snap_to_circle(Mesh2D& mesh, const std::vector<std::array<int, 2>>& edges, 
       mesh.nodes[v] *= r / mesh.nodes[v].norm();
 }
 
+// The boundary edges on the axis (both ends at x = 0 exactly, see insert_outlines) move from
+// outer_edges to axis_edges.
+void split_off_axis(Mesh2D& mesh) {
+  std::vector<std::array<int, 2>> outer;
+  for (const auto& e : mesh.outer_edges)
+    (mesh.nodes[e[0]].x() == 0 && mesh.nodes[e[1]].x() == 0 ? mesh.axis_edges : outer).push_back(e);
+  mesh.outer_edges = std::move(outer);
+}
+
 Mesh2D export_mesh(CDT& cdt, const Geometry2D& g, const RegionMap2D& map) {
   Mesh2D mesh;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
@@ -316,6 +331,8 @@ Mesh2D export_mesh(CDT& cdt, const Geometry2D& g, const RegionMap2D& map) {
     }
   remove_slivers(mesh, nb);
   mesh.outer_edges = boundary_edges(mesh, nb);
+  if (g.symmetry == Symmetry2D::axisymmetric)
+    split_off_axis(mesh);
   const double r1 = g.outer.radius;
   if (g.outer.kind == OuterKind::open) {
     mesh.shell_inner_radius = r1;
@@ -361,7 +378,7 @@ Mesh2D build_mesh_2d(const Geometry2D& g) {
       coarse.shell_size());
   try {
     CDT cdt;
-    insert_outlines(cdt, map, merge_distance(g));
+    insert_outlines(cdt, map, merge_distance(g), g.symmetry == Symmetry2D::axisymmetric);
     classify(cdt, map);
     drop_hidden_constraints(cdt);
     refine(cdt, g, field);

@@ -32,6 +32,10 @@
 //   the circle (by at most the sagitta); these circles get at least 128 chords so that the
 //   move tilts no angle by more than ~0.7 degrees. outer_edges are the R2 edges (open) or the R1
 //   edges (dirichlet/neumann), oriented counter-clockwise (domain on the left).
+// - Axisymmetric geometry (Symmetry2D::axisymmetric): the domain and the shell are the x >= 0
+//   halves of the disk and ring; their sides on the axis are split by CGAL only (at the
+//   refinement's needs and at part vertices on the axis, which are put exactly on x = 0), and
+//   the boundary edges on the axis are axis_edges instead of outer_edges.
 // - Triangles are counter-clockwise; quality holds the min/max angle, the min area and the max
 //   sagitta. Nothing is printed.
 // Throws MeshError naming the part (and field) for invalid input, a part reaching beyond the

@@ -24,6 +24,15 @@ bool positive(double v) {
   return v > 0 && std::isfinite(v);
 }
 
+// The domain (r_inner = 0) or the shell: the disk of r_outer about the origin (region_of()
+// tests the domain first), or the x >= 0 half of the ring, so that the straight sides of the
+// shell and of the domain do not overlap.
+Shape2D outer_shape(const Geometry2D& g, double r_inner, double r_outer) {
+  if (g.symmetry == Symmetry2D::axisymmetric)
+    return AnnularSector{Vec2::Zero(), r_inner, r_outer, -0.5 * pi, 0.5 * pi};
+  return Disk{Vec2::Zero(), r_outer};
+}
+
 } // namespace
 
 RegionMap2D::RegionMap2D(const Geometry2D& g, const Limit& limit, double shell_size) {
@@ -37,20 +46,27 @@ RegionMap2D::RegionMap2D(const Geometry2D& g, const Limit& limit, double shell_s
   const auto limit_of = [&limit](int region) {
     return [&limit, region](const Vec2& x) { return limit(region, x); };
   };
-  // Scaled with size_scale like every size, so that refinement studies stay uniform.
-  const auto outer_limit = [&limit, &o](int region, double r) {
+  // Scaled with size_scale like every size, so that refinement studies stay uniform. The axis
+  // sides of a half disk are not split here: CGAL splits them where the refinement needs it
+  // and at the vertices parts put on the axis, which a fixed split would miss by a hair.
+  const bool axi = g.symmetry == Symmetry2D::axisymmetric;
+  const auto outer_limit = [&limit, &o, axi](int region, double r) {
     const double longest = 2.0 * pi * r / min_outer_chords * std::min(1.0, o.size_scale);
-    return [&limit, region, longest](const Vec2& x) { return std::min(longest, limit(region, x)); };
+    return [&limit, region, longest, axi](const Vec2& x) {
+      if (axi && x.x() == 0)
+        return std::numeric_limits<double>::infinity();
+      return std::min(longest, limit(region, x));
+    };
   };
   std::vector<OutlineBuilder2D> builders;
   for (std::size_t i = 0; i < g.parts.size(); ++i)
     builders.emplace_back(g.parts[i], o.chord_tolerance, limit_of(int(i)), *circles);
   const double r1 = g.outer.radius, r2 = g.outer.shell_ratio * r1;
   const bool open = g.outer.kind == OuterKind::open;
-  builders.emplace_back(Part2D{"", Disk{Vec2::Zero(), r1}, 0}, o.chord_tolerance,
+  builders.emplace_back(Part2D{"", outer_shape(g, 0, r1), 0}, o.chord_tolerance,
                         outer_limit(region_background, r1), *circles);
   if (open)
-    builders.emplace_back(Part2D{"", Disk{Vec2::Zero(), r2}, 0}, o.chord_tolerance,
+    builders.emplace_back(Part2D{"", outer_shape(g, r1, r2), 0}, o.chord_tolerance,
                           outer_limit(region_shell, r2), *circles);
   circles->finalize();
   // Phase 2: loops on the shared circles.
@@ -91,14 +107,17 @@ void RegionMap2D::validate(const Geometry2D& g) const {
 
 void RegionMap2D::check_inside_domain(const Geometry2D& g) const {
   // Vertices on the domain polygon itself are accepted (pulled inwards by a relative 1e-9).
+  // On the axis of a half disk they are pushed off it by as much.
   constexpr double inward = 1.0 - 1e-9;
+  const double off_axis = g.symmetry == Symmetry2D::axisymmetric ? 1e-9 * g.outer.radius : 0.0;
   for (std::size_t i = 0; i < parts_.size(); ++i)
     for (const auto& loop : parts_[i].loops())
       for (const Vec2& v : loop)
-        if (!domain_->contains(inward * v))
+        if (!domain_->contains(inward * v + Vec2(off_axis, 0)))
           throw MeshError(g.parts[i].name, "",
                           "the part reaches beyond the domain boundary (radius " +
-                              std::to_string(g.outer.radius) + " m): enlarge the outer radius");
+                              std::to_string(g.outer.radius) + " m" +
+                              (off_axis > 0 ? ", r >= 0" : "") + "): enlarge the outer radius");
 }
 
 int RegionMap2D::region_of(const Vec2& p) const {

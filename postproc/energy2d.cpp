@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/constants.hpp"
+#include "solver/curl2d.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/triangle_lagrange.hpp"
 #include "solver/triangle_quadrature.hpp"
@@ -11,31 +12,17 @@
 namespace magfem {
 namespace {
 
-// integral_0^b h(b') db' for a soft material, 8-point Gauss-Legendre on [0, b]: the curve is
-// smooth between table points, so this is accurate to far below the FE error.
-double soft_energy_density(const Material& m, double b) {
-  static constexpr std::array<double, 8> x = {-0.9602898564975363, -0.7966664774136267,
-                                              -0.5255324099163290, -0.1834346424956498,
-                                              0.1834346424956498,  0.5255324099163290,
-                                              0.7966664774136267,  0.9602898564975363};
-  static constexpr std::array<double, 8> w = {0.1012285362903763, 0.2223810344533745,
-                                              0.3137066458778873, 0.3626837833783620,
-                                              0.3626837833783620, 0.3137066458778873,
-                                              0.2223810344533745, 0.1012285362903763};
-  double sum = 0;
-  for (int i = 0; i < 8; ++i) sum += w[i] * m.curve->h_of_b(0.5 * b * (x[i] + 1));
-  return 0.5 * b * sum;
-}
-
 double energy_density(const Material& m, const Eigen::Vector2d& b_eff) {
-  if (m.is_nonlinear()) return soft_energy_density(m, b_eff.norm());
+  if (m.is_nonlinear())
+    return m.curve->energy_density(b_eff.norm());
   double nu = 0, dnu = 0;
   m.reluctivity(0.0, nu, dnu);
   return 0.5 * nu * b_eff.squaredNorm();
 }
 
 int slot_of(int part, std::size_t n_parts) {
-  if (part >= 0) return part;
+  if (part >= 0)
+    return part;
   return part == region_background ? static_cast<int>(n_parts) : static_cast<int>(n_parts) + 1;
 }
 
@@ -68,7 +55,9 @@ EnergySummary2D summarize_energy_2d(const Field2D& field, const std::vector<std:
       const Eigen::Vector2d x = field.point(t, q.bary);
       const Eigen::Vector2d b = field.B(t, q.bary);
       double w = 0;
-      if (in_shell) {
+      if (in_shell && problem.axisymmetric()) {
+        w = 0.5 * nu0 * b.dot(shell.curl_metric_meridional(x) * b);
+      } else if (in_shell) {
         const Eigen::Vector2d grad_a(-b.y(), b.x());
         w = 0.5 * nu0 * grad_a.dot(shell.metric<2>(x) * grad_a);
       } else {
@@ -78,13 +67,15 @@ EnergySummary2D summarize_energy_2d(const Field2D& field, const std::vector<std:
         // b_eff = B - B_r m_hat; for non-magnets it is B itself.
         w = energy_density(mat, mat.is_magnet() ? Eigen::Vector2d(h / nu) : b);
       }
-      reg.energy_J_per_m += q.weight * area * w;
+      reg.energy_J_per_m += q.weight * area * measure_2d(problem.symmetry, x) * w;
     }
     // B is a polynomial of degree order-1 <= 1 per element: its maximum is at a corner.
     if (!in_shell)
-      for (const auto& c : corners) reg.peak_B_T = std::max(reg.peak_B_T, field.B(t, c).norm());
+      for (const auto& c : corners)
+        reg.peak_B_T = std::max(reg.peak_B_T, field.B(t, c).norm());
   }
-  for (const auto& r : out.regions) out.total_J_per_m += r.energy_J_per_m;
+  for (const auto& r : out.regions)
+    out.total_J_per_m += r.energy_J_per_m;
   return out;
 }
 

@@ -3,7 +3,8 @@
 // Energy density w = integral_0^B H . dB: for linear media nu |B|^2 / 2, for magnets measured
 // from the remanent state, nu |B - B_r|^2 / 2 (= mu0 |H|^2 / 2 for mu_r = 1), for soft iron
 // integrated along the B-H curve. In the open-boundary shell the metric makes the integral
-// equal to the energy of the whole exterior. 2D values are per unit length (J/m).
+// equal to the energy of the whole exterior. Planar values are per unit length (J/m),
+// axisymmetric ones for the whole body of revolution (J) in the same fields.
 #include <string>
 #include <vector>
 

@@ -12,26 +12,11 @@
 namespace magfem {
 namespace {
 
-// integral_0^b h(b') db' for a soft material, 8-point Gauss-Legendre on [0, b]: the curve is
-// smooth between table points, so this is accurate to far below the FE error.
-double soft_energy_density(const Material& m, double b) {
-  static constexpr std::array<double, 8> x = {
-      -0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-      0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-  static constexpr std::array<double, 8> w = {
-      0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-      0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-  double sum = 0;
-  for (int i = 0; i < 8; ++i)
-    sum += w[i] * m.curve->h_of_b(0.5 * b * (x[i] + 1));
-  return 0.5 * b * sum;
-}
-
 double energy_density(const Material& m, const Eigen::Vector3d& h) {
   double mu = 0, dmu = 0;
   m.permeability(h.squaredNorm(), mu, dmu);
   if (m.is_nonlinear())
-    return soft_energy_density(m, mu * h.norm());
+    return m.curve->energy_density(mu * h.norm());
   return 0.5 * mu * h.squaredNorm(); // magnets: mu = mu0 mu_r, from the remanent state
 }
 

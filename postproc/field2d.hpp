@@ -1,7 +1,7 @@
 #pragma once
-// The solved 2D field: A_z at every DOF, evaluated per element as the FE solution itself
-// (B = curl A is discontinuous across elements) or recovered at nodes by area-weighted
-// averaging (smooth, for plots and VTU point data).
+// The solved 2D field: A_z (planar) or A_phi (axisymmetric) at every DOF, evaluated per element as
+// the FE solution itself (B = curl A is discontinuous across elements) or recovered at nodes by
+// area-weighted averaging (smooth, for plots and VTU point data).
 #include <array>
 #include <vector>
 

@@ -15,7 +15,8 @@ struct ForceSpec {
     band,    // 2D: Arkkio's band average of the stress tensor over an air annulus
     lorentz, // integral of J x B over current-carrying regions (2D) or coils (3D)
     sphere,  // 3D: Maxwell stress tensor on a sphere in air (force on what it encloses)
-    box      // 3D: Maxwell stress tensor on an axis-aligned box surface in air
+    box,     // 3D: Maxwell stress tensor on an axis-aligned box surface in air
+    contour  // axisymmetric: stress tensor on the revolved box around a region, `margin` out
   };
   std::string name;
   Kind kind = Kind::sphere;
@@ -27,6 +28,7 @@ struct ForceSpec {
   std::vector<std::string> regions; // lorentz: regions (2D) or coils (3D)
   Eigen::Vector3d torque_point = Eigen::Vector3d::Zero();
   double check_radius = 0; // circle, sphere: also evaluate this radius and report the spread
+  double margin = 0;       // contour: distance between the region's bounding box and the contour
   int line = 0;            // line in the case file, for messages
 };
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "solver/curl2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 #include "solver/triangle_quadrature.hpp"
 
@@ -33,6 +34,13 @@ ForceTorque lorentz_force_2d(const Field2D& field, const std::vector<int>& parts
         TriangleGeometry::of(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]).area;
     for (const auto& q : rule) {
       const Eigen::Vector2d b = field.B(t, q.bary);
+      if (problem.axisymmetric()) {
+        // J phi_hat x (B_r r_hat + B_z z_hat) = J (B_z r_hat - B_r z_hat); r_hat averages out
+        // over the turn, so only F_z = -int J B_r 2 pi r dA is left (no torque).
+        const Eigen::Vector2d x = field.point(t, q.bary);
+        ft.force.z() -= q.weight * area * measure_2d(problem.symmetry, x) * j * b.x();
+        continue;
+      }
       const Eigen::Vector2d f = j * Eigen::Vector2d(-b.y(), b.x()); // J z_hat x B
       const Eigen::Vector2d r = field.point(t, q.bary) - torque_point;
       const double w = q.weight * area;

@@ -3,6 +3,9 @@
 // field: F = int J x B dA with J = J_z z_hat, i.e. f = J_z (-B_y, B_x), and torque about p
 // T_z = int ((x - p) x f)_z dA (SI: N/m and N m/m; force in the xy-plane, torque along z).
 //
+// Axisymmetric (J = J_phi phi_hat over the whole turn): F = F_z z_hat with
+// F_z = -int J_phi B_r 2 pi r dA (N), torque zero.
+//
 // B is the total FE field, including the regions' own. The exact self-field exerts no net
 // force or torque on its own currents (action and reaction between their elements), so the
 // result is the force exerted by everything else up to the discretization error of that

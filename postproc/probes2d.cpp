@@ -22,8 +22,10 @@ ProbeTable sample_probe_2d(const Field2D& field, const PointLocator2D& locator,
   ProbeTable table;
   table.name = probe.name;
   const int n = probe.points;
+  const bool axi = field.problem().axisymmetric();
   if (probe.kind == ProbeSpec::Kind::line) {
-    table.columns = {"x", "y", "Bx", "By"};
+    table.columns = axi ? std::vector<std::string>{"r", "z", "Br", "Bz"}
+                        : std::vector<std::string>{"x", "y", "Bx", "By"};
     for (int i = 0; i < n; ++i) {
       const double s = n == 1 ? 0.0 : static_cast<double>(i) / (n - 1);
       const Eigen::Vector2d x = (probe.start + s * (probe.end - probe.start)).head<2>();
@@ -32,7 +34,9 @@ ProbeTable sample_probe_2d(const Field2D& field, const PointLocator2D& locator,
     }
     return table;
   }
-  table.columns = {"angle_deg", "x", "y", "Bx", "By", "Br", "Bt"};
+  table.columns =
+      axi ? std::vector<std::string>{"angle_deg", "r", "z", "Br", "Bz", "Brho", "Btheta"}
+          : std::vector<std::string>{"angle_deg", "x", "y", "Bx", "By", "Br", "Bt"};
   const double span = probe.angle_end - probe.angle_start;
   const bool full_turn = std::abs(span - 2 * pi) < 1e-12;
   const double step = n == 1 ? 0.0 : span / (full_turn ? n : n - 1);

@@ -2,6 +2,9 @@
 // Sampling of the 2D field on line and circle probes. CSV contract (other tools read it):
 //   line:   x,y,Bx,By
 //   circle: angle_deg,x,y,Bx,By,Br,Bt   (Br radial, Bt tangential = counter-clockwise)
+// Axisymmetric (r-z plane, arcs about a centre in that plane, rho and theta polar about it):
+//   line:   r,z,Br,Bz
+//   circle: angle_deg,r,z,Br,Bz,Brho,Btheta
 // Coordinates in the case's length unit, B in tesla. Values are the FE field of the element
 // containing the point.
 #include "postproc/field2d.hpp"

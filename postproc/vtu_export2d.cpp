@@ -12,13 +12,20 @@ VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_pa
   for (const auto& p : dofs.dof_points()) g.points.emplace_back(p.x(), p.y(), 0.0);
 
   const auto b_nodes = field.recovered_B();
-  VtuArray a{"A_z", 1, {}}, bp{"B", 3, {}}, bpm{"|B|", 1, {}};
+  const bool axi = problem.axisymmetric();
+  // Axisymmetric flux lines are the contours of r A_phi (the flux through the circle of
+  // radius r is 2 pi r A_phi), so that is written besides A_phi.
+  VtuArray a{axi ? "A_phi" : "A_z", 1, {}}, psi{"r_A_phi", 1, {}}, bp{"B", 3, {}},
+      bpm{"|B|", 1, {}};
   for (int i = 0; i < dofs.n_dofs(); ++i) {
     a.values.push_back(field.a()[i]);
+    psi.values.push_back(dofs.dof_points()[i].x() * field.a()[i]);
     bp.values.insert(bp.values.end(), {b_nodes[i].x(), b_nodes[i].y(), 0.0});
     bpm.values.push_back(b_nodes[i].norm());
   }
   g.point_data = {a, bp, bpm};
+  if (axi)
+    g.point_data.push_back(psi);
 
   VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"B", 3, {}},
       bcm{"|B|", 1, {}}, hc{"H", 3, {}};

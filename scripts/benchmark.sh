@@ -34,6 +34,17 @@ $magfem solve examples/2d/c_core.yaml --out "$out/ccore" > /dev/null
 report "C-core, steel_1010, Newton" "$out/ccore"
 
 echo
+echo "== axisymmetric (issue 11 targets: voice coil + magnet at ~100k P2 unknowns <= 1 s; 61-position sweep <= 30 s)"
+$magfem solve examples/axi/voice_coil_magnet.yaml --mesh-scale 0.7 --out "$out/vc100k" > /dev/null
+report "voice coil + magnet, P2, mesh-scale 0.7" "$out/vc100k"
+$magfem solve examples/axi/pot_core.yaml --out "$out/pot" > /dev/null
+report "pot core, steel_1010, Newton" "$out/pot"
+start=$(date +%s.%N)
+$magfem sweep examples/axi/voice_coil_magnet.yaml --move coil --axis z --positions 0:0.2:12 \
+  --out "$out/vcsweep" > /dev/null
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    voice coil sweep, 61 positions: wall %.1f s\n", b - a }'
+
+echo
 echo "== 3D magnetized sphere (exact reference): accuracy against time"
 for scale in 2 1.4 1; do
   $magfem solve examples/3d/magnetized_sphere.yaml --mesh-scale $scale --out "$out/sph$scale" > /dev/null

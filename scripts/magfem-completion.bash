@@ -18,7 +18,7 @@ _magfem() {
     --model) COMPREPLY=($(compgen -W "charge harmonic" -- "$cur")); return ;;
     --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
-    --mesh-scale | --tolerance | --n-max | --rotate | --angles | --point | --surface-radius | \
+    --mesh-scale | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
       --jobs | --only | --source) return ;;
   esac
   local options
@@ -26,7 +26,7 @@ _magfem() {
     solve) options="--out --order --mesh-scale --help" ;;
     analytic) options="--out --model --tolerance --n-max --help" ;;
     compare) options="--help" ;;
-    sweep) options="--rotate --axis --angles --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;
+    sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;
     validate) options="--tier --only --source --jobs --out --help" ;;
     help) COMPREPLY=($(compgen -W "${commands% help}" -- "$cur")); return ;;
   esac

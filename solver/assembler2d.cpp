@@ -3,6 +3,7 @@
 #include <array>
 
 #include "core/constants.hpp"
+#include "solver/curl2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 #include "solver/triangle_quadrature.hpp"
 
@@ -10,8 +11,17 @@ namespace magfem {
 namespace {
 
 std::vector<int> constrained_dofs(const Problem2D& problem, const DofMap2D& dofs) {
-  if (problem.boundary == OuterKind::neumann) return {0}; // gauge: A is defined up to a constant
-  return dofs.dofs_on_edges(problem.mesh->outer_edges);
+  std::vector<int> fixed;
+  // A_phi vanishes on the axis (and gauges the Neumann problem there).
+  if (problem.axisymmetric())
+    fixed = dofs.dofs_on_edges(problem.mesh->axis_edges);
+  if (problem.boundary != OuterKind::neumann) {
+    const auto outer = dofs.dofs_on_edges(problem.mesh->outer_edges);
+    fixed.insert(fixed.end(), outer.begin(), outer.end());
+  } else if (fixed.empty()) {
+    fixed = {0}; // gauge: A is defined up to a constant
+  }
+  return fixed;
 }
 
 bool problem_is_linear(const Problem2D& problem) {
@@ -72,12 +82,14 @@ void Assembler2D::element(std::size_t t, const Eigen::VectorXd& a_full, double* 
   const int n = dofs_.dofs_per_element();
   const int* dof = dofs_.element_dofs(t);
   const bool in_shell = problem_.is_shell(t);
+  const bool axi = problem_.axisymmetric();
   const RegionPhysics2D& phys = problem_.physics(problem_.mesh->triangle_part[t]);
   const Material& mat = *phys.material;
   const bool has_source = phys.current_density != 0 || mat.is_magnet();
-  // Shape-gradient products are degree 2(order-1); nonlinear laws, the shell metric and the
-  // current load (degree `order`) need more points than a linear stiffness alone.
-  const int degree = (in_shell || mat.is_nonlinear()) ? 4 : std::max(2 * (order - 1), order);
+  // Shape-gradient products are degree 2(order-1); nonlinear laws, the shell metric, the
+  // current load (degree `order`) and the axisymmetric weight r and A/r need more points than
+  // a linear planar stiffness alone.
+  const int degree = (in_shell || axi || mat.is_nonlinear()) ? 4 : std::max(2 * (order - 1), order);
 
   std::fill(re, re + n, 0.0);
   if (want_matrix) std::fill(ke, ke + n * n, 0.0);
@@ -85,30 +97,33 @@ void Assembler2D::element(std::size_t t, const Eigen::VectorXd& a_full, double* 
   std::array<double, 6> val{};
   for (const auto& q : triangle_rule(degree)) {
     triangle_gradients(order, g, q.bary, grad.data());
-    const double w = q.weight * g.area;
     Eigen::Vector2d x = Eigen::Vector2d::Zero();
     for (int k = 0; k < 3; ++k) x += q.bary[k] * nodes[tri[k]];
+    const double w = q.weight * g.area * measure_2d(problem_.symmetry, x);
+    if (axi || has_source)
+      triangle_values(order, q.bary, val.data());
+    for (int i = 0; i < n; ++i)
+      c[i] = curl_2d(problem_.symmetry, val[i], grad[i], x);
+    Eigen::Vector2d b = Eigen::Vector2d::Zero();
+    for (int i = 0; i < n; ++i)
+      b += a_full[dof[i]] * c[i];
     if (in_shell) {
-      // Linear air with the shell metric: r_i = nu0 grad N_i . T grad A.
-      const Eigen::Matrix2d tm = nu0 * shell_.metric<2>(x);
-      Eigen::Vector2d grad_a = Eigen::Vector2d::Zero();
-      for (int i = 0; i < n; ++i) grad_a += a_full[dof[i]] * grad[i];
-      const Eigen::Vector2d flux = tm * grad_a;
-      for (int i = 0; i < n; ++i) re[i] += w * grad[i].dot(flux);
+      // Linear air with the shell metric: r_i = curl N_i . M B.
+      const Eigen::Matrix2d m = nu0 * shell_metric(x);
+      const Eigen::Vector2d flux = m * b;
+      for (int i = 0; i < n; ++i)
+        re[i] += w * c[i].dot(flux);
       if (want_matrix)
         for (int i = 0; i < n; ++i)
-          for (int j = 0; j < n; ++j) ke[i * n + j] += w * grad[i].dot(tm * grad[j]);
+          for (int j = 0; j < n; ++j)
+            ke[i * n + j] += w * c[i].dot(m * c[j]);
       continue;
     }
-    for (int i = 0; i < n; ++i) c[i] = curl(grad[i]);
-    Eigen::Vector2d b = Eigen::Vector2d::Zero();
-    for (int i = 0; i < n; ++i) b += a_full[dof[i]] * c[i];
     Eigen::Vector2d b_eff = b;
     if (mat.is_magnet()) b_eff -= mat.B_r * phys.magnetization.unit_at({x.x(), x.y(), 0}).head<2>();
     double nu = 0, dnu = 0;
     mat.reluctivity(b_eff.squaredNorm(), nu, dnu);
     const Eigen::Vector2d h = nu * b_eff;
-    if (has_source) triangle_values(order, q.bary, val.data());
     for (int i = 0; i < n; ++i) re[i] += w * (h.dot(c[i]) - phys.current_density * val[i]);
     if (!want_matrix) continue;
     Eigen::Matrix2d d = nu * Eigen::Matrix2d::Identity();
@@ -118,6 +133,15 @@ void Assembler2D::element(std::size_t t, const Eigen::VectorXd& a_full, double* 
       for (int j = 0; j < n; ++j) ke[i * n + j] += w * dc.dot(c[j]);
     }
   }
+}
+
+Eigen::Matrix2d Assembler2D::shell_metric(const Eigen::Vector2d& x) const {
+  if (problem_.axisymmetric())
+    return shell_.curl_metric_meridional(x);
+  // Planar: the metric acts on grad A; B = R grad A with R the rotation by -90 degrees.
+  Eigen::Matrix2d rot;
+  rot << 0, 1, -1, 0;
+  return rot * shell_.metric<2>(x) * rot.transpose();
 }
 
 void Assembler2D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,

@@ -1,11 +1,12 @@
 #pragma once
-// Weak form of the 2D A_z magnetostatic problem on Lagrange triangles:
-//   find A:  integral H(B) . curl N_i  =  integral J_z N_i    for all test functions N_i,
-// with B = curl(A z_hat) = (dA/dy, -dA/dx) and H = nu (B - B_r m_hat) (magnets enter through
+// Weak form of the 2D magnetostatic problem (planar A_z or axisymmetric A_phi) on Lagrange
+// triangles:
+//   find A:  integral H(B) . curl N_i dV  =  integral J N_i dV    for all test functions N_i,
+// with B and dV from curl2d.hpp and H = nu (B - B_r m_hat) (magnets enter through
 // their remanence, which is equivalent to their surface and volume currents). In the
 // open-boundary shell the air term carries the shell-transformation metric.
-// Unknowns are the free DOFs: Dirichlet DOFs (A = 0 on the outer boundary, or one gauge DOF
-// for a pure Neumann problem) are eliminated.
+// Unknowns are the free DOFs: Dirichlet DOFs (A = 0 on the outer boundary and, axisymmetric,
+// on the axis, or one gauge DOF for a pure planar Neumann problem) are eliminated.
 #include <vector>
 
 #include <Eigen/Core>
@@ -36,6 +37,8 @@ private:
   void element(std::size_t t, const Eigen::VectorXd& a_full, double* re, double* ke,
                TangentKind kind, bool want_matrix) const;
   double compute_load_norm() const;
+  // Shell metric acting on B (planar: from the metric on grad A_z).
+  Eigen::Matrix2d shell_metric(const Eigen::Vector2d& x) const;
 
   const Problem2D& problem_;
   const DofMap2D& dofs_;

@@ -35,6 +35,20 @@ struct ShellTransform {
     }
   }
 
+  // The axisymmetric shell is the 3D spherical map seen in the meridional (r-z) plane, and the
+  // unknown is a vector potential: B pulls back as a 2-form, B_mesh = det J J^-1 B', so
+  //   integral nu |B'|^2 dV' = integral nu B_mesh . (J^T J / |det J|) B_mesh dV,
+  //   J^T J / |det J| = P_t / f' + f' (r/f)^2 P_r      (x: a meridional point).
+  Eigen::Matrix2d curl_metric_meridional(const Eigen::Vector2d& x) const {
+    const double r = x.norm();
+    const double gap = r_outer - r;
+    const Eigen::Vector2d e = x / r;
+    const Eigen::Matrix2d pr = e * e.transpose();
+    const double f = r_inner * (r_outer - r_inner) / gap;
+    const double df = f / gap;
+    return (1 / df) * (Eigen::Matrix2d::Identity() - pr) + (df * (r / f) * (r / f)) * pr;
+  }
+
   // The physical point x' = (f(r)/r) x that the shell point x stands for.
   Eigen::Vector3d map(const Eigen::Vector3d& x) const {
     const double r = x.norm();

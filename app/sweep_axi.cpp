@@ -1,0 +1,135 @@
+#include "app/sweep_axi.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include "app/run2d.hpp"
+#include "core/input_error.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+struct Translate {
+  Vec2 d;
+  void operator()(Disk& s) const { s.center += d; }
+  void operator()(Annulus& s) const { s.center += d; }
+  void operator()(AnnularSector& s) const { s.center += d; }
+  void operator()(Rectangle& s) const { s.center += d; }
+  void operator()(Polygon& s) const {
+    for (Vec2& v : s.vertices)
+      v += d;
+  }
+};
+
+// The Lorentz request that yields the force on the group: on its current regions, or on the
+// others' (then `reversed`).
+ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reversed) {
+  ForceSpec f;
+  f.name = "sweep";
+  f.kind = ForceSpec::Kind::lorentz;
+  std::vector<std::string> others;
+  for (const auto& r : spec.regions) {
+    if (r.current_density == 0 && r.ampere_turns == 0)
+      continue;
+    (r.group == group ? f.regions : others).push_back(r.name);
+  }
+  reversed = f.regions.empty();
+  if (reversed)
+    f.regions = others;
+  if (f.regions.empty())
+    throw InputError(cli, 0, "--move",
+                     "no region carries current: the axial sweep takes the force from the "
+                     "Lorentz force on the group's coils or on the others'");
+  return f;
+}
+
+AxiSweepRow solve_position(const CaseSpec& base, const AxiSweepOptions& o, double dz) {
+  AxiSweepRow row;
+  row.position_m = dz;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    CaseSpec spec = move_group_axi(base, o.group, dz);
+    bool reversed = false;
+    spec.forces = {group_force(spec, o.group, reversed)};
+    spec.probes.clear(); // a sweep wants the force only
+    spec.write_vtu = false;
+    RunOverrides ov;
+    ov.order = o.order;
+    ov.mesh_scale = o.mesh_scale;
+    const auto run = run_case_2d(std::move(spec), ov);
+    row.fz_N = (reversed ? -1.0 : 1.0) * run->forces.front().force.z();
+    row.unknowns = static_cast<long>(run->dofs->n_dofs());
+    row.ok = true;
+  } catch (const std::exception& e) {
+    row.error = e.what();
+  }
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return row;
+}
+
+} // namespace
+
+CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz) {
+  if (!spec.axisymmetric())
+    throw InputError(cli, 0, "--move", "--move sweeps axisymmetric cases (dimension: axi)");
+  CaseSpec out = spec;
+  bool found = false;
+  for (std::size_t i = 0; i < out.regions.size(); ++i) {
+    if (out.regions[i].group != group)
+      continue;
+    found = true;
+    std::visit(Translate{Vec2(0, dz)}, out.geometry2d.parts[i].shape);
+    out.regions[i].magnetization.center.y() += dz;
+  }
+  if (!found)
+    throw InputError(cli, 0, "--move",
+                     "no region of " + spec.file + " is in group '" + group + "'");
+  return out;
+}
+
+std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& o,
+                                       const AxiSweepProgress& progress) {
+  move_group_axi(spec, o.group, 0.0); // bad input fails here, not once per position
+  bool reversed = false;
+  group_force(spec, o.group, reversed);
+  const int total = static_cast<int>(o.positions_m.size());
+  std::vector<AxiSweepRow> rows(o.positions_m.size());
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const int n_jobs =
+      std::clamp(o.jobs > 0 ? o.jobs : static_cast<int>(cores), 1, std::max(total, 1));
+  std::atomic<int> next{0}, done{0};
+  std::mutex report;
+  const auto worker = [&] {
+    for (int i; (i = next++) < total;) {
+      rows[i] = solve_position(spec, o, o.positions_m[i]);
+      const std::lock_guard<std::mutex> lock(report);
+      if (progress)
+        progress(++done, total);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < n_jobs; ++k)
+    pool.emplace_back(worker);
+  for (auto& t : pool)
+    t.join();
+  return rows;
+}
+
+std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {
+  std::string out = "position_mm,Fz_N\n";
+  char buf[128];
+  for (const auto& r : rows)
+    if (r.ok) {
+      std::snprintf(buf, sizeof buf, "%.10g,%.10g\n", r.position_m * 1e3, r.fz_N);
+      out += buf;
+    }
+  return out;
+}
+
+} // namespace magfem

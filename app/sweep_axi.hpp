@@ -1,0 +1,49 @@
+#pragma once
+// `magfem sweep CASE --move GROUP --axis z --positions START:STEP:END` for axisymmetric cases:
+// translate a group of regions along the axis, solve each position and tabulate the axial
+// force on the group (force versus separation of a voice coil, a solenoid plunger pair, ...).
+//
+// The force is the Lorentz force F_z = -int J_phi B_r 2 pi r dA: on the group's current
+// regions when it has any, else, reversed, on the other current regions (Newton's third law:
+// the isolated system feels no net force). Groups that carry no current and face no current
+// (magnet against magnet or iron) would need a stress sphere between them and are refused.
+// Positions run on a small pool of threads like the 3D sweep; a failed position is recorded.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "casefile/case_spec.hpp"
+
+namespace magfem {
+
+struct AxiSweepOptions {
+  std::string group;               // RegionSpec::group to move
+  std::vector<double> positions_m; // axial displacements of the group, metres
+  int jobs = 0;                    // worker threads (0: one per core)
+  double mesh_scale = 0;           // RunOverrides::mesh_scale
+  int order = 0;                   // RunOverrides::order
+};
+
+struct AxiSweepRow {
+  double position_m = 0;
+  double fz_N = 0; // axial force on the group
+  bool ok = false;
+  std::string error;
+  double seconds = 0;
+  long unknowns = 0;
+};
+
+// The case with every region of `group` moved by dz (metres) along the axis; radial
+// magnetization centres move with their regions. Throws InputError (naming --move) if the
+// case is not axisymmetric or no region is in the group.
+CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz);
+
+using AxiSweepProgress = std::function<void(int done, int total)>;
+// Throws InputError if the force on the group cannot be had from Lorentz forces.
+std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& options,
+                                       const AxiSweepProgress& progress = {});
+
+// sweep.csv: position_mm,Fz_N (successful positions, in the given order).
+std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows);
+
+} // namespace magfem
