@@ -146,6 +146,10 @@ int run_solve(const Args& args) {
     std::cout << ", " << p.name << ".csv";
   if (run->spec.write_vtu)
     std::cout << ", solution.vtu";
+  if (run->spec.write_vtu && run->spec.write_revolved_vtu)
+    std::cout << ", solution_revolved.vtu";
+  if (!run->forces.empty())
+    std::cout << ", forces.csv";
   std::cout << "\n";
   return 0;
 }

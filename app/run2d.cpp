@@ -17,6 +17,7 @@
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probes2d.hpp"
 #include "postproc/vtu_export2d.hpp"
+#include "postproc/vtu_export_revolved.hpp"
 #include "solver/assembler2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 
@@ -166,6 +167,9 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
     }
     write_vtu(stage.path_for("solution.vtu").string(),
               make_vtu_2d(*run.field, material_of_part, 0, material_names));
+    if (run.spec.write_revolved_vtu)
+      write_vtu(stage.path_for("solution_revolved.vtu").string(),
+                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
   }
 
   nlohmann::ordered_json j;

@@ -279,8 +279,11 @@ CaseSpec read_case(const std::string& path) {
     read_forces(root.at("forces"), c);
   if (root.has("output")) {
     const auto o = root.at("output");
-    o.allow_keys({"vtu", "inductance"});
+    o.allow_keys({"vtu", "inductance", "revolved_vtu"});
     c.write_vtu = o.get_bool("vtu", true);
+    c.write_revolved_vtu = o.get_bool("revolved_vtu", false);
+    if (c.write_revolved_vtu && !c.axisymmetric())
+      o.at("revolved_vtu").fail("revolved_vtu applies to axisymmetric cases (dimension: axi)");
     c.coil_inductance = o.get_bool("inductance", true);
   }
   return c;

@@ -40,6 +40,7 @@ struct CaseSpec {
   std::vector<ProbeSpec> probes;
   std::vector<ForceSpec> forces;
   bool write_vtu = true;
+  bool write_revolved_vtu = false; // axisymmetric: also solution_revolved.vtu (3D)
   double stack_length = 0; // metres; 0 = report per unit length
   int boundary_line = 0;
   std::vector<int> coil_lines; // parallel to geometry3d.coils

@@ -15,6 +15,7 @@
 #include "case_helpers.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/constants.hpp"
+#include "postproc/vtu_export_revolved.hpp"
 #include "sources/axisymmetric_bundle.hpp"
 #include "validation/coil_closed_forms.hpp"
 
@@ -230,4 +231,40 @@ TEST(AxiCoils, CylinderMagnetOnAxisFieldEqualsTheClosedForm) {
   // B on the axis jumps nowhere, but dB_z/dz is discontinuous at the end faces, where the
   // P2 element field is least accurate; measured 1.6e-3 T. Tolerance 5e-3 T (0.9 % of B(0)).
   EXPECT_LT(err, 5e-3);
+}
+
+TEST(AxiCoils, RevolvedVtuSweepsTheWindingIntoItsRing) {
+  // The revolved grid of the solenoid: n_phi copies of the mesh vertices, one wedge per
+  // (triangle, step); the winding's wedges fill the ring pi (r_o^2 - r_i^2) l up to the
+  // 36-gon's factor (n / 2 pi) sin(2 pi / n) (exact for straight-sided wedges: tolerance
+  // 1e-9), and B at a revolved point is (B_r cos phi, B_r sin phi, B_z).
+  const auto run = run_case_2d(read_case(test::example("axi/solenoid.yaml")));
+  const int n_phi = 36;
+  const VtuGrid g = make_vtu_revolved(*run->field, {1}, 0, {"air", "copper"}, n_phi);
+  ASSERT_EQ(g.points.size(), n_phi * run->mesh.n_nodes());
+  double volume = 0;
+  int start = 0;
+  for (std::size_t c = 0; c < g.cell_types.size(); ++c) {
+    const int* v = &g.connectivity[static_cast<std::size_t>(start)];
+    start = g.offsets[c];
+    if (g.cell_data[0].values[c] != 0)
+      continue; // region_id 0: the winding
+    const auto p = [&](int i) { return g.points[static_cast<std::size_t>(v[i])]; };
+    // Wedge (0,1,2 | 3,4,5) as three tetrahedra.
+    const auto tet = [&](int a, int b, int c2, int d) {
+      return std::abs((p(b) - p(a)).cross(p(c2) - p(a)).dot(p(d) - p(a))) / 6;
+    };
+    volume += tet(0, 1, 2, 3) + tet(1, 2, 3, 4) + tet(2, 3, 4, 5);
+  }
+  const double ring = pi * (r_out * r_out - r_in * r_in) * 2 * half_length * (n_phi / (2 * pi)) *
+                      std::sin(2 * pi / n_phi);
+  std::cout << "revolved winding volume " << volume << " m^3, 36-gon ring " << ring << "\n";
+  EXPECT_NEAR(volume, ring, 1e-9 * ring);
+  const std::size_t k = 9, node = 5; // phi = 90 degrees
+  const auto& b = g.point_data[1].values;
+  const Eigen::Vector2d b2 = run->field->recovered_B()[node];
+  const std::size_t i = k * run->mesh.n_nodes() + node;
+  EXPECT_NEAR(b[3 * i], 0.0, 1e-15);
+  EXPECT_NEAR(b[3 * i + 1], b2.x(), 1e-15);
+  EXPECT_EQ(b[3 * i + 2], b2.y());
 }
