@@ -221,6 +221,39 @@ TEST(Coils3D, RacetrackIsReadInMetresInItsOwnFrame) {
   EXPECT_LT((c.placement.translation - Eigen::Vector3d(2e-3, 1e-3, 17e-3)).norm(), 1e-15);
 }
 
+// Action = reaction for force and torque (about the origin) between a magnet (stress tensor
+// on a sphere around it) and a tilted, off-axis racetrack (Lorentz force over its straight
+// and corner bundles). The Lorentz side sees the racetrack's straight and arc source fields
+// only through the FE field of the magnet, the stress side sees them through the solution, so
+// a wrong piece (sign, orientation, missing corner) breaks the balance. Tolerances from the
+// stress tensor's measured error, the difference between its two spheres: at mesh scale 1.6
+// (235k P2 unknowns, ~30-60 s) they differ by 0.6 % in force, so 1 %; the torque on the
+// magnet is small beside force x radius, and there the spheres differ by ~7 %, so the torques
+// must balance within that difference plus 1 % (measured: 0.4 % force, 3.4 % torque apart).
+// At mesh scale 2.5 the Lorentz torque falls just outside the spheres' spread.
+TEST(Coils3D, RacetrackAndMagnetForcesAndTorquesBalance) {
+  RunOverrides coarse;
+  coarse.mesh_scale = 1.6;
+  auto run =
+      run_case_3d(read_case(test::write_temp_case("racetrack_fe.yaml", racetrack_case)), coarse);
+  const auto& magnet = force(*run, "magnet");
+  const auto& track = force(*run, "track_lorentz");
+  std::printf("magnet (stress) F (%.5g, %.5g, %.5g) N T (%.5g, %.5g, %.5g) mN m, spread %.2f %%\n"
+              "  check sphere T (%.5g, %.5g, %.5g) mN m\n"
+              "track (Lorentz) F (%.5g, %.5g, %.5g) N T (%.5g, %.5g, %.5g) mN m\n",
+              magnet.force.x(), magnet.force.y(), magnet.force.z(), 1e3 * magnet.torque.x(),
+              1e3 * magnet.torque.y(), 1e3 * magnet.torque.z(),
+              100 * magnet.check_relative_difference, 1e3 * magnet.check_torque.x(),
+              1e3 * magnet.check_torque.y(), 1e3 * magnet.check_torque.z(), track.force.x(),
+              track.force.y(), track.force.z(), 1e3 * track.torque.x(), 1e3 * track.torque.y(),
+              1e3 * track.torque.z());
+  ASSERT_TRUE(magnet.checked);
+  EXPECT_GT(track.force.norm(), 0.05); // a real force, not noise
+  EXPECT_LT((track.force + magnet.force).norm(), 0.01 * track.force.norm());
+  EXPECT_LT((track.torque + magnet.torque).norm(),
+            (magnet.torque - magnet.check_torque).norm() + 0.01 * track.torque.norm());
+}
+
 // Racetrack-specific bad input: exit-2 errors at the key's line.
 TEST(Coils3D, BadRacetrackInputNamesFileLineAndField) {
   expect_coil_error("racetrack_zero_width", replace(racetrack_case, "width: 3", "width: 0"), 20,
