@@ -36,22 +36,47 @@ int coil_index(const Run3D& run, const std::string& name) {
 
 } // namespace
 
-CaseCoils::CaseCoils(const std::vector<Coil3D>& coils) : coils_(coils) {
+CoilFieldOptions fe_source_options() {
+  CoilFieldOptions o;
+  o.tolerance = 1e-4;
+  o.near_order = 4;
+  return o;
+}
+
+// Points memoised per run: ~80 bytes each for one coil, so at most ~1.3 GB.
+constexpr std::size_t max_cached_points = 16'000'000;
+
+CaseCoils::CaseCoils(const std::vector<Coil3D>& coils, const CoilFieldOptions& options)
+    : coils_(coils), cache_(static_cast<int>(coils.size()), max_cached_points) {
   for (const auto& c : coils_)
-    fields_.push_back(std::make_unique<CoilField>(c));
+    fields_.push_back(std::make_unique<CoilField>(c, options));
 }
 
 CaseCoils::~CaseCoils() = default;
 
+void CaseCoils::all_per_ampere(const Eigen::Vector3d& x, Eigen::Vector3d* out) const {
+  cache_.get(
+      x,
+      [this](const Eigen::Vector3d& p, Eigen::Vector3d* h) {
+        for (std::size_t k = 0; k < fields_.size(); ++k)
+          h[k] = fields_[k]->H_per_ampere(p);
+      },
+      out);
+}
+
 Eigen::Vector3d CaseCoils::H(const Eigen::Vector3d& x) const {
-  Eigen::Vector3d h = Eigen::Vector3d::Zero();
-  for (const auto& f : fields_)
-    h += f->H(x);
-  return h;
+  std::vector<Eigen::Vector3d> h(fields_.size());
+  all_per_ampere(x, h.data());
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < fields_.size(); ++k)
+    sum += coils_[k].current * h[k];
+  return sum;
 }
 
 Eigen::Vector3d CaseCoils::H_per_ampere(int coil, const Eigen::Vector3d& x) const {
-  return fields_[coil]->H_per_ampere(x);
+  std::vector<Eigen::Vector3d> h(fields_.size());
+  all_per_ampere(x, h.data());
+  return h[coil];
 }
 
 Eigen::Vector3d CaseCoils::J(const Eigen::Vector3d& x) const {
@@ -71,8 +96,7 @@ void check_coils_in_air(const Run3D& run) {
     for (const auto& q : run.coils->field(k).volume_quadrature(4)) {
       const auto loc = locator.locate(q.x);
       if (!loc || run.problem.is_shell(loc->tet))
-        throw InputError(spec.file, spec.coil_lines[k], field,
-                         "the coil leaves the meshed domain");
+        throw InputError(spec.file, spec.coil_lines[k], field, "the coil leaves the meshed domain");
       const int part = run.mesh.tet_part[loc->tet];
       // Air regions (mesh aids) may hold coils; magnets and iron may not.
       const Material* m = part >= 0 ? spec.regions[part].material : nullptr;
@@ -103,9 +127,8 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
     r.power_W = r.resistance_ohm * c.current * c.current;
     r.flux_linkage_Wb = linkage[k];
     try {
-      const ForceTorque ft = lorentz_force_3d(*run.field, locator, k,
-                                              volume_points(coils, k, lorentz_order),
-                                              Eigen::Vector3d::Zero());
+      const ForceTorque ft = lorentz_force_3d(
+          *run.field, locator, k, volume_points(coils, k, lorentz_order), Eigen::Vector3d::Zero());
       r.force_N = ft.force;
       r.torque_Nm = ft.torque;
     } catch (const std::invalid_argument& e) {

@@ -95,7 +95,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   if (run->spec.order == 2)
     run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
   if (!run->spec.geometry3d.coils.empty()) {
-    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils);
+    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
     check_coils_in_air(*run);
     run->coil_source = make_coil_source_3d(run->problem, *run->dofs, *run->coils);
     run->problem.source = &run->coil_source;

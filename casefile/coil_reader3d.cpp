@@ -97,9 +97,6 @@ CoilShape read_shape(const YamlNode& n, double s) {
     c.inner_radius = n.at("inner_radius").as_non_negative() * s;
     c.width = n.at("width").as_positive() * s;
     c.height = n.at("height").as_positive() * s;
-    // The geometry is read and checked, but its source field is not implemented yet.
-    n.at("shape").fail("racetrack coils are not available yet (circular_coil_on_sphere, "
-                       "solenoid)");
     return c;
   }
   n.at("shape").fail("unknown coil shape '" + shape +
