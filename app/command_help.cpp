@@ -42,7 +42,11 @@ constexpr std::array<CommandHelp, 5> commands{{
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
      "  the origin and force on the group), sweep.png and summary.json. FE by default\n"
      "  (stress tensor on a sphere of radius R in the air gap, default mid-gap) or\n"
-     "  --analytic (charge interaction). Lengths in the case's unit, angles in degrees.\n"
+     "  --analytic: harmonic-form interaction when every magnet is a full-turn spherical\n"
+     "  segment centred on the origin, magnetized along its own axis or radially, and a\n"
+     "  sphere separates the group from the rest (milliseconds, truncation bound printed);\n"
+     "  otherwise the charge interaction. summary.json `method` says which. Lengths in the\n"
+     "  case's unit, angles in degrees.\n"
      "  --jobs N   positions solved in parallel (default: one per core)\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",

@@ -205,7 +205,7 @@ int run_sweep(const Args& args) {
   nlohmann::ordered_json j;
   magfem::add_provenance(j);
   j["case"] = spec.file;
-  j["method"] = o.analytic ? "charge_interaction" : "maxwell_stress_sphere";
+  j["method"] = magfem::sweep_method(rows, o);
   j["group"] = o.group;
   j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
   int failed = 0;
@@ -214,6 +214,9 @@ int run_sweep(const Args& args) {
     nlohmann::ordered_json p = {{"angle_deg", r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
     if (r.unknowns)
       p["unknowns"] = r.unknowns;
+    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
+      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
+      p["force_bound_N"] = r.force_bound;
     if (!r.ok)
       p["error"] = r.error, ++failed;
     total_s += r.seconds;
@@ -233,6 +236,7 @@ int run_sweep(const Args& args) {
                   r.seconds);
     else
       std::printf("%10.3f FAILED: %s\n", r.angle_deg, r.error.c_str());
+  std::printf("%s\n", magfem::sweep_method_note(rows, o).c_str());
   std::printf("wrote    %s/sweep.csv%s, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), plotted ? ", sweep.png" : "", total_s);
   if (failed) {
