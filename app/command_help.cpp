@@ -13,7 +13,7 @@ struct CommandHelp {
   const char* details;  // options and outputs
 };
 
-constexpr std::array<CommandHelp, 5> commands{{
+constexpr std::array<CommandHelp, 6> commands{{
     {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
@@ -48,6 +48,19 @@ constexpr std::array<CommandHelp, 5> commands{{
      "  otherwise the charge interaction. summary.json `method` says which. Lengths in the\n"
      "  case's unit, angles in degrees.\n"
      "  --jobs N   positions solved in parallel (default: one per core)\n"},
+    {"study",
+     "magfem study CASE.yaml --param NAME=START:STEP:END|A,B,C [--param ...]\n"
+     "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"
+     "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
+     "                    [--analytic|--fe] [--jobs N] [--out DIR]",
+     "evaluate torque objectives over a grid of case-file parameters",
+     "  Every combination of the --param values (the file's `parameters:`, in each one's\n"
+     "  own unit) is read and swept as `magfem sweep` does (analytic by default: the\n"
+     "  harmonic form where it applies); the objectives take the torque about the axis on\n"
+     "  GROUP: peak_torque is max |T| over --angles, torque_at:DEG the value at DEG. Writes\n"
+     "  study.csv (one column per parameter, one per objective), study.png, summary.json\n"
+     "  into DIR (default out/<case>_study). Exit 3 if a design failed (listed in\n"
+     "  summary.json; the others are written).\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",
      "recompute the published figures and report the agreement",

@@ -18,6 +18,7 @@
 #include "app/run2d.hpp"
 #include "app/run3d.hpp"
 #include "app/run_analytic.hpp"
+#include "app/study.hpp"
 #include "app/sweep.hpp"
 #include "app/sweep_plot.hpp"
 #include "app/validate.hpp"
@@ -303,6 +304,9 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
       return magfem::run_validate(
           magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
+      return magfem::run_study_command(
+          magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
     const Args args = parse_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);
