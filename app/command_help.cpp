@@ -13,7 +13,7 @@ struct CommandHelp {
   const char* details;  // options and outputs
 };
 
-constexpr std::array<CommandHelp, 6> commands{{
+constexpr std::array<CommandHelp, 7> commands{{
     {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
@@ -61,6 +61,16 @@ constexpr std::array<CommandHelp, 6> commands{{
      "  study.csv (one column per parameter, one per objective), study.png, summary.json\n"
      "  into DIR (default out/<case>_study). Exit 3 if a design failed (listed in\n"
      "  summary.json; the others are written).\n"},
+    {"optimize",
+     "magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ...]\n"
+     "                    --maximize|--minimize peak_torque|torque_at:DEG\n"
+     "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
+     "                    [--xtol T] [--verify-fe] [--out DIR]",
+     "bounded optimization of a torque objective over case-file parameters",
+     "  NLopt's COBYLA (derivative-free, bounded) on the analytic sweep of `magfem study`;\n"
+     "  --xtol is its relative tolerance on the variables (default 1e-4). --verify-fe solves\n"
+     "  the optimum by FE and reports the FE value beside the analytic one. Writes\n"
+     "  summary.json into DIR (default out/<case>_optimize).\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",
      "recompute the published figures and report the agreement",

@@ -14,6 +14,7 @@
 
 #include "app/build_info.hpp"
 #include "app/command_help.hpp"
+#include "app/optimize.hpp"
 #include "app/resource_usage.hpp"
 #include "app/run2d.hpp"
 #include "app/run3d.hpp"
@@ -304,6 +305,9 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
       return magfem::run_validate(
           magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
+      return magfem::run_optimize_command(
+          magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
       return magfem::run_study_command(
           magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));

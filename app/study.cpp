@@ -59,7 +59,9 @@ StudyParameter parse_parameter(const std::string& text) {
   return p;
 }
 
-StudyObjective parse_objective(const std::string& text) {
+} // namespace
+
+StudyObjective parse_study_objective(const std::string& text) {
   StudyObjective o;
   if (text == "peak_torque") {
     o.name = "peak_torque_Nm";
@@ -77,6 +79,8 @@ StudyObjective parse_objective(const std::string& text) {
                    "unknown objective '" + text + "' (peak_torque, torque_at:DEG)");
 }
 
+namespace {
+
 // The angles one design needs: --angles for peak_torque, plus every torque_at angle.
 std::vector<double> design_angles(const StudyOptions& o) {
   std::vector<double> angles;
@@ -89,7 +93,9 @@ std::vector<double> design_angles(const StudyOptions& o) {
   return angles;
 }
 
-StudyDesign evaluate_design(const StudyOptions& o, const std::vector<double>& values) {
+} // namespace
+
+StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<double>& values) {
   StudyDesign d;
   d.parameters = values;
   const auto t0 = std::chrono::steady_clock::now();
@@ -136,8 +142,6 @@ StudyDesign evaluate_design(const StudyOptions& o, const std::vector<double>& va
   return d;
 }
 
-} // namespace
-
 StudyOptions parse_study_options(const std::vector<std::string>& args) {
   StudyOptions o;
   o.sweep.analytic = true;
@@ -154,7 +158,7 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
     if (arg == "--param")
       o.parameters.push_back(parse_parameter(value()));
     else if (arg == "--objective")
-      o.objectives.push_back(parse_objective(value()));
+      o.objectives.push_back(parse_study_objective(value()));
     else if (arg == "--rotate")
       o.sweep.group = value();
     else if (arg == "--axis")
@@ -229,7 +233,7 @@ std::vector<StudyDesign> run_study(const StudyOptions& options) {
   }
   std::vector<StudyDesign> designs;
   for (const auto& values : grid)
-    designs.push_back(evaluate_design(options, values));
+    designs.push_back(evaluate_study_design(options, values));
   return designs;
 }
 

@@ -50,6 +50,13 @@ struct StudyDesign {
   double seconds = 0;
 };
 
+// One objective from its command-line text (peak_torque, torque_at:DEG); InputError if unknown.
+StudyObjective parse_study_objective(const std::string& text);
+
+// One design: the case read with `values` for options.parameters (in their own units) and
+// swept; failures other than bad options are recorded in the design, not thrown.
+StudyDesign evaluate_study_design(const StudyOptions& options, const std::vector<double>& values);
+
 // Every design of the grid (the last parameter varies fastest). A design whose case cannot be
 // read (e.g. the radii cross) or whose sweep fails is recorded with its message; a bad option
 // or a case that fails for every design (unknown parameter, group) throws InputError.
