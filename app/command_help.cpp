@@ -13,7 +13,7 @@ struct CommandHelp {
   const char* details;  // options and outputs
 };
 
-constexpr std::array<CommandHelp, 5> commands{{
+constexpr std::array<CommandHelp, 7> commands{{
     {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
@@ -44,10 +44,37 @@ constexpr std::array<CommandHelp, 5> commands{{
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
      "  the origin and force on the group), sweep.png and summary.json. FE by default\n"
      "  (stress tensor on a sphere of radius R in the air gap, default mid-gap) or\n"
-     "  --analytic (charge interaction). Lengths in the case's unit, angles in degrees.\n"
+     "  --analytic: harmonic-form interaction when every magnet is a full-turn spherical\n"
+     "  segment centred on the origin, magnetized along its own axis or radially, and a\n"
+     "  sphere separates the group from the rest (milliseconds, truncation bound printed);\n"
+     "  otherwise the charge interaction. summary.json `method` says which. Lengths in the\n"
+     "  case's unit, angles in degrees.\n"
      "  Axisymmetric cases: --move translates GROUP along the axis by the positions (mm)\n"
      "  and writes sweep.csv (position_mm,Fz_N: the Lorentz force on the group).\n"
      "  --jobs N   positions solved in parallel (default: one per core)\n"},
+    {"study",
+     "magfem study CASE.yaml --param NAME=START:STEP:END|A,B,C [--param ...]\n"
+     "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"
+     "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
+     "                    [--analytic|--fe] [--jobs N] [--out DIR]",
+     "evaluate torque objectives over a grid of case-file parameters",
+     "  Every combination of the --param values (the file's `parameters:`, in each one's\n"
+     "  own unit) is read and swept as `magfem sweep` does (analytic by default: the\n"
+     "  harmonic form where it applies); the objectives take the torque about the axis on\n"
+     "  GROUP: peak_torque is max |T| over --angles, torque_at:DEG the value at DEG. Writes\n"
+     "  study.csv (one column per parameter, one per objective), study.png, summary.json\n"
+     "  into DIR (default out/<case>_study). Exit 3 if a design failed (listed in\n"
+     "  summary.json; the others are written).\n"},
+    {"optimize",
+     "magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ...]\n"
+     "                    --maximize|--minimize peak_torque|torque_at:DEG\n"
+     "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
+     "                    [--xtol T] [--verify-fe] [--out DIR]",
+     "bounded optimization of a torque objective over case-file parameters",
+     "  NLopt's COBYLA (derivative-free, bounded) on the analytic sweep of `magfem study`;\n"
+     "  --xtol is its relative tolerance on the variables (default 1e-4). --verify-fe solves\n"
+     "  the optimum by FE and reports the FE value beside the analytic one. Writes\n"
+     "  summary.json into DIR (default out/<case>_optimize).\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",
      "recompute the published figures and report the agreement",

@@ -14,10 +14,12 @@
 
 #include "app/build_info.hpp"
 #include "app/command_help.hpp"
+#include "app/optimize.hpp"
 #include "app/resource_usage.hpp"
 #include "app/run2d.hpp"
 #include "app/run3d.hpp"
 #include "app/run_analytic.hpp"
+#include "app/study.hpp"
 #include "app/sweep.hpp"
 #include "app/sweep_axi.hpp"
 #include "app/sweep_plot.hpp"
@@ -272,7 +274,7 @@ int run_sweep(const Args& args) {
   nlohmann::ordered_json j;
   magfem::add_provenance(j);
   j["case"] = spec.file;
-  j["method"] = o.analytic ? "charge_interaction" : "maxwell_stress_sphere";
+  j["method"] = magfem::sweep_method(rows, o);
   j["group"] = o.group;
   j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
   int failed = 0;
@@ -281,6 +283,9 @@ int run_sweep(const Args& args) {
     nlohmann::ordered_json p = {{"angle_deg", r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
     if (r.unknowns)
       p["unknowns"] = r.unknowns;
+    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
+      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
+      p["force_bound_N"] = r.force_bound;
     if (!r.ok)
       p["error"] = r.error, ++failed;
     total_s += r.seconds;
@@ -300,6 +305,7 @@ int run_sweep(const Args& args) {
                   r.seconds);
     else
       std::printf("%10.3f FAILED: %s\n", r.angle_deg, r.error.c_str());
+  std::printf("%s\n", magfem::sweep_method_note(rows, o).c_str());
   std::printf("wrote    %s/sweep.csv%s, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), plotted ? ", sweep.png" : "", total_s);
   if (failed) {
@@ -366,6 +372,12 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
       return magfem::run_validate(
           magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
+      return magfem::run_optimize_command(
+          magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
+      return magfem::run_study_command(
+          magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
     const Args args = parse_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);

@@ -6,8 +6,10 @@
 // recorded with its message and the others go on. The FE force comes from the Maxwell stress
 // tensor on a sphere in the air gap that separates the group from the rest; the mesh is
 // refined on that sphere (it is added as a probe surface) so that remeshing at every angle
-// leaves little noise. The analytic force is the charge interaction between the group and
-// the rest (mu_r = 1 magnets in air).
+// leaves little noise. The analytic force is the harmonic-form interaction when every magnet
+// is axisymmetric about its own axis through the origin and a sphere separates the group
+// from the rest (validation/axisymmetric_interaction.hpp: microseconds, with a truncation
+// bound), and the charge interaction otherwise (mu_r = 1 magnets in air).
 #include <functional>
 #include <optional>
 #include <string>
@@ -40,6 +42,11 @@ struct SweepRow {
   std::string error; // why the position failed
   double seconds = 0;
   long unknowns = 0; // FE only
+  // How the position was computed: "harmonic_interaction", "charge_interaction" or
+  // "maxwell_stress_sphere"; for the harmonic form its degrees and truncation bounds.
+  std::string method;
+  int n_max = 0;
+  double torque_bound = 0, force_bound = 0; // N m, N
 };
 
 // The case with every part of `group` rotated by angle (radians, right-hand rule) about the
@@ -69,6 +76,12 @@ Eigen::Vector3d parse_axis(const std::string& text);
 using SweepProgress = std::function<void(int done, int total)>;
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
                                 const SweepProgress& progress = {});
+
+// The method of the rows ("mixed" if they differ; failed rows do not count; if none
+// succeeded, the one the options ask for), and a line for the terminal on what it was
+// (harmonic: degrees and worst truncation bound against the peak).
+std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options);
+std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOptions& options);
 
 // sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in angle order).
 std::string sweep_csv(const std::vector<SweepRow>& rows);

@@ -1,8 +1,11 @@
 // Case-file reader: YAML -> CaseSpec. Units are converted here and only here.
 #include <cmath>
+#include <fstream>
 #include <regex>
 #include <set>
+#include <sstream>
 
+#include "casefile/case_parameters.hpp"
 #include "casefile/case_spec.hpp"
 #include "casefile/force_reader.hpp"
 #include "casefile/reader_helpers.hpp"
@@ -221,12 +224,21 @@ ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
 
 } // namespace
 
-CaseSpec read_case(const std::string& path) {
-  const YamlNode root = YamlNode::load_file(path);
-  root.allow_keys({"title", "description", "dimension", "unit", "stack_length", "materials",
-                   "regions", "coils", "boundary", "mesh", "solver", "probes", "forces", "output"});
+CaseSpec read_case(const std::string& path, const ParameterOverrides& overrides) {
+  std::ifstream in(path);
+  if (!in)
+    throw InputError(path, 0, "", "cannot open the file");
+  std::stringstream text;
+  text << in.rdbuf();
+  const YamlNode root = YamlNode::load_string(quote_expressions(text.str()), path);
+  root.allow_keys({"title", "description", "dimension", "unit", "parameters", "stack_length",
+                   "materials", "regions", "coils", "boundary", "mesh", "solver", "probes",
+                   "forces", "output"});
   CaseSpec c;
   c.file = path;
+  // Parameters first: every field below then reads plain numbers (the unit cannot be one).
+  c.parameters =
+      apply_parameters(root, overrides, root.has("unit") ? unit_scale(root.at("unit")) : 1e-3);
   if (root.has("dimension") && root.at("dimension").as_string() == "axi") {
     c.dimension = 2;
     c.geometry2d.symmetry = Symmetry2D::axisymmetric;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "casefile/case_parameter.hpp"
 #include "materials/magnetization.hpp"
 #include "materials/material.hpp"
 #include "mesh/geometry2d.hpp"
@@ -43,8 +44,9 @@ struct CaseSpec {
   bool write_revolved_vtu = false; // axisymmetric: also solution_revolved.vtu (3D)
   double stack_length = 0; // metres; 0 = report per unit length
   int boundary_line = 0;
-  std::vector<int> coil_lines; // parallel to geometry3d.coils
-  bool coil_inductance = true; // 3D: the inductance matrix (one extra solve per coil)
+  std::vector<int> coil_lines;           // parallel to geometry3d.coils
+  bool coil_inductance = true;           // 3D: the inductance matrix (one extra solve per coil)
+  std::vector<CaseParameter> parameters; // the `parameters:` section, resolved (file order)
 
   // `dimension: axi`: a 2D case in the r-z half plane (geometry2d.symmetry says so).
   bool axisymmetric() const {
@@ -53,6 +55,7 @@ struct CaseSpec {
 };
 
 // Reads and validates a case file. Every problem is an InputError naming file, line, field.
-CaseSpec read_case(const std::string& path);
+// `overrides` replace parameter values (case_parameter.hpp) before anything is read.
+CaseSpec read_case(const std::string& path, const ParameterOverrides& overrides = {});
 
 } // namespace magfem

@@ -18,6 +18,9 @@ magfem_require(CGAL_FOUND libcgal-dev)
 find_package(VTK 9 QUIET COMPONENTS CommonCore CommonDataModel IOXML)
 magfem_require(VTK_FOUND libvtk9-dev)
 
+find_package(NLopt QUIET)
+magfem_require(NLopt_FOUND libnlopt-cxx-dev)
+
 find_package(Threads REQUIRED)
 
 # SuiteSparse ships no CMake config in Debian 12: locate CHOLMOD directly.

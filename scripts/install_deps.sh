@@ -5,11 +5,12 @@ set -euo pipefail
 # libopenblas0-pthread replaces the reference BLAS behind CHOLMOD's supernodal factorization
 # (measured: nonlinear motor, 108k unknowns, 3.9 s -> 2.6 s); gnuplot-nox draws sweep plots;
 # python3-jsonschema/python3-yaml check docs/case.schema.json against the examples; dpkg-dev
-# and file let CPack compute the Debian package's runtime dependencies.
+# and file let CPack compute the Debian package's runtime dependencies; libnlopt-cxx-dev is
+# the bounded optimizer behind magfem optimize.
 packages=(cmake g++ make ccache pkg-config
           libeigen3-dev libyaml-cpp-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libsuitesparse-dev libtet1.5-dev libvtk9-dev nlohmann-json3-dev libtbb-dev
-          libgtest-dev gnuplot-nox libopenblas0-pthread
+          libgtest-dev gnuplot-nox libopenblas0-pthread libnlopt-cxx-dev
           python3-jsonschema python3-yaml dpkg-dev file)
 missing=()
 for p in "${packages[@]}"; do

@@ -6,7 +6,7 @@ _magfem() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   command="${COMP_WORDS[1]}"
-  local commands="solve analytic compare sweep validate help"
+  local commands="solve analytic compare sweep study optimize validate help"
 
   if ((COMP_CWORD == 1)); then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
@@ -19,7 +19,11 @@ _magfem() {
     --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
     --mesh-scale | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
-      --jobs | --only | --source) return ;;
+      --jobs | --only | --source | --param | --vary | --xtol) return ;;
+    --objective | --maximize | --minimize)
+      COMPREPLY=($(compgen -W "peak_torque torque_at:" -- "$cur"))
+      return
+      ;;
   esac
   local options
   case "$command" in
@@ -28,6 +32,8 @@ _magfem() {
     compare) options="--help" ;;
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;
     validate) options="--tier --only --source --jobs --out --help" ;;
+    study) options="--param --objective --rotate --axis --angles --analytic --fe --jobs --out --help" ;;
+    optimize) options="--vary --maximize --minimize --rotate --axis --angles --xtol --verify-fe --out --help" ;;
     help) COMPREPLY=($(compgen -W "${commands% help}" -- "$cur")); return ;;
   esac
   if [[ "$cur" == -* ]]; then
@@ -36,7 +42,7 @@ _magfem() {
   fi
   case "$command" in
     compare) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
-    solve | analytic | sweep) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
+    solve | analytic | sweep | study | optimize) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
   esac
 }
 complete -o filenames -F _magfem magfem

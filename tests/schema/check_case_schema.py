@@ -57,9 +57,87 @@ def construct_mapping(loader, node, deep=False):
 CaseLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, construct_mapping)
 
 
+def quote_line(line):
+    """casefile/case_parameters.cpp quote_expressions(), one line: a `${..}` standing alone as
+    a value is put in double quotes (its braces are flow indicators in `[..]` and `{..}`)."""
+    out, quote, i = "", None, 0
+    while i < len(line):
+        c = line[i]
+        if quote:
+            quote = None if c == quote else quote
+            out, i = out + c, i + 1
+        elif c in "\"'":
+            quote, out, i = c, out + c, i + 1
+        elif c == "#" and (i == 0 or line[i - 1] in " \t"):
+            return out + line[i:]
+        elif line.startswith("${", i):
+            close = line.find("}", i)
+            before = out.rstrip(" \t")[-1:]
+            rest = line[close + 1:].lstrip(" \t") if close >= 0 else ""
+            if close >= 0 and before in ("", ":", ",", "[", "{", "-") and rest[:1] in ("", ",", "]", "}", "#"):
+                out, i = out + '"' + line[i:close + 1] + '"', close + 1
+            else:
+                out, i = out + c, i + 1
+        else:
+            out, i = out + c, i + 1
+    return out
+
+
+def evaluate(text, lookup):
+    """+ - * / parentheses, numbers and names, as casefile/parameter_expression.cpp."""
+    import ast
+
+    def ev(node):
+        if isinstance(node, ast.Expression):
+            return ev(node.body)
+        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
+            return float(node.value)
+        if isinstance(node, ast.Name):
+            return lookup(node.id)
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            v = ev(node.operand)
+            return -v if isinstance(node.op, ast.USub) else v
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub, ast.Mult, ast.Div)):
+            a, b = ev(node.left), ev(node.right)
+            return {ast.Add: a + b, ast.Sub: a - b, ast.Mult: a * b}.get(type(node.op)) \
+                if not isinstance(node.op, ast.Div) else a / b
+        raise ValueError("not a parameter expression: %r" % text)
+
+    return ev(ast.parse(text, mode="eval"))
+
+
+def substitute_parameters(data):
+    """Replaces `${..}` by numbers as magfem's reader does (units are not converted: the schema
+    checks kinds and signs, which positive unit factors keep)."""
+    if not isinstance(data, dict) or "parameters" not in data:
+        return data
+    raw = data["parameters"] or {}
+    values = {}
+
+    def lookup(name):
+        if name not in values:
+            v = raw[name]["value"] if isinstance(raw[name], dict) else raw[name]
+            values[name] = evaluate(v[2:-1], lookup) if isinstance(v, str) else float(v)
+        return values[name]
+
+    def walk(node):
+        if isinstance(node, dict):
+            return {k: walk(v) for k, v in node.items()}
+        if isinstance(node, list):
+            return [walk(v) for v in node]
+        if isinstance(node, str) and "${" in node:
+            if re.fullmatch(r"\$\{[^}]*\}", node):
+                return evaluate(node[2:-1], lookup)
+            return re.sub(r"\$\{([^}]*)\}", lambda m: "%g" % evaluate(m.group(1), lookup), node)
+        return node
+
+    return {k: (v if k == "parameters" else walk(v)) for k, v in data.items()}
+
+
 def load_yaml(path):
     with open(path, encoding="utf-8") as f:
-        return yaml.load(f, Loader=CaseLoader)
+        text = "\n".join(quote_line(line) for line in f.read().split("\n"))
+    return substitute_parameters(yaml.load(text, Loader=CaseLoader))
 
 
 def where(error):

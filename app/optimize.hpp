@@ -1,0 +1,49 @@
+#pragma once
+// `magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ..] --maximize|--minimize OBJECTIVE
+//  --rotate GROUP --axis A [--angles LIST] [--xtol T] [--verify-fe] [--out DIR]`:
+// a bounded derivative-free optimizer (NLopt's COBYLA) over case-file parameters with the
+// analytic sweep as the model (app/study.hpp objectives), then, with --verify-fe, one FE
+// sweep at the optimum that reports the FE objective beside the analytic one.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/study.hpp"
+
+namespace magfem {
+
+struct OptimizeVariable {
+  std::string name;
+  double lower = 0, upper = 0; // in the parameter's own unit
+};
+
+struct OptimizeOptions {
+  StudyOptions study; // case file, objective (the first), sweep; its parameters are the vars
+  std::vector<OptimizeVariable> variables;
+  bool maximize = true;
+  double xtol = 1e-4; // relative tolerance on the variables (NLopt xtol_rel)
+  int max_evaluations = 500;
+  bool verify_fe = false;
+};
+
+struct OptimizeResult {
+  std::vector<double> optimum; // parallel to variables
+  double objective = 0;        // analytic, at the optimum
+  int evaluations = 0;
+  std::string method; // of the analytic sweeps
+  std::string stop;   // NLopt's reason
+  std::optional<double> fe_objective;
+  double fe_seconds = 0;
+};
+
+// Parses the arguments after `optimize`; throws InputError naming the option.
+OptimizeOptions parse_optimize_options(const std::vector<std::string>& args);
+
+// Runs the optimizer (and the FE check if asked). Throws InputError for bad options, and
+// SolveError if the model fails at a point the optimizer asks for.
+OptimizeResult run_optimize(const OptimizeOptions& options);
+
+// The command: prints the optimum, writes summary.json (all or nothing); exit code.
+int run_optimize_command(const OptimizeOptions& options);
+
+} // namespace magfem

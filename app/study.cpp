@@ -1,0 +1,329 @@
+#include "app/study.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/build_info.hpp"
+#include "app/study_plot.hpp"
+#include "core/input_error.hpp"
+#include "core/output_stage.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+double parse_double(const std::string& option, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(v))
+      return v;
+  } catch (const std::exception&) {
+  }
+  throw InputError(cli, 0, option, "expected a finite number, got '" + text + "'");
+}
+
+// NAME=START:STEP:END (END included within round-off) or NAME=A,B,C.
+StudyParameter parse_parameter(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(cli, 0, "--param",
+                     "expected NAME=START:STEP:END or NAME=A,B,C, got '" + text + "'");
+  StudyParameter p{text.substr(0, eq), {}};
+  const std::string list = text.substr(eq + 1);
+  std::vector<double> v;
+  const char sep = list.find(':') != std::string::npos ? ':' : ',';
+  for (std::size_t start = 0;;) {
+    const auto end = list.find(sep, start);
+    v.push_back(parse_double("--param", list.substr(start, end - start)));
+    if (end == std::string::npos)
+      break;
+    start = end + 1;
+  }
+  if (sep == ',') {
+    p.values = v;
+    return p;
+  }
+  if (v.size() != 3 || !(v[1] > 0) || v[2] < v[0])
+    throw InputError(cli, 0, "--param",
+                     "expected " + p.name + "=START:STEP:END with STEP > 0 and END >= START");
+  const int n = static_cast<int>(std::floor((v[2] - v[0]) / v[1] + 1e-9));
+  for (int i = 0; i <= n; ++i)
+    p.values.push_back(v[0] + i * v[1]);
+  return p;
+}
+
+} // namespace
+
+StudyObjective parse_study_objective(const std::string& text) {
+  StudyObjective o;
+  if (text == "peak_torque") {
+    o.name = "peak_torque_Nm";
+    return o;
+  }
+  if (text.rfind("torque_at:", 0) == 0) {
+    o.kind = StudyObjective::Kind::torque_at;
+    o.angle_deg = parse_double("--objective", text.substr(10));
+    char name[64];
+    std::snprintf(name, sizeof name, "torque_at_%gdeg_Nm", o.angle_deg);
+    o.name = name;
+    return o;
+  }
+  throw InputError(cli, 0, "--objective",
+                   "unknown objective '" + text + "' (peak_torque, torque_at:DEG)");
+}
+
+namespace {
+
+// The angles one design needs: --angles for peak_torque, plus every torque_at angle.
+std::vector<double> design_angles(const StudyOptions& o) {
+  std::vector<double> angles;
+  for (const auto& obj : o.objectives)
+    if (obj.kind == StudyObjective::Kind::peak_torque)
+      angles = o.sweep.angles_deg;
+  for (const auto& obj : o.objectives)
+    if (obj.kind == StudyObjective::Kind::torque_at)
+      angles.push_back(obj.angle_deg);
+  return angles;
+}
+
+} // namespace
+
+StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<double>& values) {
+  StudyDesign d;
+  d.parameters = values;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    ParameterOverrides overrides;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      overrides[o.parameters[i].name] = values[i];
+    const CaseSpec spec = read_case(o.case_file, overrides);
+    SweepOptions so = o.sweep;
+    so.angles_deg = design_angles(o);
+    const auto rows = run_sweep(spec, so);
+    const Eigen::Vector3d axis = so.axis.normalized();
+    const std::size_t n_peak = rows.size() - [&] {
+      std::size_t n = 0;
+      for (const auto& obj : o.objectives)
+        n += obj.kind == StudyObjective::Kind::torque_at;
+      return n;
+    }();
+    for (const auto& r : rows)
+      if (!r.ok)
+        throw std::runtime_error("at " + std::to_string(r.angle_deg) + " deg: " + r.error);
+    std::size_t next_at = n_peak;
+    for (const auto& obj : o.objectives) {
+      if (obj.kind == StudyObjective::Kind::peak_torque) {
+        double peak = 0;
+        for (std::size_t i = 0; i < n_peak; ++i)
+          peak = std::max(peak, std::abs(rows[i].torque.dot(axis)));
+        d.objectives.push_back(peak);
+      } else {
+        d.objectives.push_back(rows[next_at++].torque.dot(axis));
+      }
+    }
+    d.method = sweep_method(rows, so);
+    d.ok = true;
+  } catch (const InputError& e) {
+    // Options and names are the same for every design: report them once, as bad input.
+    if (e.file() == cli)
+      throw;
+    d.error = e.what();
+  } catch (const std::exception& e) {
+    d.error = e.what();
+  }
+  d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return d;
+}
+
+StudyOptions parse_study_options(const std::vector<std::string>& args) {
+  StudyOptions o;
+  o.sweep.analytic = true;
+  std::string axis, angles;
+  bool analytic = false, fe = false;
+  std::vector<std::string> positional;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size())
+        throw InputError(cli, 0, arg, "missing value");
+      return args[++i];
+    };
+    if (arg == "--param")
+      o.parameters.push_back(parse_parameter(value()));
+    else if (arg == "--objective")
+      o.objectives.push_back(parse_study_objective(value()));
+    else if (arg == "--rotate")
+      o.sweep.group = value();
+    else if (arg == "--axis")
+      axis = value();
+    else if (arg == "--angles")
+      angles = value();
+    else if (arg == "--analytic")
+      analytic = true;
+    else if (arg == "--fe")
+      fe = true;
+    else if (arg == "--jobs") {
+      o.sweep.jobs = static_cast<int>(parse_double(arg, value()));
+      if (o.sweep.jobs < 1)
+        throw InputError(cli, 0, arg, "must be at least 1");
+    } else if (arg == "--out")
+      o.out_dir = value();
+    else if (arg.rfind("--", 0) == 0)
+      throw InputError(cli, 0, arg, "unknown option for study");
+    else
+      positional.push_back(arg);
+  }
+  if (positional.size() != 1)
+    throw InputError(cli, 0, "", "study takes one case file");
+  o.case_file = positional[0];
+  if (analytic && fe)
+    throw InputError(cli, 0, "--fe", "give --analytic or --fe, not both");
+  o.sweep.analytic = !fe;
+  if (o.parameters.empty())
+    throw InputError(cli, 0, "--param", "give at least one --param NAME=START:STEP:END");
+  if (o.objectives.empty())
+    throw InputError(cli, 0, "--objective", "give at least one objective");
+  if (o.sweep.group.empty())
+    throw InputError(cli, 0, "--rotate", "name the group whose torque the objectives take");
+  if (axis.empty())
+    throw InputError(cli, 0, "--axis", "give the rotation axis");
+  o.sweep.axis = parse_axis(axis);
+  bool needs_angles = false;
+  for (const auto& obj : o.objectives)
+    needs_angles |= obj.kind == StudyObjective::Kind::peak_torque;
+  if (needs_angles && angles.empty())
+    throw InputError(cli, 0, "--angles", "peak_torque needs the angles of its sweep");
+  if (!angles.empty())
+    o.sweep.angles_deg = parse_angle_list(angles);
+  if (o.out_dir.empty())
+    o.out_dir = (std::filesystem::path("out") /
+                 (std::filesystem::path(o.case_file).stem().string() + "_study"))
+                    .string();
+  return o;
+}
+
+std::vector<StudyDesign> run_study(const StudyOptions& options) {
+  // Fail early for names the file does not declare (read_case names them as --param); the
+  // first design's own problems (crossing radii) are that design's, reported with it.
+  try {
+    ParameterOverrides check;
+    for (const auto& p : options.parameters)
+      check[p.name] = p.values.front();
+    (void)read_case(options.case_file, check);
+  } catch (const InputError& e) {
+    if (e.file() == cli || e.line() == 0) // an option, or a file that cannot be opened
+      throw;
+  }
+  std::vector<std::vector<double>> grid{{}};
+  for (const auto& p : options.parameters) {
+    std::vector<std::vector<double>> next;
+    for (const auto& g : grid)
+      for (double v : p.values) {
+        next.push_back(g);
+        next.back().push_back(v);
+      }
+    grid = std::move(next);
+  }
+  std::vector<StudyDesign> designs;
+  for (const auto& values : grid)
+    designs.push_back(evaluate_study_design(options, values));
+  return designs;
+}
+
+std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs) {
+  std::string out;
+  for (const auto& p : options.parameters)
+    out += p.name + ",";
+  for (std::size_t i = 0; i < options.objectives.size(); ++i)
+    out += options.objectives[i].name + (i + 1 < options.objectives.size() ? "," : "\n");
+  char cell[64];
+  for (const auto& d : designs) {
+    if (!d.ok)
+      continue;
+    std::string line;
+    for (double v : d.parameters)
+      std::snprintf(cell, sizeof cell, "%.10g,", v), line += cell;
+    for (std::size_t i = 0; i < d.objectives.size(); ++i)
+      std::snprintf(cell, sizeof cell, "%.10g%s", d.objectives[i],
+                    i + 1 < d.objectives.size() ? "," : "\n"),
+          line += cell;
+    out += line;
+  }
+  return out;
+}
+
+int run_study_command(const StudyOptions& options) {
+  const auto designs = run_study(options);
+  std::filesystem::create_directories(options.out_dir);
+  OutputStage stage(options.out_dir);
+  stage.write_text("study.csv", study_csv(options, designs));
+  std::string why;
+  const bool plotted = plot_study(options, designs, stage.path_for("study.png"), why);
+  if (!plotted)
+    std::cerr << "magfem: note: no study.png: " << why << "\n";
+
+  nlohmann::ordered_json j;
+  add_provenance(j);
+  j["case"] = options.case_file;
+  std::string method;
+  int failed = 0;
+  double seconds = 0;
+  for (const auto& d : designs) {
+    if (d.ok)
+      method = method.empty() || method == d.method ? d.method : "mixed";
+    failed += !d.ok;
+    seconds += d.seconds;
+  }
+  j["method"] = method.empty() ? (options.sweep.analytic ? "analytic" : "fe") : method;
+  j["group"] = options.sweep.group;
+  j["axis"] = {options.sweep.axis.x(), options.sweep.axis.y(), options.sweep.axis.z()};
+  j["angles_deg"] = options.sweep.angles_deg;
+  for (const auto& p : options.parameters) {
+    nlohmann::ordered_json pj = {{"name", p.name}, {"values", p.values}};
+    j["parameters"].push_back(pj);
+  }
+  for (const auto& o : options.objectives)
+    j["objectives"].push_back(o.name);
+  j["designs"] = designs.size();
+  j["failed_designs"] = failed;
+  for (const auto& d : designs)
+    if (!d.ok)
+      j["failures"].push_back({{"parameters", d.parameters}, {"error", d.error}});
+  j["seconds"] = seconds;
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+
+  for (const auto& p : options.parameters)
+    std::printf("%14s", p.name.c_str());
+  for (const auto& o : options.objectives)
+    std::printf(" %22s", o.name.c_str());
+  std::printf("\n");
+  for (const auto& d : designs) {
+    for (double v : d.parameters)
+      std::printf("%14.6g", v);
+    if (d.ok)
+      for (double v : d.objectives)
+        std::printf(" %22.8g", v);
+    else
+      std::printf(" FAILED: %s", d.error.c_str());
+    std::printf("\n");
+  }
+  std::printf("method   %s, %zu designs in %.2f s\n", j["method"].get<std::string>().c_str(),
+              designs.size(), seconds);
+  std::printf("wrote    %s/study.csv%s, summary.json\n", options.out_dir.c_str(),
+              plotted ? ", study.png" : "");
+  if (failed) {
+    std::cerr << "magfem: " << failed << " of " << designs.size() << " designs failed\n";
+    return 3;
+  }
+  return 0;
+}
+
+} // namespace magfem

@@ -1,0 +1,72 @@
+#pragma once
+// `magfem study CASE.yaml --param NAME=START:STEP:END [--param ..] --objective Q [..]
+//  [--rotate GROUP --axis A --angles LIST] [--analytic|--fe] [--jobs N] [--out DIR]`:
+// a grid over case-file parameters (casefile/case_parameters.hpp), each design evaluated by a
+// sweep (app/sweep.hpp: analytic by default, the harmonic form where it applies), writing
+// DIR/study.csv (one column per parameter, one per objective), study.png and summary.json.
+//
+// Objectives (torque about the rotation axis, on the rotated group, N m):
+//   peak_torque      max over --angles of |T . axis|
+//   torque_at:DEG    T . axis at DEG (one position; --angles not needed)
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "app/sweep.hpp"
+#include "casefile/case_spec.hpp"
+
+namespace magfem {
+
+struct StudyParameter {
+  std::string name;
+  std::vector<double> values; // in the parameter's own unit (as --param gives them)
+};
+
+struct StudyObjective {
+  enum class Kind { peak_torque, torque_at };
+  Kind kind = Kind::peak_torque;
+  double angle_deg = 0; // torque_at
+  std::string name;     // the column: "peak_torque_Nm", "torque_at_90deg_Nm"
+};
+
+struct StudyOptions {
+  std::string case_file;
+  std::vector<StudyParameter> parameters;
+  std::vector<StudyObjective> objectives;
+  SweepOptions sweep; // group, axis, angles, analytic, jobs (angles: peak_torque only)
+  std::string out_dir;
+};
+
+// Parses the arguments after `study`; throws InputError naming the option.
+StudyOptions parse_study_options(const std::vector<std::string>& args);
+
+struct StudyDesign {
+  std::vector<double> parameters; // parallel to StudyOptions::parameters
+  std::vector<double> objectives; // parallel to StudyOptions::objectives
+  bool ok = false;
+  std::string error;
+  std::string method; // sweep_method() of its sweep
+  double seconds = 0;
+};
+
+// One objective from its command-line text (peak_torque, torque_at:DEG); InputError if unknown.
+StudyObjective parse_study_objective(const std::string& text);
+
+// One design: the case read with `values` for options.parameters (in their own units) and
+// swept; failures other than bad options are recorded in the design, not thrown.
+StudyDesign evaluate_study_design(const StudyOptions& options, const std::vector<double>& values);
+
+// Every design of the grid (the last parameter varies fastest). A design whose case cannot be
+// read (e.g. the radii cross) or whose sweep fails is recorded with its message; a bad option
+// or a case that fails for every design (unknown parameter, group) throws InputError.
+std::vector<StudyDesign> run_study(const StudyOptions& options);
+
+// study.csv: the parameter names, then the objective names; successful designs only.
+std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs);
+
+// The command: runs, writes study.csv, study.png (if gnuplot is there) and summary.json
+// through one OutputStage, prints a table; returns the exit code (3 if any design failed).
+int run_study_command(const StudyOptions& options);
+
+} // namespace magfem
