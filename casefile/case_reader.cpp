@@ -68,8 +68,39 @@ void read_mesh_options_3d(const YamlNode& m, double s, CaseSpec& c) {
     o.probe_size = m.at("probe_size").as_positive() * s;
 }
 
+// The Krylov solver's settings (CG's preconditioner, its tolerance and iteration limit, PETSc
+// options). A preconditioner or PETSc options mean CG, so they contradict `cholmod`.
+void read_linear_solver(const YamlNode& n, LinearSolverOptions& o) {
+  const std::string pre = n.get_string("preconditioner", "auto");
+  if (pre == "auto")
+    o.preconditioner = PreconditionerKind::automatic;
+  else if (pre == "ichol")
+    o.preconditioner = PreconditionerKind::ichol;
+  else if (pre == "amg" || pre == "boomeramg")
+    o.preconditioner = PreconditionerKind::boomeramg;
+  else if (pre == "gamg")
+    o.preconditioner = PreconditionerKind::gamg;
+  else
+    n.at("preconditioner").fail("preconditioner must be auto, ichol, amg, boomeramg or gamg");
+  o.petsc_options = n.get_string("petsc_options", "");
+  if (o.kind == LinearSolverKind::cholmod && (pre != "auto" || !o.petsc_options.empty()))
+    n.at(pre != "auto" ? "preconditioner" : "petsc_options")
+        .fail("a preconditioner and PETSc options are for linear_solver: cg, not cholmod");
+  if (pre == "ichol" && !o.petsc_options.empty())
+    n.at("petsc_options").fail("petsc_options need an AMG preconditioner (auto, amg or gamg)");
+  if (n.has("linear_tolerance")) {
+    o.cg_tolerance = n.at("linear_tolerance").as_positive();
+    if (o.cg_tolerance >= 1)
+      n.at("linear_tolerance").fail("linear_tolerance must be below 1");
+  }
+  o.cg_max_iterations = n.get_int("linear_max_iterations", o.cg_max_iterations);
+  if (o.cg_max_iterations < 1)
+    n.at("linear_max_iterations").fail("must be at least 1");
+}
+
 void read_solver(const YamlNode& n, CaseSpec& c) {
-  n.allow_keys({"order", "method", "tolerance", "max_iterations", "linear_solver"});
+  n.allow_keys({"order", "method", "tolerance", "max_iterations", "linear_solver", "preconditioner",
+                "petsc_options", "linear_tolerance", "linear_max_iterations"});
   c.order = n.get_int("order", 2);
   if (c.order != 1 && c.order != 2)
     n.at("order").fail("order must be 1 or 2");
@@ -96,6 +127,7 @@ void read_solver(const YamlNode& n, CaseSpec& c) {
     c.newton.linear.kind = LinearSolverKind::cg;
   else
     n.at("linear_solver").fail("linear_solver must be auto, cholmod or cg");
+  read_linear_solver(n, c.newton.linear);
 }
 
 [[noreturn]] void outside(const YamlNode& p, const ProbeSpec& probe, double domain, double s) {

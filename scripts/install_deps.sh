@@ -6,11 +6,13 @@ set -euo pipefail
 # (measured: nonlinear motor, 108k unknowns, 3.9 s -> 2.6 s); gnuplot-nox draws sweep plots;
 # python3-jsonschema/python3-yaml check docs/case.schema.json against the examples; dpkg-dev
 # and file let CPack compute the Debian package's runtime dependencies; libnlopt-cxx-dev is
-# the bounded optimizer behind magfem optimize.
+# the bounded optimizer behind magfem optimize; libpetsc-real-dev (with hypre and Open MPI)
+# gives the 3D solver algebraic multigrid, and mpi-default-bin its mpirun.
 packages=(cmake g++ make ccache pkg-config
           libeigen3-dev libyaml-cpp-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libsuitesparse-dev libtet1.5-dev libvtk9-dev nlohmann-json3-dev libtbb-dev
           libgtest-dev gnuplot-nox libopenblas0-pthread libnlopt-cxx-dev
+          libpetsc-real-dev mpi-default-bin
           python3-jsonschema python3-yaml dpkg-dev file)
 missing=()
 for p in "${packages[@]}"; do

@@ -2,7 +2,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+
+#include "core/progress.hpp"
 
 namespace magfem {
 namespace {
@@ -63,6 +66,7 @@ double energy_line_search(const NonlinearSystem& system, const Eigen::VectorXd& 
 NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
                              const NewtonOptions& options) {
   NewtonReport report;
+  report.linear = system.is_linear();
   LinearSolver linear(options.linear);
   if (u.size() != system.n_unknowns())
     u = Eigen::VectorXd::Zero(system.n_unknowns());
@@ -79,6 +83,7 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
     report.converged = true;
     report.message = "no sources: zero field";
     report.linear_solver = "none";
+    report.preconditioner = "none";
     return report;
   }
 
@@ -123,6 +128,12 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
 
     const double update =
         alpha * du.norm() / std::max(u.norm(), std::numeric_limits<double>::min());
+    if (Progress* p = options.linear.progress) {
+      char line[120];
+      std::snprintf(line, sizeof line, "Newton iteration %d: relative residual %.3e, step %.3g", it,
+                    r_norm / scale, alpha);
+      p->note(line);
+    }
     if (!std::isfinite(r_norm)) {
       report.message = "the residual became non-finite";
       break;
@@ -136,6 +147,10 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
     report.assemble_s += seconds_since(t0);
   }
   report.linear_solver = linear.name();
+  report.preconditioner = linear.preconditioner();
+  report.linear_setup_s = linear.setup_seconds();
+  report.linear_solve_s = linear.solve_seconds();
+  report.notes = linear.notes();
   if (!report.converged && report.message.empty())
     report.message = "no convergence in " + std::to_string(options.max_iterations) +
                      " iterations (relative residual " +

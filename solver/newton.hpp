@@ -25,12 +25,17 @@ struct NewtonOptions {
 
 struct NewtonReport {
   bool converged = false;
+  bool linear = false; // the system is linear: one exact step
   int iterations = 0;
   std::vector<double> residual_history; // relative residuals, starting with the initial one
   std::vector<double> step_lengths;     // line-search factor per iteration
-  std::string linear_solver;
-  int linear_iterations = 0; // summed (CG) or number of factorizations (direct)
+  std::string linear_solver;            // cholmod | cg
+  std::string preconditioner;           // none | ichol | boomeramg | gamg
+  int linear_iterations = 0;            // summed (CG) or number of factorizations (direct)
   double assemble_s = 0, solve_s = 0;
+  // solve_s split: factorization / preconditioner set-up, and the solves themselves.
+  double linear_setup_s = 0, linear_solve_s = 0;
+  std::vector<std::string> notes; // the linear solver's change of course (AMG fallback)
   std::string message;
 };
 

@@ -1,7 +1,8 @@
 // Every way the solvers can fail is reported, never passed off as a result: CHOLMOD on a
-// matrix that is not positive definite, CG stopped by its iteration limit, Newton at its
-// iteration limit and on a non-finite residual. (The CLI maps these to exit 3 with no
-// outputs: tests/app/test_cli.cpp.)
+// matrix that is not positive definite, CG (incomplete Cholesky or AMG) stopped by its
+// iteration limit or by an indefinite system, a PETSc "solve" that stopped without reaching
+// the tolerance (caught by the true residual), Newton at its iteration limit and on a
+// non-finite residual. (The CLI maps these to exit 3 with no outputs: tests/app/test_cli.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +44,12 @@ Eigen::SparseMatrix<double> laplacian_2d(int n) {
         a.insert(k, k - n) = -1.0;
     }
   a.makeCompressed();
+  return a;
+}
+
+Eigen::SparseMatrix<double> identity_lower(int n) {
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setIdentity();
   return a;
 }
 
@@ -100,6 +107,62 @@ TEST(SolverFailures, CgStoppedByItsIterationLimitIsAnError) {
   EXPECT_NE(e.find("did not converge"), std::string::npos) << e;
   o.cg_max_iterations = 20000;
   EXPECT_EQ(solve_error(o, laplacian_2d(50)).rfind("no error", 0), 0u);
+}
+
+// BoomerAMG solves the 2D Laplacian to 1e-12 in about ten iterations; one is not enough,
+// and a named preconditioner has no fallback: the limit is an error.
+TEST(SolverFailures, AmgStoppedByItsIterationLimitIsAnError) {
+  LinearSolverOptions o;
+  o.preconditioner = PreconditionerKind::boomeramg;
+  o.cg_max_iterations = 1;
+  const std::string e = solve_error(o, laplacian_2d(50));
+  EXPECT_NE(e.find("did not converge"), std::string::npos) << e;
+  EXPECT_NE(e.find("DIVERGED_ITS"), std::string::npos) << e;
+  o.cg_max_iterations = 20000;
+  EXPECT_EQ(solve_error(o, laplacian_2d(50)).rfind("no error", 0), 0u);
+}
+
+// An indefinite matrix must stop CG + AMG with an error (PETSc's CG sees p.Ap < 0), never
+// come back as a field: a peer's AMG once stopped early on an indefinite preconditioner and
+// the wrong solution was post-processed.
+TEST(SolverFailures, AmgOnAnIndefiniteMatrixIsAnError) {
+  for (auto pre : {PreconditionerKind::boomeramg, PreconditionerKind::gamg}) {
+    LinearSolverOptions o;
+    o.preconditioner = pre;
+    const std::string e = solve_error(o, laplacian_2d(20) - 6.0 * identity_lower(400));
+    EXPECT_EQ(e.rfind("no error", 0), std::string::npos) << e;
+  }
+}
+
+// `-ksp_type preonly` stops after one application of the preconditioner, and PETSc calls
+// that converged; one Jacobi sweep is far from the solution, which the true residual
+// |b - A x| / |b| exposes.
+TEST(SolverFailures, AStopThatPetscCallsConvergedIsCheckedByTheTrueResidual) {
+  LinearSolverOptions o;
+  o.preconditioner = PreconditionerKind::boomeramg;
+  o.petsc_options = "-ksp_type preonly -pc_type jacobi";
+  const std::string e = solve_error(o, laplacian_2d(30));
+  EXPECT_NE(e.find("true residual"), std::string::npos) << e;
+}
+
+// Automatic choice: AMG that fails (here: PETSc told to stop after 2 iterations) falls back
+// to incomplete Cholesky, which solves, and the fallback is noted with its reason.
+TEST(SolverFailures, AutomaticAmgFailureFallsBackToIncompleteCholeskyWithANote) {
+  LinearSolverOptions o;
+  o.kind = LinearSolverKind::cg;
+  o.amg_min_unknowns = 1;
+  o.petsc_options = "-ksp_max_it 2";
+  const auto a = laplacian_2d(40);
+  LinearSolver s(o);
+  s.factorize(a);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(a.rows());
+  const Eigen::VectorXd x = s.solve(b);
+  EXPECT_LT((b - a.selfadjointView<Eigen::Lower>() * x).norm() / b.norm(), 1e-10);
+  EXPECT_EQ(s.preconditioner(), "ichol");
+  ASSERT_EQ(s.notes().size(), 1u);
+  EXPECT_NE(s.notes()[0].find("falling back to incomplete Cholesky"), std::string::npos)
+      << s.notes()[0];
+  EXPECT_NE(s.notes()[0].find("DIVERGED_ITS"), std::string::npos) << s.notes()[0];
 }
 
 TEST(SolverFailures, NewtonAtItsIterationLimitReportsNoConvergence) {
