@@ -1,6 +1,10 @@
 #include "postproc/field3d.hpp"
 
+#include <algorithm>
+#include <thread>
+
 #include "core/constants.hpp"
+#include "core/parallel_scatter.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 
@@ -110,23 +114,41 @@ Eigen::Vector3d Field3D::B(std::size_t t, const std::array<double, 4>& bary) con
   return B_of_H(t, point(t, bary), H(t, bary));
 }
 
-std::vector<Eigen::Vector3d> Field3D::recovered_B() const {
+std::vector<Eigen::Vector3d> Field3D::recovered_B(int threads) const {
   const auto& mesh = *problem_.mesh;
+  const int n = dofs_.dofs_per_element();
   std::vector<Eigen::Vector3d> sum(dofs_.n_dofs(), Eigen::Vector3d::Zero());
   std::vector<double> weight(dofs_.n_dofs(), 0.0);
-  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    if (problem_.is_shell(t))
-      continue;
-    const auto& tet = mesh.tets[t];
-    const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]], mesh.nodes[tet[2]],
-                                       mesh.nodes[tet[3]])
-                           .volume;
-    const int* dof = dofs_.element_dofs(t);
-    for (int i = 0; i < dofs_.dofs_per_element(); ++i) {
-      sum[dof[i]] += vol * B(t, tet_dof_nodes[i]);
-      weight[dof[i]] += vol;
-    }
-  }
+  if (threads <= 0) // all cores, one per ~20k elements at most (as the assembly)
+    threads = static_cast<int>(std::min<std::size_t>(
+        std::max(1u, std::thread::hardware_concurrency()), 1 + mesh.n_tets() / 20000));
+  // Per element and local DOF: vol B (3 values) and vol; each DOF summed by one thread in
+  // element order, so the result does not depend on the thread count.
+  parallel_element_scatter(
+      mesh.n_tets(), 4 * n, sum.size(), threads,
+      [&](std::size_t t, double* out) {
+        if (problem_.is_shell(t))
+          return;
+        const auto& tet = mesh.tets[t];
+        const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]],
+                                           mesh.nodes[tet[2]], mesh.nodes[tet[3]])
+                               .volume;
+        for (int i = 0; i < n; ++i) {
+          const Eigen::Vector3d b = vol * B(t, tet_dof_nodes[i]);
+          out[4 * i] = b.x(), out[4 * i + 1] = b.y(), out[4 * i + 2] = b.z();
+          out[4 * i + 3] = vol;
+        }
+      },
+      [&](std::size_t t, const double* v, std::size_t lo, std::size_t hi) {
+        if (problem_.is_shell(t))
+          return;
+        const int* dof = dofs_.element_dofs(t);
+        for (int i = 0; i < n; ++i)
+          if (static_cast<std::size_t>(dof[i]) >= lo && static_cast<std::size_t>(dof[i]) < hi) {
+            sum[dof[i]] += Eigen::Vector3d(v[4 * i], v[4 * i + 1], v[4 * i + 2]);
+            weight[dof[i]] += v[4 * i + 3];
+          }
+      });
   for (std::size_t i = 0; i < sum.size(); ++i)
     if (weight[i] > 0)
       sum[i] /= weight[i];

@@ -45,7 +45,8 @@ public:
 
   // Volume-weighted average of the element B values at every DOF point (shell excluded;
   // DOFs touched only by the shell get zero). Computed once and cached by the caller.
-  std::vector<Eigen::Vector3d> recovered_B() const;
+  // `threads` (0 = all cores): the result is the serial one bit for bit whatever the count.
+  std::vector<Eigen::Vector3d> recovered_B(int threads = 0) const;
   // Interpolates nodal values (one per DOF, e.g. recovered_B()) at a point of tet t with the
   // element's shape functions.
   Eigen::Vector3d interpolate(const std::vector<Eigen::Vector3d>& nodal, std::size_t t,

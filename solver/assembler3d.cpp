@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <thread>
 
 #include "core/constants.hpp"
+#include "core/parallel_scatter.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -47,13 +47,6 @@ std::vector<int> equations_of_elements(const Mesh3D& mesh, const DofMap3D& dofs,
   return eqs;
 }
 
-inline void add_to(double& target, double value, bool atomic) {
-  if (atomic)
-    std::atomic_ref<double>(target).fetch_add(value, std::memory_order_relaxed);
-  else
-    target += value;
-}
-
 } // namespace
 
 Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs, AssemblyOptions3D options)
@@ -62,8 +55,6 @@ Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs, Assembl
       dof_to_eq_(number_equations(dofs.n_dofs(), constrained_dofs(problem, dofs), n_eqs_)),
       element_eqs_(equations_of_elements(*problem.mesh, dofs, dof_to_eq_)),
       linear_(problem_is_linear(problem)), pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
-  if (options_.threads <= 0)
-    options_.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   if (problem_.source && problem_.source->active())
     source_load_ = source_load(-1);
   // The residual at phi = 0 is minus the external load (remanence and coils).
@@ -174,27 +165,13 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
         ke[i * n + j] = ke[j * n + i];
 }
 
-void Assembler3D::evaluate_range(std::size_t begin, std::size_t end,
-                                 const Eigen::VectorXd& phi_full, double* residual,
-                                 Eigen::SparseMatrix<double>* matrix, TangentKind kind,
-                                 bool atomic) const {
-  const int n = dofs_.dofs_per_element();
-  std::array<double, 10> re{};
-  std::array<double, 100> ke{};
-  double* values = matrix ? matrix->valuePtr() : nullptr;
-  for (std::size_t t = begin; t < end; ++t) {
-    element(t, phi_full, re.data(), matrix ? ke.data() : nullptr, kind);
-    const int* eq = &element_eqs_[t * n];
-    for (int i = 0; i < n; ++i)
-      if (eq[i] >= 0)
-        add_to(residual[eq[i]], re[i], atomic);
-    if (!matrix)
-      continue;
-    const int* slot = pattern_.slots(t);
-    for (int k = 0; k < n * n; ++k)
-      if (slot[k] >= 0)
-        add_to(values[slot[k]], ke[k], atomic);
-  }
+int Assembler3D::loop_threads() const {
+  if (options_.threads > 0)
+    return options_.threads;
+  // Automatic: all cores, but one thread per ~20k elements at most (below that the start-up
+  // outweighs the work).
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return static_cast<int>(std::min<std::size_t>(cores, 1 + problem_.mesh->n_tets() / 20000));
 }
 
 void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
@@ -203,38 +180,32 @@ void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   residual = Eigen::VectorXd::Zero(n_eqs_);
   if (matrix)
     *matrix = pattern_.zero_matrix();
-  const std::size_t n_tets = problem_.mesh->n_tets();
-  const int n_threads =
-      static_cast<int>(std::min<std::size_t>(options_.threads, 1 + n_tets / 20000));
   if (source_load_.size() > 0)
     residual = source_load_;
-  if (n_threads <= 1) {
-    evaluate_range(0, n_tets, phi_full, residual.data(), matrix, kind, false);
-    return;
-  }
-  // Threads over contiguous element chunks; concurrent adds to shared rows are atomic (two
-  // threads rarely touch the same entry, so the adds are uncontended).
-  std::vector<std::thread> pool;
-  for (int k = 0; k < n_threads; ++k) {
-    const std::size_t b = n_tets * k / n_threads, e = n_tets * (k + 1) / n_threads;
-    pool.emplace_back(
-        [&, b, e] { evaluate_range(b, e, phi_full, residual.data(), matrix, kind, true); });
-  }
-  for (auto& th : pool)
-    th.join();
-}
-
-template <class Body> void Assembler3D::parallel_over_tets(const Body& body) const {
-  const std::size_t n_tets = problem_.mesh->n_tets();
-  const int n_threads =
-      static_cast<int>(std::min<std::size_t>(options_.threads, 1 + n_tets / 20000));
-  std::vector<std::thread> pool;
-  for (int k = 0; k < n_threads; ++k) {
-    const std::size_t b = n_tets * k / n_threads, e = n_tets * (k + 1) / n_threads;
-    pool.emplace_back([&, b, e] { body(b, e, n_threads > 1); });
-  }
-  for (auto& th : pool)
-    th.join();
+  const int n = dofs_.dofs_per_element();
+  double* values = matrix ? matrix->valuePtr() : nullptr;
+  // Equation i owns residual entry i and the stored matrix row i (the lower triangle keeps
+  // local (i, j) at global row eq[i]), so each entry is summed by one thread in element order.
+  parallel_element_scatter(
+      problem_.mesh->n_tets(), n + (matrix ? n * n : 0), n_eqs_, loop_threads(),
+      [&](std::size_t t, double* out) {
+        element(t, phi_full, out, matrix ? out + n : nullptr, kind);
+      },
+      [&](std::size_t t, const double* re, std::size_t lo, std::size_t hi) {
+        const int* eq = &element_eqs_[t * n];
+        const int* slot = matrix ? pattern_.slots(t) : nullptr;
+        for (int i = 0; i < n; ++i) {
+          if (eq[i] < 0 || static_cast<std::size_t>(eq[i]) < lo ||
+              static_cast<std::size_t>(eq[i]) >= hi)
+            continue;
+          residual[eq[i]] += re[i];
+          if (!matrix)
+            continue;
+          for (int j = 0; j < n; ++j)
+            if (slot[i * n + j] >= 0)
+              values[slot[i * n + j]] += re[n + i * n + j];
+        }
+      });
 }
 
 void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
@@ -274,8 +245,7 @@ void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
     Eigen::Vector3d b;
     if (in_shell) {
       const Eigen::Vector3d xp = shell_.map(x);
-      const Eigen::Vector3d hs =
-          coil < 0 ? src.field->H(xp) : src.field->H_per_ampere(coil, xp);
+      const Eigen::Vector3d hs = coil < 0 ? src.field->H(xp) : src.field->H_per_ampere(coil, xp);
       b = mu0 * (shell_.det_times_inverse_jacobian(x) * hs);
     } else {
       b = mu * (coil < 0 ? src.field->H(x) : src.field->H_per_ampere(coil, x));
@@ -288,16 +258,16 @@ void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
 Eigen::VectorXd Assembler3D::source_load(int coil) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(n_eqs_);
   const int n = dofs_.dofs_per_element();
-  parallel_over_tets([&](std::size_t b, std::size_t e, bool atomic) {
-    std::array<double, 10> re{};
-    for (std::size_t t = b; t < e; ++t) {
-      element_source(t, coil, re.data());
-      const int* eq = &element_eqs_[t * n];
-      for (int i = 0; i < n; ++i)
-        if (eq[i] >= 0 && re[i] != 0)
-          add_to(load[eq[i]], re[i], atomic);
-    }
-  });
+  parallel_element_scatter(
+      problem_.mesh->n_tets(), n, n_eqs_, loop_threads(),
+      [&](std::size_t t, double* re) { element_source(t, coil, re); },
+      [&](std::size_t t, const double* re, std::size_t lo, std::size_t hi) {
+        const int* eq = &element_eqs_[t * n];
+        for (int i = 0; i < n; ++i)
+          if (eq[i] >= 0 && static_cast<std::size_t>(eq[i]) >= lo &&
+              static_cast<std::size_t>(eq[i]) < hi && re[i] != 0)
+            load[eq[i]] += re[i];
+      });
   return load;
 }
 
@@ -309,25 +279,29 @@ Eigen::VectorXd Assembler3D::current_derivative(const Eigen::VectorXd& u, int co
   const Eigen::VectorXd& per_ampere = src.offset_per_ampere[coil];
   const int n = dofs_.dofs_per_element();
   // Total regions: r depends on the current through u + I Phi_s, so dr/dI = K_e Phi_s.
-  parallel_over_tets([&](std::size_t b, std::size_t e, bool atomic) {
-    std::array<double, 10> re{};
-    std::array<double, 100> ke{};
-    for (std::size_t t = b; t < e; ++t) {
-      if (!src.is_total(t))
-        continue;
-      element(t, phi_full, re.data(), ke.data(), kind);
-      const int* dof = dofs_.element_dofs(t);
-      const int* eq = &element_eqs_[t * n];
-      for (int i = 0; i < n; ++i) {
-        if (eq[i] < 0)
-          continue;
-        double sum = 0;
-        for (int j = 0; j < n; ++j)
-          sum += ke[i * n + j] * per_ampere[dof[j]];
-        add_to(out[eq[i]], sum, atomic);
-      }
-    }
-  });
+  parallel_element_scatter(
+      problem_.mesh->n_tets(), n, n_eqs_, loop_threads(),
+      [&](std::size_t t, double* sum) {
+        std::fill(sum, sum + n, 0.0);
+        if (!src.is_total(t))
+          return;
+        std::array<double, 10> re{};
+        std::array<double, 100> ke{};
+        element(t, phi_full, re.data(), ke.data(), kind);
+        const int* dof = dofs_.element_dofs(t);
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j)
+            sum[i] += ke[i * n + j] * per_ampere[dof[j]];
+      },
+      [&](std::size_t t, const double* sum, std::size_t lo, std::size_t hi) {
+        if (!src.is_total(t))
+          return;
+        const int* eq = &element_eqs_[t * n];
+        for (int i = 0; i < n; ++i)
+          if (eq[i] >= 0 && static_cast<std::size_t>(eq[i]) >= lo &&
+              static_cast<std::size_t>(eq[i]) < hi)
+            out[eq[i]] += sum[i];
+      });
   return out;
 }
 

@@ -23,7 +23,9 @@
 namespace magfem {
 
 struct AssemblyOptions3D {
-  int threads = 0; // element loop threads; 0 = std::thread::hardware_concurrency()
+  // Element loop threads; 0 = all cores (fewer for small meshes). The sums are the serial
+  // ones bit for bit whatever the count (core/parallel_scatter.hpp).
+  int threads = 0;
 };
 
 class Assembler3D : public NonlinearSystem {
@@ -35,6 +37,7 @@ public:
   void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                 Eigen::SparseMatrix<double>* matrix, TangentKind kind) const override;
   double load_norm() const override { return load_norm_; }
+  int threads() const { return loop_threads(); } // of the element loops
 
   // Free-DOF vector -> all DOFs (constrained ones are zero) and back.
   Eigen::VectorXd expand(const Eigen::VectorXd& u) const;
@@ -56,10 +59,7 @@ private:
   // -integral mu H_0 . grad N_i over the reduced elements (H_0 = coil field), per equation.
   Eigen::VectorXd source_load(int coil) const; // coil < 0: all coils at their currents
   void element_source(std::size_t t, int coil, double* re) const;
-  template <class Body> void parallel_over_tets(const Body& body) const;
-  void evaluate_range(std::size_t begin, std::size_t end, const Eigen::VectorXd& phi_full,
-                      double* residual, Eigen::SparseMatrix<double>* matrix, TangentKind kind,
-                      bool atomic) const;
+  int loop_threads() const; // threads for an element loop (few elements: one)
 
   const Problem3D& problem_;
   const DofMap3D& dofs_;
