@@ -14,13 +14,14 @@ struct CommandHelp {
 };
 
 constexpr std::array<CommandHelp, 7> commands{{
-    {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S]",
+    {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--quiet]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
      "  mesh and solver figures, magfem_version and commit), one CSV per probe, forces.csv\n"
      "  and solution.vtu for ParaView.\n"
      "  --order 1|2       element order (overrides the case's mesh.order)\n"
-     "  --mesh-scale S    multiply every mesh size by S (S > 1 is coarser)\n"},
+     "  --mesh-scale S    multiply every mesh size by S (S > 1 is coarser)\n"
+     "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
      "[--n-max N]",

@@ -40,6 +40,7 @@ struct Args {
   magfem::AnalyticOptions analytic;
   std::string rotate, axis, angles, point, surface_radius, move, positions;
   bool analytic_sweep = false;
+  bool quiet = false; // no progress lines on stderr
   int jobs = 0;
 };
 
@@ -103,6 +104,8 @@ Args parse_args(int argc, char** argv) {
         throw magfem::InputError("<command line>", 0, arg, "must be at least 1");
     } else if (arg == "--analytic")
       a.analytic_sweep = true;
+    else if (arg == "--quiet")
+      a.quiet = true;
     else if (arg.rfind("--", 0) == 0)
       throw magfem::InputError("<command line>", 0, arg, "unknown option");
     else
@@ -124,7 +127,11 @@ Args parse_args(int argc, char** argv) {
 }
 
 int run_solve_3d(const Args& args, magfem::CaseSpec spec) {
-  auto run = magfem::run_case_3d(std::move(spec), args.overrides);
+  magfem::Progress progress;
+  magfem::RunOverrides overrides = args.overrides;
+  if (!args.quiet)
+    overrides.progress = &progress;
+  auto run = magfem::run_case_3d(std::move(spec), overrides);
   std::cout << magfem::describe_run_3d(*run);
   magfem::write_outputs_3d(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";

@@ -9,6 +9,7 @@
 #include "app/build_info.hpp"
 #include "app/force2d.hpp"
 #include "app/resource_usage.hpp"
+#include "app/solver_summary.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
@@ -194,10 +195,12 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
   j["residual_history"] = run.report.residual_history;
-  j["linear_solver"] = run.report.linear_solver;
+  add_solver_summary(j, run.report, 1);
   j["timings_s"] = {{"mesh", run.timings.mesh},
                     {"assemble", run.timings.assemble},
                     {"solve", run.timings.solve},
+                    {"linear_setup", run.report.linear_setup_s},
+                    {"linear_solve", run.report.linear_solve_s},
                     {"postprocess", run.timings.postprocess},
                     {"total", run.timings.total}};
   j["peak_memory_MB"] = peak_memory_mb();
@@ -231,10 +234,10 @@ std::string describe_run_2d(const Run2D& run) {
   std::string s;
   std::snprintf(buf, sizeof buf,
                 "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
-                "solve    order %d, %d unknowns, %s, %d iteration(s), residual %.2e\n",
+                "solve    order %d, %d unknowns, %s, residual %.2e\n",
                 run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
-                run.spec.order, run.dofs->n_dofs(), run.report.linear_solver.c_str(),
-                run.report.iterations, run.report.residual_history.back());
+                run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
+                run.report.residual_history.back());
   s += buf;
   std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
                 run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");

@@ -8,6 +8,7 @@
 
 #include "app/force_results.hpp"
 #include "casefile/case_spec.hpp"
+#include "core/progress.hpp"
 #include "mesh/mesh2d.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/field2d.hpp"
@@ -24,9 +25,10 @@ struct Timings {
 
 // Command-line overrides of case settings (refinement studies, quick checks).
 struct RunOverrides {
-  int order = 0;            // 0 = as in the case
-  double mesh_scale = 0;    // 0 = as in the case; multiplies every mesh size
-  double domain_radius = 0; // metres; 0 = as in the case
+  int order = 0;                // 0 = as in the case
+  double mesh_scale = 0;        // 0 = as in the case; multiplies every mesh size
+  double domain_radius = 0;     // metres; 0 = as in the case
+  Progress* progress = nullptr; // console progress (not owned); null = silent
 };
 
 // An axisymmetric coil (region with turns and current): its flux linkage with the total field

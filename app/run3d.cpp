@@ -9,6 +9,7 @@
 #include "app/build_info.hpp"
 #include "app/force3d.hpp"
 #include "app/resource_usage.hpp"
+#include "app/solver_summary.hpp"
 #include "core/constants.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
@@ -82,13 +83,21 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   if (ov.domain_radius > 0)
     spec.geometry3d.outer.radius = ov.domain_radius;
   run->spec = std::move(spec);
+  run->spec.newton.linear.progress = ov.progress;
+  auto stage = [&](const std::string& what) {
+    if (ov.progress)
+      ov.progress->stage(what);
+  };
 
   auto t0 = Clock::now();
+  stage("meshing");
   run->mesh = mesh_case(run->spec);
   run->timings.mesh = since(t0);
 
   run->problem = build_problem(run->spec, run->mesh);
   t0 = Clock::now();
+  stage("assembly: " + std::to_string(run->mesh.n_tets()) + " tetrahedra, order " +
+        std::to_string(run->spec.order));
   run->dofs = std::make_unique<DofMap3D>(run->mesh, run->spec.order);
   // P2 edge nodes on spherical interfaces go onto the sphere: flat facets would otherwise
   // limit the field error near curved magnet faces to O(h^2) in the geometry.
@@ -101,6 +110,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     run->problem.source = &run->coil_source;
   }
   Assembler3D assembler(run->problem, *run->dofs);
+  run->threads = assembler.threads();
   const double setup = since(t0);
 
   Eigen::VectorXd u;
@@ -111,6 +121,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     throw SolveError("the solver did not converge: " + run->report.message);
 
   t0 = Clock::now();
+  stage("post-processing");
   run->field = std::make_unique<Field3D>(run->problem, *run->dofs, assembler.expand(u));
   std::vector<std::string> names;
   for (const auto& r : run->spec.regions)
@@ -163,11 +174,12 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
   j["residual_history"] = run.report.residual_history;
-  j["linear_solver"] = run.report.linear_solver;
-  j["linear_iterations"] = run.report.linear_iterations;
+  add_solver_summary(j, run.report, run.threads);
   j["timings_s"] = {{"mesh", run.timings.mesh},
                     {"assemble", run.timings.assemble},
                     {"solve", run.timings.solve},
+                    {"linear_setup", run.report.linear_setup_s},
+                    {"linear_solve", run.report.linear_solve_s},
                     {"postprocess", run.timings.postprocess},
                     {"total", run.timings.total}};
   j["peak_memory_MB"] = peak_memory_mb();
@@ -216,13 +228,15 @@ std::string describe_run_3d(const Run3D& run) {
   char buf[640];
   std::snprintf(buf, sizeof buf,
                 "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-                "solve    order %d, %d unknowns, %s, %d iteration(s), residual %.2e\n"
+                "solve    order %d, %d unknowns, %s, residual %.2e\n"
                 "energy   %.6g J\n",
                 run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
                 run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-                run.report.linear_solver.c_str(), run.report.iterations,
-                run.report.residual_history.back(), run.energy.total_J);
+                describe_solver(run.report).c_str(), run.report.residual_history.back(),
+                run.energy.total_J);
   std::string s = buf;
+  for (const auto& note : run.report.notes)
+    s += "note     " + note + "\n";
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.volume_m3 > 0) {
       std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
@@ -232,10 +246,11 @@ std::string describe_run_3d(const Run3D& run) {
   s += describe_forces(run.forces, false);
   s += describe_coils(run.coil_results);
   std::snprintf(buf, sizeof buf,
-                "time     mesh %.2f s, assemble %.2f s, solve %.2f s, post %.2f s, total %.2f s, "
-                "peak %.0f MB\n",
-                run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
-                run.timings.total, peak_memory_mb());
+                "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post %.2f s, "
+                "total %.2f s, peak %.0f MB\n",
+                run.timings.mesh, run.timings.assemble, run.timings.solve,
+                run.report.linear_setup_s, run.timings.postprocess, run.timings.total,
+                peak_memory_mb());
   return s + buf;
 }
 

@@ -32,6 +32,7 @@ struct Run3D {
   std::vector<ForceResult> forces;
   CoilResults coil_results;
   Timings timings;
+  int threads = 1; // element-loop threads of the assembly
 };
 
 std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides = {});

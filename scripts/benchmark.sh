@@ -66,6 +66,41 @@ for scale in $levels; do
 done
 
 echo
+echo "== 3D linear solver (issue 13): CG iterations and times, incomplete Cholesky vs BoomerAMG"
+echo "   (multigrid: iterations nearly flat under refinement; IC grows)"
+# The case's solver line with the preconditioner named; the copy sits next to the original so
+# that relative paths still resolve.
+with_preconditioner() { # case preconditioner -> path of the copy
+  local copy="${1%.yaml}.bench_$2.yaml"
+  sed "s/^solver: {order: 2}/solver: {order: 2, linear_solver: cg, preconditioner: $2}/" "$1" > "$copy"
+  echo "$copy"
+}
+solver_report() { # name dir
+  printf "%-44s %8s unknowns  %-16s %5s CG iterations  set-up %6.2f s  solve %7.2f s  total %7.2f s  %5.0f MB\n" \
+    "$1" "$(field "$2" unknowns)" "$(field "$2" preconditioner | tr -d '"')" "$(field "$2" linear_iterations)" \
+    "$(timing "$2" linear_setup)" "$(timing "$2" linear_solve)" "$(timing "$2" total)" "$(field "$2" peak_memory_MB)"
+}
+sphere_scales="2 1.4 1"
+b32_scales="2 1.6 1.3"
+((full)) && b32_scales="2 1.6 1.3 1"
+for pre in ichol amg; do
+  copy=$(with_preconditioner examples/3d/magnetized_sphere.yaml $pre)
+  for scale in $sphere_scales; do
+    $magfem solve "$copy" --quiet --mesh-scale $scale --out "$out/sph_${pre}_$scale" > /dev/null
+    solver_report "magnetized sphere, mesh-scale $scale" "$out/sph_${pre}_$scale"
+  done
+  rm -f "$copy"
+done
+for pre in ichol amg; do
+  copy=$(with_preconditioner examples/3d/benchmark32_parallel.yaml $pre)
+  for scale in $b32_scales; do
+    $magfem solve "$copy" --quiet --mesh-scale $scale --out "$out/b32_${pre}_$scale" > /dev/null
+    solver_report "benchmark32 parallel, mesh-scale $scale" "$out/b32_${pre}_$scale"
+  done
+  rm -f "$copy"
+done
+
+echo
 echo "== analytic models (thesis: charge model 0.36 s per point, harmonics overflow past n 149)"
 build/validation/magfem_bench_charge 1e-4
 build/validation/magfem_bench_harmonic 150 400 800

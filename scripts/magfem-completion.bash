@@ -27,7 +27,7 @@ _magfem() {
   esac
   local options
   case "$command" in
-    solve) options="--out --order --mesh-scale --help" ;;
+    solve) options="--out --order --mesh-scale --quiet --help" ;;
     analytic) options="--out --model --tolerance --n-max --help" ;;
     compare) options="--help" ;;
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;

@@ -176,6 +176,81 @@ TEST(Cli, NewtonThatDoesNotConvergeExits3AndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// A small 3D sphere (B_r 1 T) whose CG solve is set from the test: 18k P1 unknowns, ~5 s.
+std::string sphere_case(const std::string& solver) {
+  return R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
+regions:
+  - {name: ball, shape: spherical_segment, r_outer: 10, material: pm,
+     magnetization: {type: parallel, direction: [0, 0, 1]}}
+boundary: {type: open, radius: 25}
+mesh: {size: 4}
+solver: )" +
+         solver + R"(
+output: {vtu: false}
+probes:
+  - {name: centre, type: points, points: [[0, 0, 0]]}
+)";
+}
+
+// A Krylov solve stopped by its iteration limit is a solver failure, whichever
+// preconditioner ran: exit 3, the reason named, no output directory. (GAMG and the
+// automatic AMG fallback are covered in tests/solver/test_solver_failures.cpp.)
+TEST(Cli, KrylovStoppedByItsIterationLimitExits3AndWritesNothing) {
+  for (const std::string pre : {"amg", "ichol"}) {
+    const auto out = fresh_dir("krylov_" + pre);
+    const std::string solver =
+        "{order: 1, linear_solver: cg, preconditioner: " + pre + ", linear_max_iterations: 3}";
+    const auto r =
+        run("solve " + magfem::test::write_temp_case("cli_krylov.yaml", sphere_case(solver)) +
+            " --out " + out.string());
+    EXPECT_EQ(r.status, 3) << pre << "\n" << r.out;
+    EXPECT_NE(r.out.find("did not converge"), std::string::npos) << pre << "\n" << r.out;
+    EXPECT_NE(r.out.find("3 iterations"), std::string::npos) << pre << "\n" << r.out;
+    EXPECT_FALSE(fs::exists(out)) << pre;
+  }
+}
+
+// summary.json says which solver ran and how hard it worked; the console shows the stages
+// on stderr unless --quiet, and the Krylov count on the solve line. B at the centre of the
+// uniformly magnetized ball is (2/3) B_r z exactly; 3 % covers the coarse P1 mesh (measured
+// ~1 %), and it checks that the AMG solution is the field, not just that a solve ran.
+TEST(Cli, SolveReportsTheKrylovSolverAndItsProgress) {
+  const auto out = fresh_dir("krylov_summary");
+  const auto c = magfem::test::write_temp_case("cli_krylov_ok.yaml",
+                                               sphere_case("{order: 1, preconditioner: amg}"));
+  const auto r = run("solve " + c + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* stage : {"meshing", "assembly", "preconditioner set-up: boomeramg",
+                            "solve: CG + boomeramg", "post-processing"})
+    EXPECT_NE(r.out.find(stage), std::string::npos) << stage << "\n" << r.out;
+  EXPECT_NE(r.out.find("cg + boomeramg, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" CG iterations"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(j["linear_solver"], "cg");
+  EXPECT_EQ(j["preconditioner"], "boomeramg");
+  EXPECT_GT(j["linear_iterations"].get<int>(), 1);
+  EXPECT_LT(j["linear_iterations"].get<int>(), 100);
+  EXPECT_GE(j["threads"].get<int>(), 1);
+  EXPECT_EQ(j["ranks"], 1);
+  EXPECT_GT(j["timings_s"]["linear_setup"].get<double>(), 0.0);
+  EXPECT_GT(j["timings_s"]["linear_solve"].get<double>(), 0.0);
+  const std::string centre = read_text(out / "centre.csv");
+  const auto last = centre.substr(centre.find('\n') + 1);
+  double x, y, z, bx, by, bz;
+  ASSERT_EQ(std::sscanf(last.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &x, &y, &z, &bx, &by, &bz), 6)
+      << centre;
+  EXPECT_NEAR(bz, 2.0 / 3.0, 0.03 * 2.0 / 3.0);
+
+  fs::remove_all(out);
+  const auto quiet = run("solve " + c + " --quiet --out " + out.string());
+  ASSERT_EQ(quiet.status, 0) << quiet.out;
+  EXPECT_EQ(quiet.out.find("meshing"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("preconditioner set-up"), std::string::npos) << quiet.out;
+}
+
 // The analytic models have no nonlinear iron: refused with exit 2, the region named.
 TEST(Cli, AnalyticRefusesNonlinearIronNamingTheRegion) {
   const auto out = fresh_dir("analytic_refusal");
