@@ -96,6 +96,12 @@ $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --ang
   --analytic --out "$out/sweep_a" 2> /dev/null | tail -n +1
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
 echo
+echo "== design study (issue 14 target: 20 x 20 grid of 19-angle curves <= 10 s)"
+start=$(date +%s.%N)
+$magfem study examples/3d/compensator_study.yaml --param R_in=25:0.5:34.5 --param R_out=45:1:64 \
+  --objective peak_torque --rotate outer --axis y --angles 0:10:180 --out "$out/study" > /dev/null
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    400 designs, wall %.1f s\n", b - a }'
+echo
 echo "== magfem validate (issue 12: quick tier <= 10 min, full tier <= 60 min on 2 cores)"
 tiers="quick"
 ((full)) && tiers="quick full"
