@@ -116,5 +116,10 @@ if ((full)); then
   start=$(date +%s.%N)
   $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:10:180 \
     --out "$out/sweep_fe" 2> /dev/null
+  awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'  echo
+  echo "== seed-002 Fig. 5 by 3D FE: torque about the rotor centre at 10 deg (analytic: 0.165 N m on the coil)"
+  start=$(date +%s.%N)
+  $magfem solve examples/3d/voice_coil_torque.yaml --order 1 --out "$out/vctorque" > /dev/null 2>&1
+  awk -F, 'NR > 1 && $1 == "coil_lorentz" { printf "    T_y on the coil %.4f N m\n", $7 }' "$out/vctorque/forces.csv"
   awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
 fi
