@@ -96,6 +96,12 @@ $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --ang
   --analytic --out "$out/sweep_a" 2> /dev/null | tail -n +1
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
 echo
+echo "== spherical actuator (issue 10 target: analytic torque constants, 7 x 7 grid, 12 coils <= 10 s)"
+start=$(date +%s.%N)
+$magfem actuator examples/3d/spherical_actuator_design.yaml --rotor rotor \
+  --orientations rx=-45:15:45,ry=-45:15:45,rz=0 --analytic --out "$out/act" 2> /dev/null | sed 's/^/    /'
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+echo
 echo "== magfem validate (issue 12: quick tier <= 10 min, full tier <= 60 min on 2 cores)"
 tiers="quick"
 ((full)) && tiers="quick full"
