@@ -10,6 +10,8 @@
 #include <limits>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
@@ -565,9 +567,17 @@ int run_actuator_command(const ActuatorOptions& options) {
     }
   }
   stage.write_text("torque_constants.csv", torque_constants_csv(r));
+  // Plotted outside the stage and copied in only if gnuplot made it: a registered name that is
+  // never written would fail the commit.
   std::string why;
-  const bool plotted =
-      plot_power_map(r, spec.file + " (" + r.method + ")", stage.path_for("power_map.png"), why);
+  const auto scratch = std::filesystem::temp_directory_path() /
+                       ("magfem_power_map_" + std::to_string(::getpid()) + ".png");
+  const bool plotted = plot_power_map(r, spec.file + " (" + r.method + ")", scratch, why);
+  if (plotted) {
+    std::filesystem::copy_file(scratch, stage.path_for("power_map.png"),
+                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::remove(scratch);
+  }
   if (!plotted)
     std::cerr << "magfem: note: no power_map.png: " << why << "\n";
   j["notes"] = r.notes;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +46,10 @@ ActuatorOptions analytic_options() {
 double max_abs(const TorqueConstants& g) {
   return g.cwiseAbs().maxCoeff();
 }
+
+// DISABLED_FeTorqueConstantsMatchTheChargeModel: mesh and tolerance (see there).
+constexpr double fe_mesh_scale = 1.5;
+constexpr double fe_tolerance = 0.02;
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -167,6 +172,15 @@ TEST(Actuator, CommandWritesItsOutputsAndRefusesBadInput) {
   EXPECT_EQ(k.substr(0, k.find('\n')), "rx_deg,ry_deg,rz_deg,coil,kx,ky,kz");
   EXPECT_EQ(std::count(k.begin(), k.end(), '\n'), 1 + 4 * 12);
   EXPECT_NE(slurp(out / "summary.json").find("\"P_avg_W\""), std::string::npos);
+  // One orientation: no map to draw, the rest is written (a plot that is not made must not
+  // break the commit). Without --torque: the three unit demands.
+  const auto one = out.parent_path() / "actuator_cli_one";
+  ASSERT_EQ(std::system((exe + " actuator " + design + " --orientations rx=0 --rotor rotor " +
+                         "--analytic --out " + one.string() + " > /dev/null 2>&1")
+                            .c_str()),
+            0);
+  EXPECT_TRUE(std::filesystem::exists(one / "commutation_z.csv"));
+  EXPECT_FALSE(std::filesystem::exists(one / "power_map.png"));
 
   const auto bad = std::filesystem::temp_directory_path() / "magfem_tests" / "actuator_bad";
   auto refuses = [&](const std::string& args, const std::string& case_file) {
@@ -186,4 +200,23 @@ TEST(Actuator, CommandWritesItsOutputsAndRefusesBadInput) {
   const std::string from = "r_inner: 64, r_outer: 73, gap_angle";
   text.replace(text.find(from), from.size(), "r_inner: 55, r_outer: 62, gap_angle");
   refuses("--rotor rotor --torque 0,0,1", test::write_temp_case("actuator_inside.yaml", text));
+}
+
+// FE against the charge model at the identity orientation, magnets in air (the back-iron
+// switched off, so both solve the same problem): the torque constants agree to the FE
+// discretisation error. Disabled in the default suite: the FE solve of the design takes
+// minutes on 2 cores (measured figures in the note of issue 10).
+TEST(Actuator, DISABLED_FeTorqueConstantsMatchTheChargeModel) {
+  ActuatorOptions o = analytic_options();
+  o.parameters["magnet_iron_mu_r"] = 1;
+  const CaseSpec spec = read_case(design, o.parameters);
+  const auto a = run_actuator(spec, o, {{0, 0, 0}});
+  o.analytic = false;
+  o.mesh_scale = fe_mesh_scale;
+  const auto f = run_actuator(spec, o, {{0, 0, 0}});
+  const double scale = max_abs(a.gamma[0]);
+  const double err = max_abs(f.gamma[0] - a.gamma[0]) / scale;
+  std::printf("Gamma: largest |FE - charge model| = %.3g of the largest constant %.4g N m/A\n", err,
+              scale);
+  EXPECT_LT(err, fe_tolerance);
 }
