@@ -47,9 +47,11 @@ double max_abs(const TorqueConstants& g) {
   return g.cwiseAbs().maxCoeff();
 }
 
-// DISABLED_FeTorqueConstantsMatchTheChargeModel: mesh and tolerance (see there).
+// DISABLED_FeTorqueConstantsMatchTheChargeModel: the accuracy target for FE torque
+// constants (1 % of the largest). Not yet measured: the one FE run of the design attempted
+// (mesh scale 1.5, on a machine loaded 7x) took 25 min and did not get its numbers out.
 constexpr double fe_mesh_scale = 1.5;
-constexpr double fe_tolerance = 0.02;
+constexpr double fe_tolerance = 0.01;
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
