@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "app/actuator.hpp"
 #include "app/build_info.hpp"
 #include "app/command_help.hpp"
 #include "app/optimize.hpp"
@@ -375,6 +376,9 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
       return magfem::run_optimize_command(
           magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "actuator") == 0)
+      return magfem::run_actuator_command(
+          magfem::parse_actuator_options(std::vector<std::string>(argv + 2, argv + argc)));
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
       return magfem::run_study_command(
           magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));

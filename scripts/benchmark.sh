@@ -102,6 +102,12 @@ $magfem study examples/3d/compensator_study.yaml --param R_in=25:0.5:34.5 --para
   --objective peak_torque --rotate outer --axis y --angles 0:10:180 --out "$out/study" > /dev/null
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    400 designs, wall %.1f s\n", b - a }'
 echo
+echo "== spherical actuator (issue 10 target: analytic torque constants, 7 x 7 grid, 12 coils <= 10 s)"
+start=$(date +%s.%N)
+$magfem actuator examples/3d/spherical_actuator_design.yaml --rotor rotor \
+  --orientations rx=-45:15:45,ry=-45:15:45,rz=0 --analytic --out "$out/act" 2> /dev/null | sed 's/^/    /'
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+echo
 echo "== magfem validate (issue 12: quick tier <= 10 min, full tier <= 60 min on 2 cores)"
 tiers="quick"
 ((full)) && tiers="quick full"
