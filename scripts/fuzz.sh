@@ -3,7 +3,7 @@
 # SECONDS (default 60), one after the other, niced, one job each.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   targets: case_reader material_parser probe_csv
 # Seeds: tests/fuzz/corpus/<target>/ (read only); new inputs go to build-fuzz/corpus/<target>/;
-# a crash, hang (> 10 s per input) or sanitizer report leaves its input in
+# a crash, hang (> 60 s per input) or sanitizer report leaves its input in
 # build-fuzz/artifacts/<target>/ and fails the run. Once fixed, the input goes to
 # tests/fuzz/regressions/<target>/, which the default suite replays (test_fuzz_regressions).
 set -euo pipefail
@@ -23,9 +23,10 @@ for t in "${targets[@]}"; do
   dict=()
   [[ $t == probe_csv ]] || dict=(-dict=tests/fuzz/yaml.dict) # the case-file vocabulary
   echo "fuzz: $t for $seconds s"
-  # -rss_limit_mb: a case file must not make the reader allocate gigabytes either.
+  # -rss_limit_mb: a case file must not make the reader allocate gigabytes either. -timeout is
+  # generous: niced on a busy machine a 0.1 s input once stalled past 10 s (not reproducible).
   nice -n 15 "build-fuzz/tests/fuzz/fuzz_$t" "build-fuzz/corpus/$t" "tests/fuzz/corpus/$t" \
-    -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
+    -max_total_time="$seconds" -timeout=60 -rss_limit_mb=2048 -max_len=16384 \
     -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t/" "${dict[@]}" || status=1
 done
 exit $status
