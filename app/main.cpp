@@ -27,6 +27,7 @@
 #include "app/validate.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
 #include "postproc/probe_compare.hpp"
 
@@ -367,6 +368,8 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  // Before any thread starts: Ctrl-C and kill then leave no partial outputs (exit 130/143).
+  magfem::install_interrupt_handler();
   try {
     if (const auto code = answer_help_or_version(argc, argv))
       return *code;
