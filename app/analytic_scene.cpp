@@ -41,6 +41,13 @@ double max_extent(const AnalyticMagnet& m) {
   return m.placement.translation.norm() + local;
 }
 
+// A spherical segment about the origin that lies wholly outside radius r (the shell of the
+// spherical actuator around its back-iron core).
+bool shell_outside(const AnalyticMagnet& m, double r) {
+  const auto* seg = std::get_if<SphericalSegment>(&m.shape);
+  return seg && m.placement.translation.norm() < 1e-12 && seg->r_inner >= r - 1e-12;
+}
+
 // The charge model superposes magnets: two that share volume would be added up without
 // complaint (the mesher refuses them in FE). Parts that only touch are fine.
 void reject_overlaps(const CaseSpec& spec) {
@@ -114,7 +121,7 @@ AnalyticScene analytic_scene(const CaseSpec& spec) {
     } else {
       // The magnets must all lie outside the iron ball/shell: it acts as an inner core.
       for (const auto& m : scene.magnets)
-        if (m.placement.translation.norm() < seg.r_outer)
+        if (m.placement.translation.norm() < seg.r_outer && !shell_outside(m, seg.r_outer))
           throw InputError(spec.file, region->line, "regions[" + std::to_string(index) + "]",
                            "not representable: permeable shell " + region->name +
                                " between magnets");

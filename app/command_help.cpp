@@ -13,7 +13,7 @@ struct CommandHelp {
   const char* details;  // options and outputs
 };
 
-constexpr std::array<CommandHelp, 7> commands{{
+constexpr std::array<CommandHelp, 8> commands{{
     {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--quiet]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
@@ -76,6 +76,29 @@ constexpr std::array<CommandHelp, 7> commands{{
      "  --xtol is its relative tolerance on the variables (default 1e-4). --verify-fe solves\n"
      "  the optimum by FE and reports the FE value beside the analytic one. Writes\n"
      "  summary.json into DIR (default out/<case>_optimize).\n"},
+    {"actuator",
+     "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
+     "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
+     "                    [--mesh-scale S] [--coil-quadrature R,A,P,Z] [--verify] [--out DIR]",
+     "torque constants, commutated currents and copper loss of a multi-coil actuator",
+     "  For every rotor orientation: the torque constants Gamma (3 x coils, N m/A: the\n"
+     "  Lorentz torque about the origin of each coil at 1 A in the field of the magnets\n"
+     "  and iron), the currents i = Gamma^T (Gamma Gamma^T)^-1 T_d (thesis eq. 5.4, least\n"
+     "  two-norm), the copper loss sum R_k i_k^2, the peak current and cond(Gamma).\n"
+     "  SPEC: rx=A,ry=B,rz=C, each START:STEP:END, a number or a list (degrees; a missing\n"
+     "  axis is 0), or a CSV with the header rx_deg,ry_deg,rz_deg. The rotor turns by rx\n"
+     "  about the fixed x axis, then ry about y, then rz about z: R = Rz Ry Rx.\n"
+     "  --analytic: the charge model with spherical imaging (iron as full permeable\n"
+     "  spheres); otherwise FE of the magnets and iron, one solve when the field turns\n"
+     "  rigidly with the rotor, else one per orientation. Without --torque the three unit\n"
+     "  torques (1 N m about x, y, z) give P_x, P_y, P_z. Writes commutation.csv (or\n"
+     "  commutation_x/y/z.csv), torque_constants.csv, power_map.png and summary.json into\n"
+     "  DIR (default out). Ill-conditioned orientations keep cond_Gamma, no currents.\n"
+     "  Gamma and T_d are the torque on the coils (thesis eq. 5.2); the rotor gets -T_d.\n"
+     "  --coil-quadrature R,A,P,Z: per coil R Gauss radii, P panels of A Gauss points\n"
+     "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
+     "  --verify: FE with the commutated currents at the first, middle and last\n"
+     "  orientation; summary.json `verification` lists demanded and produced torque.\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--out DIR]",
      "recompute the published figures and report the agreement",

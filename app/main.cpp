@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "app/actuator.hpp"
 #include "app/build_info.hpp"
 #include "app/command_help.hpp"
 #include "app/optimize.hpp"
@@ -26,6 +27,7 @@
 #include "app/validate.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
 #include "postproc/probe_compare.hpp"
 
@@ -373,6 +375,8 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  // Before any thread starts: Ctrl-C and kill then leave no partial outputs (exit 130/143).
+  magfem::install_interrupt_handler();
   try {
     if (const auto code = answer_help_or_version(argc, argv))
       return *code;
@@ -382,6 +386,9 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
       return magfem::run_optimize_command(
           magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "actuator") == 0)
+      return magfem::run_actuator_command(
+          magfem::parse_actuator_options(std::vector<std::string>(argv + 2, argv + argc)));
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
       return magfem::run_study_command(
           magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));

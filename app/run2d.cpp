@@ -33,12 +33,13 @@ Mesh2D mesh_case(const CaseSpec& spec) {
   try {
     return build_mesh_2d(spec.geometry2d);
   } catch (const MeshError& e) {
-    // Point at the region that caused it when we know it, else at the mesh settings.
+    // Point at the region that caused it when we know it, else at the mesh settings. The
+    // mesher's polygon `vertices` are the case file's `points`.
+    const std::string field = e.field == "vertices" ? "points" : e.field;
     for (std::size_t i = 0; i < spec.regions.size(); ++i)
       if (const auto& r = spec.regions[i]; r.name == e.part)
         throw InputError(spec.file, r.line,
-                         "regions[" + std::to_string(i) + "]" +
-                             (e.field.empty() ? "" : "." + e.field),
+                         "regions[" + std::to_string(i) + "]" + (field.empty() ? "" : "." + field),
                          e.reason);
     throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
                      e.reason);

@@ -114,6 +114,7 @@ const std::map<std::string, Evaluator>& evaluator_registry() {
     register_thesis_ch3(r);
     register_thesis_ch4(r);
     register_harwin(r);
+    register_voicecoil(r);
     return r;
   }();
   return registry;

@@ -262,7 +262,12 @@ CaseSpec read_case(const std::string& path, const ParameterOverrides& overrides)
     throw InputError(path, 0, "", "cannot open the file");
   std::stringstream text;
   text << in.rdbuf();
-  const YamlNode root = YamlNode::load_string(quote_expressions(text.str()), path);
+  return read_case_text(text.str(), path, overrides);
+}
+
+CaseSpec read_case_text(const std::string& text, const std::string& path,
+                        const ParameterOverrides& overrides) {
+  const YamlNode root = YamlNode::load_string(quote_expressions(text), path);
   root.allow_keys({"title", "description", "dimension", "unit", "parameters", "stack_length",
                    "materials", "regions", "coils", "boundary", "mesh", "solver", "probes",
                    "forces", "output"});

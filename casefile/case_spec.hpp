@@ -57,5 +57,8 @@ struct CaseSpec {
 // Reads and validates a case file. Every problem is an InputError naming file, line, field.
 // `overrides` replace parameter values (case_parameter.hpp) before anything is read.
 CaseSpec read_case(const std::string& path, const ParameterOverrides& overrides = {});
+// The same from the file's text; `name` stands for the file in messages (tests, fuzzing).
+CaseSpec read_case_text(const std::string& text, const std::string& name,
+                        const ParameterOverrides& overrides = {});
 
 } // namespace magfem

@@ -60,6 +60,15 @@ private:
     }
   }
   double factor() {
+    // Each nesting level (a parenthesis, a sign) is a few stack frames: a bound keeps a
+    // hostile `${((((...` an error instead of a stack overflow.
+    if (++depth_ > max_depth)
+      fail("nested deeper than " + std::to_string(max_depth) + " levels");
+    const double v = nested_factor();
+    --depth_;
+    return v;
+  }
+  double nested_factor() {
     if (accept('-'))
       return -factor();
     if (accept('+'))
@@ -93,9 +102,11 @@ private:
     fail("expected a number or a name, got '" + std::string(1, c) + "'");
   }
 
+  static constexpr int max_depth = 200;
   const std::string& text_;
   const NameLookup& lookup_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 } // namespace

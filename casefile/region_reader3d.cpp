@@ -1,7 +1,9 @@
 // Regions of a 3D case: spherical segments and segment arrays (with the thesis's
 // magnetization patterns), cylinders and radial cylinder arrays on a sphere, boxes; rigid
 // placement and groups.
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include <Eigen/Geometry>
@@ -125,9 +127,20 @@ struct Reader3D {
 //   {type: parallel, direction: [x,y,z]} / {type: radial}: one direction / outward for all;
 //   {type: per_segment, directions: [[x,y,z], ...]}: p_theta-major list of P_theta*P_phi.
 // An optional `sign: -1` flips the whole pattern. Parts are named <name>_<p_theta>_<p_phi>.
+// `cut_phi: [min, max]` then cuts the laid-out array to that phi range: segments keep their
+// index, sign and direction (those of the uncut segment) and those wholly outside are dropped,
+// so "an array cut in half" (the thesis's hemispherical actuator array, half-size magnets at
+// the cut) is written as the whole array and the cut.
 void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
-  r.allow_keys(keys_with({"r_inner", "r_outer", "theta", "phi", "p_theta", "p_phi", "pattern"}));
+  r.allow_keys(
+      keys_with({"r_inner", "r_outer", "theta", "phi", "p_theta", "p_phi", "pattern", "cut_phi"}));
   const SphericalSegment whole = read_segment(r, s);
+  std::optional<std::pair<double, double>> cut;
+  if (r.has("cut_phi")) {
+    cut = read_angle_range(r.at("cut_phi"), -360, 360);
+    if (cut->second <= whole.phi_min || cut->first >= whole.phi_max)
+      r.at("cut_phi").fail("the cut leaves nothing of the array's phi range");
+  }
   const int nt = r.at("p_theta").as_int(), np = r.at("p_phi").as_int();
   if (nt < 1)
     r.at("p_theta").fail("must be at least 1");
@@ -193,6 +206,13 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
         m.pattern = Magnetization::Pattern::parallel;
         m.direction = place.rotation * read_direction3(per_segment[(it - 1) * np + (ip - 1)]);
         m.sign = global_sign;
+      }
+      if (cut) {
+        // Cuts thinner than round-off would only make slivers.
+        seg.phi_min = std::max(seg.phi_min, cut->first);
+        seg.phi_max = std::min(seg.phi_max, cut->second);
+        if (seg.phi_max - seg.phi_min < 1e-9)
+          continue;
       }
       add(r, Part3D{spec.name, seg, place, 0, ""}, spec);
     }

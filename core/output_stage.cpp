@@ -5,15 +5,19 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "core/interrupt.hpp"
+
 namespace magfem {
 
 OutputStage::OutputStage(std::filesystem::path out_dir, std::string record)
     : out_dir_(std::move(out_dir)), record_(std::move(record)) {
   staging_ = out_dir_ / (".magfem-staging-" + std::to_string(::getpid()));
   created_out_dir_ = !std::filesystem::exists(out_dir_);
+  register_staging(staging_, created_out_dir_ ? out_dir_ : std::filesystem::path());
 }
 
 OutputStage::~OutputStage() {
+  unregister_staging(staging_);
   std::error_code ec;
   std::filesystem::remove_all(staging_, ec);
   // An output directory we created and never filled goes too.
@@ -59,7 +63,9 @@ void OutputStage::commit() {
   write_text(manifest_name, manifest);
   names_.pop_back();
 
-  // From here on the directory is in transition: no record until the end.
+  // From here on the directory is in transition: no record until the end. An interrupt
+  // waits for the end (core/interrupt.hpp).
+  const auto hold = hold_outputs();
   if (has_record)
     fs::remove(out_dir_ / record_);
   for (const auto& old : read_manifest(out_dir_ / manifest_name))

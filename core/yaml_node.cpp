@@ -81,7 +81,7 @@ std::vector<YamlNode> YamlNode::items() const {
 std::vector<std::string> YamlNode::keys() const {
   if (!node_.IsMap()) fail("expected a map");
   std::vector<std::string> out;
-  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  for (const auto& kv : node_) out.push_back(key_text(kv.first));
   return out;
 }
 
@@ -92,7 +92,7 @@ void YamlNode::allow_keys(std::initializer_list<const char*> allowed) const {
 void YamlNode::allow_keys(const std::vector<std::string>& allowed) const {
   if (!node_.IsMap()) fail("expected a map");
   for (const auto& kv : node_) {
-    const auto key = kv.first.as<std::string>();
+    const auto key = key_text(kv.first);
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
@@ -101,6 +101,12 @@ void YamlNode::allow_keys(const std::vector<std::string>& allowed) const {
                        "unknown field (allowed here: " + list + ")");
     }
   }
+}
+
+std::string YamlNode::key_text(const YAML::Node& key) const {
+  if (!key.IsScalar())
+    throw InputError(*file_, key.Mark().line + 1, path_, "a key must be plain text");
+  return key.Scalar();
 }
 
 std::string YamlNode::as_string() const {

@@ -65,6 +65,9 @@ public:
   std::string get_string(const std::string& key, const std::string& fallback) const;
 
   const YAML::Node& raw() const { return node_; }
+  // The text of a key of this map; a key that is not plain text (YAML allows `? [a, b]`) is
+  // an InputError at the key's line.
+  std::string key_text(const YAML::Node& key) const;
 
 private:
   std::string child_path(const std::string& key) const;

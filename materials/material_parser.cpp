@@ -89,7 +89,7 @@ void reject_duplicate_keys(const YamlNode& map) {
     map.fail("expected a map");
   std::set<std::string> seen;
   for (const auto& kv : map.raw()) {
-    const auto key = kv.first.as<std::string>();
+    const auto key = map.key_text(kv.first);
     if (!seen.insert(key).second)
       throw InputError(map.file(), kv.first.Mark().line + 1,
                        map.path().empty() ? key : map.path() + "." + key,

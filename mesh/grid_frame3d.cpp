@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "mesh/mesh_error.hpp"
@@ -94,6 +95,49 @@ void validate_shape(const Part3D& part, const Cylinder& c) {
 void validate_shape(const Part3D& part, const Box& b) {
   require(b.size.allFinite() && b.size.minCoeff() > 0, part, "size",
           "every edge of a box must be > 0");
+}
+
+// Largest sagitta a facet of a part surface with curvature radius `radius` may have: facets
+// are at most the smaller of the part's and the air's size long (h^2 / (6 R)) and, with a
+// chord tolerance, no deeper than it (scaled like the chord limit when size_scale < 1).
+double max_sagitta(const Geometry3D& geo, const Part3D& part, double radius) {
+  const MeshOptions3D& o = geo.options;
+  const double scale = o.size_scale > 0 ? o.size_scale : 1.0;
+  const double air = o.default_size > 0 ? o.default_size : geo.outer.radius / 8;
+  const double h = scale * std::min(part.max_size > 0 ? part.max_size : air, air);
+  double s = h * h / (6 * radius);
+  if (o.chord_tolerance > 0)
+    s = std::min(s, o.chord_tolerance * std::min(scale, 1.0) * std::min(scale, 1.0));
+  return s;
+}
+
+// A shell (spherical or cylindrical) thinner than 1.5 times the sagitta bound of its facets
+// (the chord limit keeps the real sagitta below 0.81 of that bound): the
+// faceted outer surface would dip through the inner one, TetGen would find the surfaces
+// crossing and fail in a way that aborts inside the library (measured: a 10 um shell of
+// radius 10 mm at chord_tolerance 50 um). Caught here with the part's name instead.
+void validate_thickness(const Geometry3D& geo, const Part3D& part) {
+  double r_inner = 0, r_outer = 0;
+  if (const auto* s = std::get_if<SphericalSegment>(&part.shape)) {
+    r_inner = s->r_inner;
+    r_outer = s->r_outer;
+  } else if (const auto* c = std::get_if<Cylinder>(&part.shape)) {
+    r_inner = c->r_inner;
+    r_outer = c->r_outer;
+  }
+  if (!(r_inner > 0))
+    return;
+  const double sagitta = max_sagitta(geo, part, r_outer);
+  const double t = r_outer - r_inner;
+  if (t < 1.5 * sagitta) {
+    char msg[400];
+    std::snprintf(msg, sizeof msg,
+                  "the shell is %.3g m thick, less than 1.5 times the depth its facets may have "
+                  "(%.3g m): its faceted surfaces would cross. Lower mesh chord_tolerance below "
+                  "%.3g m (or the part's mesh size) or make the shell thicker",
+                  t, sagitta, t / 4);
+    throw MeshError(part.name, "r_inner", msg);
+  }
 }
 
 GridKind3D kind_of(const Shape3D& s) {
@@ -321,6 +365,7 @@ GridDecomposition3D decompose_geometry_3d(const Geometry3D& geo) {
     const Part3D& part = geo.parts[p];
     validate_placement(part);
     std::visit([&](const auto& s) { validate_shape(part, s); }, part.shape);
+    validate_thickness(geo, part);
     const GridKind3D kind = kind_of(part.shape);
     Vec3 off = Vec3::Zero();
     std::size_t f = 0;

@@ -356,8 +356,11 @@ void check_mesh(const Mesh2D& mesh, const Geometry2D& g) {
       used[std::size_t(r)] = 1;
   for (std::size_t i = 0; i < used.size(); ++i)
     if (!used[i])
+      // Either later parts cover it, or it is thinner than the chord tolerance lets the
+      // mesher see (a 10 nm ring at 10 um: its two circles become one outline).
       throw MeshError(g.parts[i].name, "",
-                      "the part has no element: later parts cover it completely");
+                      "the part has no element: later parts cover it completely, or it is "
+                      "thinner than the mesh can resolve (about the chord tolerance)");
 }
 
 } // namespace

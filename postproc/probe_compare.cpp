@@ -18,6 +18,12 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
+// Files written on Windows end their lines in "\r\n".
+void strip_carriage_return(std::string& line) {
+  if (!line.empty() && line.back() == '\r')
+    line.pop_back();
+}
+
 bool is_field_component(const std::string& c) { return !c.empty() && c[0] == 'B'; }
 
 } // namespace
@@ -25,13 +31,29 @@ bool is_field_component(const std::string& c) { return !c.empty() && c[0] == 'B'
 ProbeTable read_probe_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "", "cannot open the file");
+  return read_probe_csv(in, path);
+}
+
+ProbeTable read_probe_csv(std::istream& in, const std::string& path) {
   ProbeTable t;
   std::string line;
   if (!std::getline(in, line)) throw InputError(path, 1, "", "empty file");
+  strip_carriage_return(line);
   t.columns = split(line);
+  if (t.columns.empty())
+    throw InputError(path, 1, "", "the header names no columns");
+  for (std::size_t i = 0; i < t.columns.size(); ++i) {
+    if (t.columns[i].empty())
+      throw InputError(path, 1, "", "column " + std::to_string(i + 1) + " has no name");
+    // compare_probes looks columns up by name: a second one would never be compared.
+    for (std::size_t j = 0; j < i; ++j)
+      if (t.columns[j] == t.columns[i])
+        throw InputError(path, 1, t.columns[i], "the column appears twice");
+  }
   int n = 1;
   while (std::getline(in, line)) {
     ++n;
+    strip_carriage_return(line);
     if (line.empty()) continue;
     const auto cells = split(line);
     if (cells.size() != t.columns.size())
@@ -41,9 +63,10 @@ ProbeTable read_probe_csv(const std::string& path) {
       try {
         std::size_t used = 0;
         row.push_back(std::stod(cells[i], &used));
-        if (used != cells[i].size()) throw std::invalid_argument(cells[i]);
+        if (used != cells[i].size() || !std::isfinite(row.back()))
+          throw std::invalid_argument(cells[i]);
       } catch (const std::exception&) {
-        throw InputError(path, n, t.columns[i], "not a number: '" + cells[i] + "'");
+        throw InputError(path, n, t.columns[i], "not a finite number: '" + cells[i] + "'");
       }
     }
     t.rows.push_back(std::move(row));

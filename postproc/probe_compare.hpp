@@ -5,6 +5,7 @@
 //   pointwise rms error    rms(test - ref) / rms(ref)           -- sees every point
 // The first can be small while the second is large (errors of both signs cancel), so both
 // are always printed.
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@ namespace magfem {
 
 // Reads a probe CSV; a malformed file is an InputError naming file, line and column.
 ProbeTable read_probe_csv(const std::string& path);
+// The same from a stream; `name` stands for the file in messages (tests, fuzzing).
+ProbeTable read_probe_csv(std::istream& in, const std::string& name);
 
 struct ComponentComparison {
   std::string component;

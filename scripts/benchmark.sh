@@ -131,6 +131,18 @@ $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --ang
   --analytic --out "$out/sweep_a" 2> /dev/null | tail -n +1
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
 echo
+echo "== design study (issue 14 target: 20 x 20 grid of 19-angle curves <= 10 s)"
+start=$(date +%s.%N)
+$magfem study examples/3d/compensator_study.yaml --param R_in=25:0.5:34.5 --param R_out=45:1:64 \
+  --objective peak_torque --rotate outer --axis y --angles 0:10:180 --out "$out/study" > /dev/null
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    400 designs, wall %.1f s\n", b - a }'
+echo
+echo "== spherical actuator (issue 10 target: analytic torque constants, 7 x 7 grid, 12 coils <= 10 s)"
+start=$(date +%s.%N)
+$magfem actuator examples/3d/spherical_actuator_design.yaml --rotor rotor \
+  --orientations rx=-45:15:45,ry=-45:15:45,rz=0 --analytic --out "$out/act" 2> /dev/null | sed 's/^/    /'
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+echo
 echo "== magfem validate (issue 12: quick tier <= 10 min, full tier <= 60 min on 2 cores)"
 tiers="quick"
 ((full)) && tiers="quick full"
@@ -145,5 +157,10 @@ if ((full)); then
   start=$(date +%s.%N)
   $magfem sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:10:180 \
     --out "$out/sweep_fe" 2> /dev/null
+  awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'  echo
+  echo "== seed-002 Fig. 5 by 3D FE: torque about the rotor centre at 10 deg (analytic: 0.165 N m on the coil)"
+  start=$(date +%s.%N)
+  $magfem solve examples/3d/voice_coil_torque.yaml --order 1 --out "$out/vctorque" > /dev/null 2>&1
+  awk -F, 'NR > 1 && $1 == "coil_lorentz" { printf "    T_y on the coil %.4f N m\n", $7 }' "$out/vctorque/forces.csv"
   awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
 fi

@@ -6,7 +6,7 @@ _magfem() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   command="${COMP_WORDS[1]}"
-  local commands="solve analytic compare sweep study optimize validate help"
+  local commands="solve analytic compare sweep study optimize actuator validate help"
 
   if ((COMP_CWORD == 1)); then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
@@ -19,7 +19,7 @@ _magfem() {
     --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
     --mesh-scale | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
-      --jobs | --only | --source | --param | --vary | --xtol) return ;;
+      --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature) return ;;
     --objective | --maximize | --minimize)
       COMPREPLY=($(compgen -W "peak_torque torque_at:" -- "$cur"))
       return
@@ -33,6 +33,7 @@ _magfem() {
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;
     validate) options="--tier --only --source --jobs --out --help" ;;
     study) options="--param --objective --rotate --axis --angles --analytic --fe --jobs --out --help" ;;
+    actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --out --help" ;;
     optimize) options="--vary --maximize --minimize --rotate --axis --angles --xtol --verify-fe --out --help" ;;
     help) COMPREPLY=($(compgen -W "${commands% help}" -- "$cur")); return ;;
   esac
@@ -42,7 +43,7 @@ _magfem() {
   fi
   case "$command" in
     compare) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
-    solve | analytic | sweep | study | optimize) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
+    solve | analytic | sweep | study | optimize | actuator) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
   esac
 }
 complete -o filenames -F _magfem magfem

@@ -39,8 +39,6 @@ std::vector<int> number_equations(int n_dofs, const std::vector<int>& constraine
   return map;
 }
 
-inline Eigen::Vector2d curl(const Eigen::Vector2d& grad) { return {grad.y(), -grad.x()}; }
-
 } // namespace
 
 Assembler2D::Assembler2D(const Problem2D& problem, const DofMap2D& dofs)

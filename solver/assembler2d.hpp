@@ -43,7 +43,7 @@ private:
   const Problem2D& problem_;
   const DofMap2D& dofs_;
   ShellTransform shell_;
-  int n_eqs_; // set by the initializer of dof_to_eq_, hence declared before it
+  int n_eqs_ = 0; // set by the initializer of dof_to_eq_, hence declared before it
   std::vector<int> dof_to_eq_;
   std::vector<int> element_eqs_;
   bool linear_ = true;

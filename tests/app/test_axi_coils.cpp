@@ -18,6 +18,8 @@
 #include "postproc/vtu_export_revolved.hpp"
 #include "sources/axisymmetric_bundle.hpp"
 #include "validation/coil_closed_forms.hpp"
+#include "validation/equivalent_single_layer.hpp"
+#include "validation/rotor_coil_pair.hpp"
 
 using namespace magfem;
 
@@ -204,6 +206,38 @@ TEST(AxiCoils, VoiceCoilExampleForceEqualsTheCurrentSheetModel) {
             << (f_magnet + f) / std::abs(f) << ")\n";
   EXPECT_NEAR(f_magnet, -f, 3e-3 * std::abs(f));
   EXPECT_LT(exact, 0); // coaxial like dipoles attract: the coil is pulled towards the magnet
+  // The voice-coil models' path (validation/rotor_coil_pair.hpp at separation angle 0, the same
+  // pair): the Lorentz force on the magnet's surface current in the exact field of the coil's
+  // loops, the reaction to the FE force on the coil. Same tolerance as above (1e-4).
+  const RotorCoilPair pair;
+  const double on_magnet = magnet_wrench(pair, pair.coil, pair.current, 0.0).force.z();
+  std::cout << "voice coil: Lorentz force on the magnet's sheet in the loops' field " << on_magnet
+            << " N\n";
+  EXPECT_NEAR(on_magnet, -f, 1e-4 * std::abs(f));
+}
+
+TEST(AxiCoils, VoiceCoilFig6ExampleForceEqualsTheCurrentSheetModel) {
+  // examples/axi/voice_coil_fig6.yaml: the seed's Fig. 6 experiment under the dimensions the
+  // example assumes (the paper leaves them undefined; listed in the example). The magnet
+  // (mu_r 1) is the sheet M l on its side, so the Lorentz force on the coil is
+  // I_sheet I_coil dM/dz (coil_closed_forms.hpp), and the ESL of the paper's conditions gives
+  // nearly the same force (the coil is thin: a_i / a_o = 0.77). Tolerance 1e-3 for the FE
+  // (the coil's inner edge is 25 um from the magnet's side; measured 1.1e-5).
+  const auto run = run_case_2d(read_case(test::example("axi/voice_coil_fig6.yaml")));
+  const double l = 1.524e-3;
+  const CoaxialCoil sheet{1.499e-3, 1.499e-3, -0.5 * l, 0.5 * l, 1};
+  const CoaxialCoil coil{1.524e-3, 1.981e-3, 0.889e-3, 2.489e-3, 280};
+  const double exact = coaxial_axial_force(sheet, coil, 1.02 * l / mu0, 0.05);
+  const double f = force(*run, "coil_lorentz").force.z();
+  const CoaxialCoil centred{coil.r_inner, coil.r_outer, -0.8e-3, 0.8e-3, 280};
+  const EquivalentSingleLayer esl = esl_line_model(centred, 0.05, 0.0);
+  const double by_esl = coaxial_axial_force(sheet, esl.as_sheet(coil), 1.02 * l / mu0, 1.0);
+  std::cout << "Fig. 6 (large, assumed dimensions): Lorentz " << f << " N, exact " << exact
+            << " N (rel " << (f - exact) / exact << "), ESL (a_e " << esl.radius * 1e3 << " mm) "
+            << by_esl << " N\n";
+  EXPECT_NEAR(f, exact, 1e-3 * std::abs(exact));
+  // The paper's claim (ESL within a few % of the multilayer coil): measured 1.4 %; 3 % required.
+  EXPECT_NEAR(by_esl, exact, 0.03 * std::abs(exact));
 }
 
 TEST(AxiCoils, CylinderMagnetOnAxisFieldEqualsTheClosedForm) {

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "app/run3d.hpp"
 #include "case_helpers.hpp"
 #include "core/input_error.hpp"
 
@@ -121,4 +122,50 @@ TEST(BadInput, CliExitsWithCode2AndWritesNothing) {
   EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
   EXPECT_FALSE(std::filesystem::exists(out / "r12.csv"));
+}
+
+// Geometry that cannot be meshed, in 2D (issue 15): exit 2 at the part, never a crash.
+TEST(BadInput, SelfIntersectingPolygonNamesItsPoints) {
+  // A figure of eight: the outline passes twice through (5, 5).
+  const auto text = replace(good, "    shape: disk\n    radius: 10\n",
+                            "    shape: polygon\n"
+                            "    points: [[0, 0], [5, 5], [10, 0], [10, 10], [5, 5], [0, 10]]\n");
+  expect_input_error("figure_eight", text, {5, "regions[0].points"}, true);
+}
+
+TEST(BadInput, RingThinnerThanTheMeshCanResolve) {
+  // 10 nm thick at the default chord tolerance of 10 um: both circles become one outline and
+  // the ring gets no element (it used to be blamed on later parts covering it).
+  const auto text = replace(good, "    shape: disk\n    radius: 10\n",
+                            "    shape: annulus\n    r_inner: 10\n    r_outer: 10.00001\n");
+  expect_input_error("thin_ring", text, {5, "regions[0]"}, true);
+}
+
+// Geometry that cannot be meshed, in 3D (issue 15): a shell thinner than its facets are deep
+// used to abort inside TetGen; now an InputError at the region's line naming the part.
+TEST(BadInput, ShellTooThinForItsFacets3D) {
+  const std::string text = R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
+regions:
+  - name: foil
+    shape: spherical_segment
+    r_inner: 10
+    r_outer: 10.01
+    material: pm
+    magnetization: {type: parallel, direction: [0, 0, 1]}
+boundary: {type: open, radius: 40}
+mesh: {size: 8, chord_tolerance: 0.05}
+)";
+  const auto path = test::write_temp_case("thin_shell3d.yaml", text);
+  try {
+    run_case_3d(read_case(path));
+    FAIL() << "a 10 um shell at chord tolerance 50 um was meshed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 6) << e.what();
+    EXPECT_EQ(e.field(), "regions[0].r_inner") << e.what();
+    EXPECT_NE(std::string(e.what()).find("foil"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("chord_tolerance"), std::string::npos) << e.what();
+  }
 }

@@ -78,6 +78,10 @@ TEST(ParameterExpression, PrecedenceParenthesesUnaryMinusAndNames) {
   EXPECT_THROW(evaluate_expression("2 ^ 3", x), ExpressionError);
   EXPECT_THROW(evaluate_expression("y", x), ExpressionError);
   EXPECT_THROW(evaluate_expression("1 / (x - 4)", x), ExpressionError); // not finite
+  // Nesting is bounded (a stack overflow otherwise): 200 levels pass, 100000 are an error.
+  EXPECT_DOUBLE_EQ(evaluate_expression(std::string(199, '(') + "x" + std::string(199, ')'), x), 4);
+  EXPECT_THROW(evaluate_expression(std::string(100000, '(') + "1", x), ExpressionError);
+  EXPECT_THROW(evaluate_expression(std::string(100000, '-') + "1", x), ExpressionError);
 }
 
 TEST(CaseParameters, SubstitutedConvertedAndOverridden) {

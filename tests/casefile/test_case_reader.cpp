@@ -188,3 +188,44 @@ TEST(CaseReader3D, BadInputNamesTheExactLineAndFieldPath) {
     }
   }
 }
+
+// cut_phi (the spherical actuator's hemispherical array, issue 10): the 32-segment layout
+// centred on phi = 0, +-45, .. cut at phi = +-90 keeps 4 x 3 whole segments and 4 x 2 halves;
+// each keeps the name, sign and direction of its uncut segment (a half at phi = 90 still
+// points at phi = 90, not at its own centre 78.75), and segments wholly outside are dropped.
+TEST(CaseReader, SegmentArrayCutKeepsTheUncutLayout) {
+  const auto spec = read_case(write_case("cut.yaml", R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
+regions:
+  - {name: m, shape: segment_array, r_inner: 53, r_outer: 63, theta: [0, 180],
+     phi: [-112.5, 247.5], p_theta: 4, p_phi: 8, cut_phi: [-90, 90], material: pm,
+     pattern: {type: parallel_alternating}}
+boundary: {type: open, radius: 100}
+mesh: {size: 5}
+)"));
+  const auto& parts = spec.geometry3d.parts;
+  ASSERT_EQ(parts.size(), 20u);
+  const double deg = std::numbers::pi / 180;
+  int halves = 0;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const auto& seg = std::get<SphericalSegment>(parts[i].shape);
+    EXPECT_GE(seg.phi_min, -90 * deg - 1e-12);
+    EXPECT_LE(seg.phi_max, 90 * deg + 1e-12);
+    const double width = (seg.phi_max - seg.phi_min) / deg;
+    halves += std::abs(width - 22.5) < 1e-9;
+    EXPECT_TRUE(std::abs(width - 22.5) < 1e-9 || std::abs(width - 45) < 1e-9) << width;
+  }
+  EXPECT_EQ(halves, 8);
+  // Segment (1, 5) spans phi 67.5..90 after the cut, centred on 90 before it: theta centre
+  // 22.5 deg, direction (0, sin 22.5, cos 22.5), sign (-1)^(1+5) = +1.
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    if (spec.regions[i].name == "m_1_5") {
+      const auto& m = spec.regions[i].magnetization;
+      const Eigen::Vector3d want(0, std::sin(22.5 * deg), std::cos(22.5 * deg));
+      EXPECT_LT((m.sign * m.direction - want).norm(), 1e-12);
+      return;
+    }
+  FAIL() << "no segment m_1_5";
+}

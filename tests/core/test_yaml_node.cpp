@@ -39,6 +39,21 @@ TEST(YamlNode, UnknownKeyIsRejectedWithItsLine) {
   }
 }
 
+// Found by fuzzing: yaml-cpp's own conversion exception escaped as an internal error (exit 1).
+TEST(YamlNode, AKeyThatIsNotTextIsAnInputErrorAtItsLine) {
+  const auto root = YamlNode::load_string("a: 1\n? [b, c]\n: 2\n", "case.yaml");
+  for (const auto& call : {+[](const YamlNode& n) { n.allow_keys({"a"}); },
+                           +[](const YamlNode& n) { (void)n.keys(); }}) {
+    try {
+      call(root);
+      FAIL();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 2) << e.what();
+      EXPECT_NE(e.reason().find("plain text"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(YamlNode, MalformedYamlGivesTheParserLine) {
   try {
     YamlNode::load_string("a: 1\nb: [1, 2\nc: 3\n", "bad.yaml");

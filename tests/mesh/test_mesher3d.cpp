@@ -367,6 +367,20 @@ TEST(Mesher3D, RejectsDegenerateAndOutsideParts) {
   EXPECT_EQ(error_of(g), "brick/size");
   g.parts[0] = segment("big", 40 * mm, 120 * mm, 0, pi / 2, 0, pi / 2);
   EXPECT_EQ(error_of(g), "big/");
+  // Shells thinner than 1.5 facet sagittas: before this check TetGen found the faceted
+  // surfaces crossing and the process aborted inside the library (10 um at chord 50 um).
+  g.options.chord_tolerance = 0.05 * mm;
+  g.parts[0] = segment("foil", 10 * mm, 10.01 * mm, 0, pi, 0, 2 * pi);
+  EXPECT_EQ(error_of(g), "foil/r_inner");
+  g.parts[0].name = "tube";
+  g.parts[0].shape = Cylinder{5 * mm, 5.001 * mm, 10 * mm};
+  EXPECT_EQ(error_of(g), "tube/r_inner");
+  // Without a chord tolerance the facets follow the mesh size: 20 mm facets on the 15 mm
+  // outer sphere may be 4.4 mm deep, so even a 5 mm shell is refused.
+  g.options.chord_tolerance = 0;
+  g.parts[0] = segment("coarse", 10 * mm, 15 * mm, 0, pi, 0, 2 * pi);
+  EXPECT_EQ(error_of(g), "coarse/r_inner");
+  g.options.chord_tolerance = 0.5 * mm;
   g.parts[0].name = "far";
   g.parts[0].shape = Box{Eigen::Vector3d(10 * mm, 10 * mm, 10 * mm)};
   g.parts[0].placement.translation = Eigen::Vector3d(97 * mm, 0, 0);

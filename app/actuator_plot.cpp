@@ -1,0 +1,108 @@
+#include "app/actuator_plot.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace magfem {
+namespace {
+
+double angle(const Orientation& o, int axis) {
+  return axis == 0 ? o.rx_deg : axis == 1 ? o.ry_deg : o.rz_deg;
+}
+
+} // namespace
+
+bool plot_power_map(const ActuatorResult& r, const std::string& title,
+                    const std::filesystem::path& png, std::string& why) {
+  // The two axes with the most distinct angles.
+  std::set<double> distinct[3];
+  for (const auto& o : r.orientations)
+    for (int a = 0; a < 3; ++a)
+      distinct[a].insert(angle(o, a));
+  int ax = 0, ay = 1;
+  {
+    int order[3] = {0, 1, 2};
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+        if (distinct[order[j]].size() > distinct[order[i]].size())
+          std::swap(order[i], order[j]);
+    ax = std::min(order[0], order[1]);
+    ay = std::max(order[0], order[1]);
+  }
+  if (distinct[ax].size() < 2) {
+    why = "one orientation only";
+    return false;
+  }
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+    why = "gnuplot not found (apt-get install gnuplot-nox)";
+    return false;
+  }
+  const bool map2d = distinct[ay].size() >= 2;
+  const char* names[3] = {"rx (deg)", "ry (deg)", "rz (deg)"};
+  const auto script = std::filesystem::path(png).replace_extension(".gp");
+  std::vector<std::filesystem::path> data;
+  {
+    std::ofstream g(script);
+    std::string safe_title = title;
+    for (char& c : safe_title)
+      if (c == '"' || c == '\\')
+        c = '\'';
+    const std::size_t n = r.demands.size();
+    g << "set terminal png size " << 520 * n + 80 << ",480 noenhanced\n"
+      << "set output '" << png.string() << "'\n"
+      << "set multiplot layout 1," << n << " title \"" << safe_title << "\"\n"
+      << "set xlabel '" << names[ax] << "'\n";
+    if (map2d)
+      g << "set ylabel '" << names[ay] << "'\nset view map\nset cblabel 'P (W)'\n"
+        << "set datafile missing 'nan'\n";
+    else
+      g << "set ylabel 'P (W)'\nset grid\n";
+    for (std::size_t d = 0; d < n; ++d) {
+      // Mean over the remaining axis of every (ax, ay) cell; gaps where none is usable.
+      std::map<std::pair<double, double>, std::pair<double, int>> cells;
+      for (std::size_t i = 0; i < r.orientations.size(); ++i) {
+        const auto& o = r.orientations[i];
+        auto& cell = cells[{angle(o, ax), map2d ? angle(o, ay) : 0.0}];
+        const auto& c = r.demands[d].commutations[i];
+        if (c.ok)
+          cell.first += c.power_W, ++cell.second;
+      }
+      data.push_back(std::filesystem::path(png).replace_extension(".d" + std::to_string(d)));
+      std::ofstream f(data.back());
+      double last_x = cells.empty() ? 0 : cells.begin()->first.first;
+      for (const auto& [key, v] : cells) {
+        if (map2d && key.first != last_x)
+          f << '\n'; // gnuplot grid rows
+        last_x = key.first;
+        f << key.first << ' ' << key.second << ' ';
+        if (v.second > 0)
+          f << v.first / v.second << '\n';
+        else
+          f << "nan\n";
+      }
+      const std::string label = r.demands[d].name;
+      if (map2d)
+        g << "set title '" << label << "'\nsplot '" << data.back().string()
+          << "' u 1:2:3 w pm3d notitle\n";
+      else
+        g << "set title '" << label << "'\nplot '" << data.back().string()
+          << "' u 1:3 w lp notitle\n";
+    }
+    g << "unset multiplot\n";
+  }
+  const std::string cmd = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  for (const auto& p : data)
+    std::filesystem::remove(p);
+  std::filesystem::remove(script);
+  if (rc != 0) {
+    why = "gnuplot failed (exit " + std::to_string(rc) + ")";
+    return false;
+  }
+  return true;
+}
+
+} // namespace magfem

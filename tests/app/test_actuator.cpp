@@ -1,0 +1,224 @@
+// magfem actuator (issue 10): torque constants of the spherical actuator's coils, the
+// commutation of thesis eq. 5.4 and the command's outputs and refusals.
+//
+// What would make these fail: currents that do not solve Gamma i = T_d or are not the least
+// two-norm solution (a transpose in eq. 5.4); a rotor rotation applied the wrong way round
+// (R instead of R^T on the coil points, or the field not turned back) - the half-turn
+// symmetry and the turned-case check catch both; a torque constant with the wrong sign or
+// scale against FE; bad input that writes something or does not exit 2.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+#include <sys/wait.h>
+
+#include <Eigen/SVD>
+
+#include "app/actuator.hpp"
+#include "app/sweep.hpp"
+#include "case_helpers.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+
+using namespace magfem;
+
+namespace {
+
+const std::string design = test::example("3d/spherical_actuator_design.yaml");
+
+ActuatorOptions analytic_options() {
+  ActuatorOptions o;
+  o.case_file = design;
+  o.rotor = "rotor";
+  o.analytic = true;
+  o.torque_Nm = Eigen::Vector3d(0.3, -0.5, 1.0);
+  return o;
+}
+
+double max_abs(const TorqueConstants& g) {
+  return g.cwiseAbs().maxCoeff();
+}
+
+// DISABLED_FeTorqueConstantsMatchTheChargeModel: the issue's accuracy target for FE torque
+// constants (1 % of the largest). Not yet measured: the one FE run of the design attempted
+// (mesh scale 1.5, on a machine loaded 7x) took 25 min and did not get its numbers out.
+constexpr double fe_mesh_scale = 1.5;
+constexpr double fe_tolerance = 0.01;
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+} // namespace
+
+// Eq. 5.4 is exact and minimal: Gamma i = T_d to round-off, and adding any null-space vector
+// of Gamma (another solution) only lengthens i (i is orthogonal to the null space).
+TEST(Actuator, CommutatedCurrentsProduceTheDemandWithTheLeastNorm) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  TorqueConstants g(3, 12);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 12; ++c)
+      g(r, c) = 0.05 * u(rng);
+  const Eigen::Vector3d t(0.4, -0.2, 1.0);
+  const Eigen::VectorXd res = Eigen::VectorXd::Constant(12, 0.6);
+  const Commutation c = commutate(g, res, t);
+  ASSERT_TRUE(c.ok) << c.warning;
+  EXPECT_LT((g * c.currents - t).norm(), 1e-12 * t.norm());
+  EXPECT_NEAR(c.power_W, 0.6 * c.currents.squaredNorm(), 1e-12 * c.power_W);
+  EXPECT_DOUBLE_EQ(c.peak_A, c.currents.cwiseAbs().maxCoeff());
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(g, Eigen::ComputeFullV);
+  const Eigen::MatrixXd null = svd.matrixV().rightCols(9);
+  EXPECT_LT((g * null).norm(), 1e-14);
+  for (int k = 0; k < 9; ++k) {
+    const Eigen::VectorXd other = c.currents + 0.1 * null.col(k);
+    EXPECT_LT((g * other - t).norm(), 1e-12);   // another solution ...
+    EXPECT_GT(other.norm(), c.currents.norm()); // ... never shorter
+    EXPECT_LT(std::abs(c.currents.dot(null.col(k))), 1e-12 * c.currents.norm());
+  }
+  // A rank-2 Gamma (every coil's torque in the xy-plane) cannot give T_z: reported, no NaNs.
+  TorqueConstants flat = g;
+  flat.row(2).setZero();
+  const Commutation bad = commutate(flat, res, t);
+  EXPECT_FALSE(bad.ok);
+  EXPECT_EQ(bad.currents.size(), 0);
+  EXPECT_FALSE(bad.warning.empty());
+  EXPECT_GT(bad.condition, max_condition);
+}
+
+// The hemispherical array is antisymmetric under a half turn about x (theta -> 180 - theta,
+// phi -> -phi maps every segment onto one of opposite sign and the iron sphere onto itself),
+// so turning the rotor by another 180 deg about x negates every torque constant:
+// Gamma(rx + 180, ry, rz) = -Gamma(rx, ry, rz). Tolerance 1e-5 of the largest constant: the
+// charge model's cubature tolerance is 1e-6 per box and the two sets of points differ.
+TEST(Actuator, HalfTurnAboutXNegatesTheTorqueConstants) {
+  const CaseSpec spec = read_case(design);
+  const auto r = run_actuator(spec, analytic_options(), {{10, 20, 5}, {190, 20, 5}});
+  ASSERT_EQ(r.gamma.size(), 2u);
+  const double scale = max_abs(r.gamma[0]);
+  EXPECT_GT(scale, 1e-3); // N m/A: the constants are not trivially zero
+  EXPECT_LT(max_abs(r.gamma[0] + r.gamma[1]), 1e-5 * scale) << "Gamma(10,20,5) =\n"
+                                                            << r.gamma[0] << "\nGamma(190,20,5) =\n"
+                                                            << r.gamma[1];
+}
+
+// The rotation convention: torque constants at orientation (rx, ry, rz), computed with the
+// rotor's field turned (coil points taken back into the rotor frame), equal those of the case
+// whose rotor group was turned by rotate_group (x, then y, then z about the fixed axes) and
+// evaluated at the identity. Same tolerance as above.
+TEST(Actuator, OrientationMatchesTheTurnedCase) {
+  const CaseSpec spec = read_case(design);
+  const Orientation o{25, -15, 40};
+  const Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  CaseSpec t = rotate_group(spec, "rotor", Eigen::Vector3d::UnitX(), o.rx_deg * deg_to_rad, origin);
+  t = rotate_group(t, "rotor", Eigen::Vector3d::UnitY(), o.ry_deg * deg_to_rad, origin);
+  t = rotate_group(t, "rotor", Eigen::Vector3d::UnitZ(), o.rz_deg * deg_to_rad, origin);
+  const auto a = run_actuator(spec, analytic_options(), {o});
+  const auto b = run_actuator(t, analytic_options(), {{0, 0, 0}});
+  const double scale = max_abs(a.gamma[0]);
+  EXPECT_LT(max_abs(a.gamma[0] - b.gamma[0]), 1e-5 * scale) << "turned field:\n"
+                                                            << a.gamma[0] << "\nturned case:\n"
+                                                            << b.gamma[0];
+  // And the commutated currents produce the demand through the computed Gamma.
+  const auto& c = a.demands[0].commutations[0];
+  ASSERT_TRUE(c.ok) << c.warning;
+  EXPECT_LT((a.gamma[0] * c.currents - a.demands[0].torque_Nm).norm(), 1e-12);
+}
+
+TEST(Actuator, OrientationGridAndCsv) {
+  const auto g = parse_orientations("rx=-45:15:45,ry=0,15,rz=5");
+  ASSERT_EQ(g.size(), 14u);
+  EXPECT_EQ(g.front().rx_deg, -45);
+  EXPECT_EQ(g[1].ry_deg, 15);
+  EXPECT_EQ(g.back().rz_deg, 5);
+  const auto file =
+      test::write_temp_case("orientations.csv", "rx_deg,ry_deg,rz_deg\n0,0,0\n10,-5,3\n");
+  const auto c = parse_orientations(file);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[1].ry_deg, -5);
+  EXPECT_THROW(parse_orientations("rq=3"), InputError);
+  EXPECT_THROW(parse_orientations("rx=1:0:3"), InputError);
+  // Rotation order: Rz Ry Rx applied to x = (1, 0, 0) with rx = 90, ry = 90: Rx leaves it,
+  // Ry(90) takes it to -z, so a rotor turned (90, 90, 0) carries its +x axis to -z.
+  const Eigen::Vector3d x = rotor_rotation({90, 90, 0}) * Eigen::Vector3d::UnitX();
+  EXPECT_LT((x - Eigen::Vector3d(0, 0, -1)).norm(), 1e-12);
+}
+
+// The command end to end on a 2 x 2 analytic grid, and its refusals: unknown rotor group,
+// a torque that is not three numbers, coils inside the rotor's swept sphere - exit 2 and
+// nothing written.
+TEST(Actuator, CommandWritesItsOutputsAndRefusesBadInput) {
+  const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "actuator_cli";
+  std::filesystem::remove_all(out);
+  const std::string exe = MAGFEM_BINARY;
+  const std::string base = exe + " actuator " + design + " --orientations rx=0,15,ry=0,15 ";
+  ASSERT_EQ(std::system((base + "--rotor rotor --torque 0,0,1 --analytic --out " + out.string() +
+                         " > /dev/null")
+                            .c_str()),
+            0);
+  const std::string csv = slurp(out / "commutation.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "rx_deg,ry_deg,rz_deg,i_c1_A,i_c2_A,i_c3_A,i_c4_A,i_c5_A,i_c6_A,i_c7_A,i_c8_A,i_c9_A,"
+            "i_c10_A,i_c11_A,i_c12_A,P_W,i_peak_A,cond_Gamma");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+  const std::string k = slurp(out / "torque_constants.csv");
+  EXPECT_EQ(k.substr(0, k.find('\n')), "rx_deg,ry_deg,rz_deg,coil,kx,ky,kz");
+  EXPECT_EQ(std::count(k.begin(), k.end(), '\n'), 1 + 4 * 12);
+  EXPECT_NE(slurp(out / "summary.json").find("\"P_avg_W\""), std::string::npos);
+  // One orientation: no map to draw, the rest is written (a plot that is not made must not
+  // break the commit). Without --torque: the three unit demands.
+  const auto one = out.parent_path() / "actuator_cli_one";
+  ASSERT_EQ(std::system((exe + " actuator " + design + " --orientations rx=0 --rotor rotor " +
+                         "--analytic --out " + one.string() + " > /dev/null 2>&1")
+                            .c_str()),
+            0);
+  EXPECT_TRUE(std::filesystem::exists(one / "commutation_z.csv"));
+  EXPECT_FALSE(std::filesystem::exists(one / "power_map.png"));
+
+  const auto bad = std::filesystem::temp_directory_path() / "magfem_tests" / "actuator_bad";
+  auto refuses = [&](const std::string& args, const std::string& case_file) {
+    std::filesystem::remove_all(bad);
+    const std::string cmd = exe + " actuator " + case_file + " --orientations rx=0 " + args +
+                            " --analytic --out " + bad.string() + " 2> /dev/null";
+    const int rc = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(rc) && WEXITSTATUS(rc) == 2) << cmd;
+    EXPECT_FALSE(std::filesystem::exists(bad)) << cmd;
+  };
+  refuses("--rotor nosuch --torque 0,0,1", design);
+  refuses("--rotor rotor --torque 0,1", design);
+  refuses("--rotor rotor --torque 0,1,x", design);
+  // A coil at 55..62 mm sits inside the magnets' sphere (63 mm).
+  std::ifstream in(design);
+  std::string text{std::istreambuf_iterator<char>(in), {}};
+  const std::string from = "r_inner: 64, r_outer: 73, gap_angle";
+  text.replace(text.find(from), from.size(), "r_inner: 55, r_outer: 62, gap_angle");
+  refuses("--rotor rotor --torque 0,0,1", test::write_temp_case("actuator_inside.yaml", text));
+}
+
+// FE against the charge model at the identity orientation, magnets in air (the back-iron
+// switched off, so both solve the same problem): the torque constants agree to the FE
+// discretisation error. Disabled in the default suite: the FE solve of the design takes
+// minutes on 2 cores (measured figures in the note of issue 10).
+TEST(Actuator, DISABLED_FeTorqueConstantsMatchTheChargeModel) {
+  ActuatorOptions o = analytic_options();
+  o.parameters["magnet_iron_mu_r"] = 1;
+  const CaseSpec spec = read_case(design, o.parameters);
+  const auto a = run_actuator(spec, o, {{0, 0, 0}});
+  o.analytic = false;
+  o.mesh_scale = fe_mesh_scale;
+  const auto f = run_actuator(spec, o, {{0, 0, 0}});
+  const double scale = max_abs(a.gamma[0]);
+  const double err = max_abs(f.gamma[0] - a.gamma[0]) / scale;
+  std::printf("Gamma: largest |FE - charge model| = %.3g of the largest constant %.4g N m/A\n", err,
+              scale);
+  EXPECT_LT(err, fe_tolerance);
+}
