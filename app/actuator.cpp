@@ -18,6 +18,7 @@
 #include "app/actuator_plot.hpp"
 #include "app/analytic_scene.hpp"
 #include "app/build_info.hpp"
+#include "app/cli_number.hpp"
 #include "app/run3d.hpp"
 #include "app/sweep.hpp"
 #include "app/torque_constants.hpp"
@@ -31,17 +32,6 @@ namespace magfem {
 namespace {
 
 const std::string cli = "<command line>";
-
-double parse_number(const std::string& option, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(v))
-      return v;
-  } catch (const std::exception&) {
-  }
-  throw InputError(cli, 0, option, "expected a finite number, got '" + text + "'");
-}
 
 std::vector<std::string> split(const std::string& text, char sep) {
   std::vector<std::string> out;
@@ -72,8 +62,8 @@ std::vector<Orientation> read_orientation_csv(const std::string& path) {
     if (f.size() < 3)
       throw InputError(path, n, "row", "expected three angles rx_deg,ry_deg,rz_deg");
     try {
-      out.push_back({parse_number("rx_deg", f[0]), parse_number("ry_deg", f[1]),
-                     parse_number("rz_deg", f[2])});
+      out.push_back({parse_cli_number("rx_deg", f[0]), parse_cli_number("ry_deg", f[1]),
+                     parse_cli_number("rz_deg", f[2])});
     } catch (const InputError& e) {
       throw InputError(path, n, "row", e.what());
     }
@@ -85,16 +75,6 @@ std::vector<Orientation> read_orientation_csv(const std::string& path) {
 
 bool in_rotor(const Part3D& part, const std::string& rotor) {
   return part.group == rotor;
-}
-
-bool is_air(const Material& m) {
-  return m.kind == MaterialKind::linear && m.mu_r == 1.0;
-}
-
-bool full_sphere_at_origin(const Part3D& part) {
-  const auto* seg = std::get_if<SphericalSegment>(&part.shape);
-  return seg && seg->theta_min <= 1e-12 && seg->theta_max >= pi - 1e-12 &&
-         seg->phi_max - seg->phi_min >= 2 * pi - 1e-12 && part.placement.translation.norm() < 1e-12;
 }
 
 // The field turns rigidly with the rotor: every magnetic part is on the rotor or is a
@@ -308,7 +288,7 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
         throw InputError(cli, 0, arg, "expected three numbers Tx,Ty,Tz (N m), got '" + t + "'");
       Eigen::Vector3d v;
       for (int k = 0; k < 3; ++k)
-        v(k) = parse_number(arg, parts[static_cast<std::size_t>(k)]);
+        v(k) = parse_cli_number(arg, parts[static_cast<std::size_t>(k)]);
       if (v.norm() == 0)
         throw InputError(cli, 0, arg, "the demanded torque is zero");
       o.torque_Nm = v;
@@ -321,7 +301,7 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
       const auto parts = split(t, ',');
       int n[4] = {0, 0, 0, 0};
       for (std::size_t k = 0; k < parts.size() && k < 4; ++k)
-        n[k] = static_cast<int>(parse_number(arg, parts[k]));
+        n[k] = static_cast<int>(parse_cli_number(arg, parts[k]));
       if (parts.size() != 4 || n[0] < 1 || n[1] < 1 || n[2] < 1 || n[3] < 4 || n[0] > 64 ||
           n[1] > 64)
         throw InputError(cli, 0, arg,
@@ -334,13 +314,13 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
       const auto eq = p.find('=');
       if (eq == std::string::npos || eq == 0)
         throw InputError(cli, 0, arg, "expected NAME=VALUE, got '" + p + "'");
-      o.parameters[p.substr(0, eq)] = parse_number(arg, p.substr(eq + 1));
+      o.parameters[p.substr(0, eq)] = parse_cli_number(arg, p.substr(eq + 1));
     } else if (arg == "--mesh-scale") {
-      o.mesh_scale = parse_number(arg, value());
+      o.mesh_scale = parse_cli_number(arg, value());
       if (!(o.mesh_scale > 0))
         throw InputError(cli, 0, arg, "must be positive");
     } else if (arg == "--order") {
-      o.order = static_cast<int>(parse_number(arg, value()));
+      o.order = static_cast<int>(parse_cli_number(arg, value()));
       if (o.order != 1 && o.order != 2)
         throw InputError(cli, 0, arg, "must be 1 or 2");
     } else if (arg == "--out")

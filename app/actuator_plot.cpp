@@ -1,10 +1,11 @@
 #include "app/actuator_plot.hpp"
 
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
 #include <utility>
+
+#include "app/gnuplot.hpp"
 
 namespace magfem {
 namespace {
@@ -36,20 +37,15 @@ bool plot_power_map(const ActuatorResult& r, const std::string& title,
     why = "one orientation only";
     return false;
   }
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-    why = "gnuplot not found (apt-get install gnuplot-nox)";
+  if (!gnuplot_available(why))
     return false;
-  }
   const bool map2d = distinct[ay].size() >= 2;
   const char* names[3] = {"rx (deg)", "ry (deg)", "rz (deg)"};
   const auto script = std::filesystem::path(png).replace_extension(".gp");
   std::vector<std::filesystem::path> data;
   {
     std::ofstream g(script);
-    std::string safe_title = title;
-    for (char& c : safe_title)
-      if (c == '"' || c == '\\')
-        c = '\'';
+    const std::string safe_title = gnuplot_title(title);
     const std::size_t n = r.demands.size();
     g << "set terminal png size " << 520 * n + 80 << ",480 noenhanced\n"
       << "set output '" << png.string() << "'\n"
@@ -93,16 +89,7 @@ bool plot_power_map(const ActuatorResult& r, const std::string& title,
     }
     g << "unset multiplot\n";
   }
-  const std::string cmd = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
-  const int rc = std::system(cmd.c_str());
-  for (const auto& p : data)
-    std::filesystem::remove(p);
-  std::filesystem::remove(script);
-  if (rc != 0) {
-    why = "gnuplot failed (exit " + std::to_string(rc) + ")";
-    return false;
-  }
-  return true;
+  return run_gnuplot(script, data, why);
 }
 
 } // namespace magfem

@@ -15,16 +15,6 @@ namespace {
 // for its "infinitely permeable" boundary).
 constexpr double permeable_threshold = 1000.0;
 
-bool is_air(const Material& m) {
-  return m.kind == MaterialKind::linear && m.mu_r == 1.0;
-}
-
-bool full_sphere_at_origin(const Part3D& part) {
-  const auto* seg = std::get_if<SphericalSegment>(&part.shape);
-  return seg && seg->theta_min <= 1e-12 && seg->theta_max >= pi - 1e-12 &&
-         seg->phi_max - seg->phi_min >= 2 * pi - 1e-12 && part.placement.translation.norm() < 1e-12;
-}
-
 double max_extent(const AnalyticMagnet& m) {
   // Distance of the farthest point of the magnet from the origin (bounding sphere).
   const double local = std::visit(
@@ -75,6 +65,16 @@ void reject_overlaps(const CaseSpec& spec) {
 }
 
 } // namespace
+
+bool is_air(const Material& m) {
+  return m.kind == MaterialKind::linear && m.mu_r == 1.0;
+}
+
+bool full_sphere_at_origin(const Part3D& part) {
+  const auto* seg = std::get_if<SphericalSegment>(&part.shape);
+  return seg && seg->theta_min <= 1e-12 && seg->theta_max >= pi - 1e-12 &&
+         seg->phi_max - seg->phi_min >= 2 * pi - 1e-12 && part.placement.translation.norm() < 1e-12;
+}
 
 AnalyticScene analytic_scene(const CaseSpec& spec) {
   if (spec.dimension != 3)

@@ -22,4 +22,9 @@ struct AnalyticScene {
 
 AnalyticScene analytic_scene(const CaseSpec& spec);
 
+// Air regions: linear with mu_r exactly 1 (mesh aids the analytic models ignore).
+bool is_air(const Material& m);
+// A full ball or shell centred on the origin: what spherical imaging can represent.
+bool full_sphere_at_origin(const Part3D& part);
+
 } // namespace magfem

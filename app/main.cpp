@@ -14,6 +14,7 @@
 
 #include "app/actuator.hpp"
 #include "app/build_info.hpp"
+#include "app/cli_number.hpp"
 #include "app/command_help.hpp"
 #include "app/optimize.hpp"
 #include "app/resource_usage.hpp"
@@ -46,18 +47,6 @@ struct Args {
   int jobs = 0;
 };
 
-double parse_number(const std::string& option, const char* text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == std::strlen(text) && std::isfinite(v))
-      return v;
-  } catch (const std::exception&) {
-  }
-  throw magfem::InputError("<command line>", 0, option,
-                           std::string("expected a finite number, got '") + text + "'");
-}
-
 Args parse_args(int argc, char** argv) {
   if (argc < 2)
     throw magfem::InputError("<command line>", 0, "",
@@ -75,17 +64,17 @@ Args parse_args(int argc, char** argv) {
     if (arg == "--out")
       a.out_dir = value();
     else if (arg == "--order")
-      a.overrides.order = static_cast<int>(parse_number(arg, value()));
+      a.overrides.order = static_cast<int>(magfem::parse_cli_number(arg, value()));
     else if (arg == "--mesh-scale") {
-      a.overrides.mesh_scale = parse_number(arg, value());
+      a.overrides.mesh_scale = magfem::parse_cli_number(arg, value());
       if (!(a.overrides.mesh_scale > 0)) // 0 would silently mean "as in the case"
         throw magfem::InputError("<command line>", 0, arg, "must be positive");
     } else if (arg == "--model")
       a.analytic.model = value();
     else if (arg == "--tolerance")
-      a.analytic.tolerance = parse_number(arg, value());
+      a.analytic.tolerance = magfem::parse_cli_number(arg, value());
     else if (arg == "--n-max")
-      a.analytic.n_max = static_cast<int>(parse_number(arg, value()));
+      a.analytic.n_max = static_cast<int>(magfem::parse_cli_number(arg, value()));
     else if (arg == "--rotate")
       a.rotate = value();
     else if (arg == "--axis")
@@ -101,7 +90,7 @@ Args parse_args(int argc, char** argv) {
     else if (arg == "--surface-radius")
       a.surface_radius = value();
     else if (arg == "--jobs") {
-      a.jobs = static_cast<int>(parse_number(arg, value()));
+      a.jobs = static_cast<int>(magfem::parse_cli_number(arg, value()));
       if (a.jobs < 1)
         throw magfem::InputError("<command line>", 0, arg, "must be at least 1");
     } else if (arg == "--analytic")
@@ -265,7 +254,8 @@ int run_sweep(const Args& args) {
   if (!args.point.empty())
     o.point = s * magfem::parse_vector3("--point", args.point);
   if (!args.surface_radius.empty())
-    o.surface_radius = s * parse_number("--surface-radius", args.surface_radius.c_str());
+    o.surface_radius =
+        s * magfem::parse_cli_number("--surface-radius", args.surface_radius.c_str());
   o.analytic = args.analytic_sweep;
   o.jobs = args.jobs;
   o.order = args.overrides.order;

@@ -8,6 +8,7 @@
 #include <nlopt.hpp>
 
 #include "app/build_info.hpp"
+#include "app/cli_number.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
 
@@ -21,19 +22,9 @@ OptimizeVariable parse_variable(const std::string& text) {
   if (eq == std::string::npos || eq == 0 || colon == std::string::npos || colon < eq)
     throw InputError(cli, 0, "--vary", "expected NAME=LO:HI, got '" + text + "'");
   OptimizeVariable v{text.substr(0, eq), 0, 0};
-  try {
-    std::size_t used = 0;
-    const std::string lo = text.substr(eq + 1, colon - eq - 1), hi = text.substr(colon + 1);
-    v.lower = std::stod(lo, &used);
-    if (used != lo.size())
-      throw std::invalid_argument(lo);
-    v.upper = std::stod(hi, &used);
-    if (used != hi.size())
-      throw std::invalid_argument(hi);
-  } catch (const std::exception&) {
-    throw InputError(cli, 0, "--vary", "expected NAME=LO:HI with numbers, got '" + text + "'");
-  }
-  if (!(v.lower < v.upper) || !std::isfinite(v.lower) || !std::isfinite(v.upper))
+  v.lower = parse_cli_number("--vary", text.substr(eq + 1, colon - eq - 1));
+  v.upper = parse_cli_number("--vary", text.substr(colon + 1));
+  if (!(v.lower < v.upper))
     throw InputError(cli, 0, "--vary", "expected LO < HI in '" + text + "'");
   return v;
 }
@@ -60,12 +51,7 @@ OptimizeOptions parse_optimize_options(const std::vector<std::string>& args) {
       study_args.push_back(value());
       ++senses;
     } else if (arg == "--xtol") {
-      const std::string t = value();
-      try {
-        o.xtol = std::stod(t);
-      } catch (const std::exception&) {
-        throw InputError(cli, 0, arg, "expected a number, got '" + t + "'");
-      }
+      o.xtol = parse_cli_number(arg, value());
       if (!(o.xtol > 0))
         throw InputError(cli, 0, arg, "must be positive");
     } else if (arg == "--verify-fe")

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/build_info.hpp"
+#include "app/cli_number.hpp"
 #include "app/study_plot.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
@@ -17,17 +18,6 @@ namespace magfem {
 namespace {
 
 const std::string cli = "<command line>";
-
-double parse_double(const std::string& option, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(v))
-      return v;
-  } catch (const std::exception&) {
-  }
-  throw InputError(cli, 0, option, "expected a finite number, got '" + text + "'");
-}
 
 // NAME=START:STEP:END (END included within round-off) or NAME=A,B,C.
 StudyParameter parse_parameter(const std::string& text) {
@@ -41,7 +31,7 @@ StudyParameter parse_parameter(const std::string& text) {
   const char sep = list.find(':') != std::string::npos ? ':' : ',';
   for (std::size_t start = 0;;) {
     const auto end = list.find(sep, start);
-    v.push_back(parse_double("--param", list.substr(start, end - start)));
+    v.push_back(parse_cli_number("--param", list.substr(start, end - start)));
     if (end == std::string::npos)
       break;
     start = end + 1;
@@ -69,7 +59,7 @@ StudyObjective parse_study_objective(const std::string& text) {
   }
   if (text.rfind("torque_at:", 0) == 0) {
     o.kind = StudyObjective::Kind::torque_at;
-    o.angle_deg = parse_double("--objective", text.substr(10));
+    o.angle_deg = parse_cli_number("--objective", text.substr(10));
     char name[64];
     std::snprintf(name, sizeof name, "torque_at_%gdeg_Nm", o.angle_deg);
     o.name = name;
@@ -170,7 +160,7 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
     else if (arg == "--fe")
       fe = true;
     else if (arg == "--jobs") {
-      o.sweep.jobs = static_cast<int>(parse_double(arg, value()));
+      o.sweep.jobs = static_cast<int>(parse_cli_number(arg, value()));
       if (o.sweep.jobs < 1)
         throw InputError(cli, 0, arg, "must be at least 1");
     } else if (arg == "--out")

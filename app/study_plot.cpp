@@ -1,18 +1,17 @@
 #include "app/study_plot.hpp"
 
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <map>
+
+#include "app/gnuplot.hpp"
 
 namespace magfem {
 
 bool plot_study(const StudyOptions& options, const std::vector<StudyDesign>& designs,
                 const std::filesystem::path& png, std::string& why) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-    why = "gnuplot not found (apt-get install gnuplot-nox)";
+  if (!gnuplot_available(why))
     return false;
-  }
   // One gnuplot data block per combination of the other parameters (the grid's order keeps
   // the first parameter's values apart, so group explicitly).
   std::map<std::vector<double>, std::vector<const StudyDesign*>> lines;
@@ -37,10 +36,7 @@ bool plot_study(const StudyOptions& options, const std::vector<StudyDesign>& des
       out << "\n\n";
     }
     std::ofstream g(script);
-    std::string title = options.case_file;
-    for (char& c : title)
-      if (c == '"' || c == '\\')
-        c = '\'';
+    const std::string title = gnuplot_title(options.case_file);
     const auto n_obj = options.objectives.size();
     g << "set terminal png size " << 600 * n_obj << ",500 noenhanced\n"
       << "set output '" << png.string() << "'\n"
@@ -64,15 +60,7 @@ bool plot_study(const StudyOptions& options, const std::vector<StudyDesign>& des
     }
     g << "unset multiplot\n";
   }
-  const std::string cmd = "gnuplot '" + script.string() + "' 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::filesystem::remove(data);
-  std::filesystem::remove(script);
-  if (rc != 0) {
-    why = "gnuplot failed (exit " + std::to_string(rc) + ")";
-    return false;
-  }
-  return true;
+  return run_gnuplot(script, {data}, why);
 }
 
 } // namespace magfem

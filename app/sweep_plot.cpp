@@ -1,17 +1,15 @@
 #include "app/sweep_plot.hpp"
 
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
+
+#include "app/gnuplot.hpp"
 
 namespace magfem {
 
 bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
                 const std::filesystem::path& png, std::string& why) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-    why = "gnuplot not found (apt-get install gnuplot-nox)";
+  if (!gnuplot_available(why))
     return false;
-  }
   const auto data = std::filesystem::path(png).replace_extension(".dat");
   const auto script = std::filesystem::path(png).replace_extension(".gp");
   {
@@ -21,13 +19,9 @@ bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
         d << r.angle_deg << ' ' << r.torque.x() << ' ' << r.torque.y() << ' ' << r.torque.z() << ' '
           << r.force.x() << ' ' << r.force.y() << ' ' << r.force.z() << '\n';
     std::ofstream g(script);
-    std::string safe_title = title;
-    for (char& c : safe_title)
-      if (c == '"' || c == '\\')
-        c = '\'';
     g << "set terminal png size 1200,500 noenhanced\n"
       << "set output '" << png.string() << "'\n"
-      << "set multiplot layout 1,2 title \"" << safe_title << "\"\n"
+      << "set multiplot layout 1,2 title \"" << gnuplot_title(title) << "\"\n"
       << "set grid\nset xlabel 'angle (deg)'\n"
       << "set ylabel 'torque about the origin (N m)'\n"
       << "plot '" << data.string()
@@ -37,15 +31,7 @@ bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
       << "' u 1:5 w lp t 'Fx', '' u 1:6 w lp t 'Fy', '' u 1:7 w lp t 'Fz'\n"
       << "unset multiplot\n";
   }
-  const std::string cmd = "gnuplot '" + script.string() + "' 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::filesystem::remove(data);
-  std::filesystem::remove(script);
-  if (rc != 0) {
-    why = "gnuplot failed (exit " + std::to_string(rc) + ")";
-    return false;
-  }
-  return true;
+  return run_gnuplot(script, {data}, why);
 }
 
 } // namespace magfem

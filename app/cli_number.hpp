@@ -1,0 +1,10 @@
+#pragma once
+// Numbers on the command line: the whole text must be one finite number, else an InputError
+// naming the option (the command line has no file or line).
+#include <string>
+
+namespace magfem {
+
+double parse_cli_number(const std::string& option, const std::string& text);
+
+} // namespace magfem
