@@ -57,25 +57,30 @@ constexpr std::array<CommandHelp, 8> commands{{
      "magfem study CASE.yaml --param NAME=START:STEP:END|A,B,C [--param ...]\n"
      "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"
      "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
-     "                    [--analytic|--fe] [--jobs N] [--out DIR]",
+     "                    [--analytic|--fe] [--mesh-scale S] [--order 1|2] [--jobs N]\n"
+     "                    [--quiet] [--out DIR]",
      "evaluate torque objectives over a grid of case-file parameters",
      "  Every combination of the --param values (the file's `parameters:`, in each one's\n"
      "  own unit) is read and swept as `magfem sweep` does (analytic by default: the\n"
      "  harmonic form where it applies); the objectives take the torque about the axis on\n"
      "  GROUP: peak_torque is max |T| over --angles, torque_at:DEG the value at DEG. Writes\n"
-     "  study.csv (one column per parameter, one per objective), study.png, summary.json\n"
-     "  into DIR (default out/<case>_study). Exit 3 if a design failed (listed in\n"
-     "  summary.json; the others are written).\n"},
+     "  study.csv (one column per parameter, one per objective), study.png (a contour map\n"
+     "  for two parameters, else lines), summary.json into DIR (default out/<case>_study).\n"
+     "  --mesh-scale and --order set the --fe sweep's mesh as in `solve`. Exit 3 if a\n"
+     "  design failed (listed in summary.json; the others are written).\n"},
     {"optimize",
      "magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ...]\n"
      "                    --maximize|--minimize peak_torque|torque_at:DEG\n"
      "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
-     "                    [--xtol T] [--verify-fe] [--out DIR]",
+     "                    [--constraint \"EXPR <= EXPR\" ...] [--xtol T] [--verify-fe]\n"
+     "                    [--mesh-scale S] [--order 1|2] [--quiet] [--out DIR]",
      "bounded optimization of a torque objective over case-file parameters",
      "  NLopt's COBYLA (derivative-free, bounded) on the analytic sweep of `magfem study`;\n"
-     "  --xtol is its relative tolerance on the variables (default 1e-4). --verify-fe solves\n"
-     "  the optimum by FE and reports the FE value beside the analytic one. Writes\n"
-     "  summary.json into DIR (default out/<case>_optimize).\n"},
+     "  --xtol is its relative tolerance on the variables (default 1e-4). --constraint is an\n"
+     "  inequality (<= or >=) between expressions of the --vary names in their own units,\n"
+     "  e.g. \"R_out - R_in >= 10\"; exit 3 if no point satisfies it. --verify-fe solves\n"
+     "  the optimum by FE (mesh as set by --mesh-scale/--order) and reports the FE value\n"
+     "  beside the analytic one. Writes summary.json into DIR (default out/<case>_optimize).\n"},
     {"actuator",
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"

@@ -157,12 +157,23 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
       angles = value();
     else if (arg == "--analytic")
       analytic = true;
+    else if (arg == "--quiet")
+      o.quiet = true;
     else if (arg == "--fe")
       fe = true;
     else if (arg == "--jobs") {
       o.sweep.jobs = static_cast<int>(parse_cli_number(arg, value()));
       if (o.sweep.jobs < 1)
         throw InputError(cli, 0, arg, "must be at least 1");
+    } else if (arg == "--mesh-scale") {
+      o.sweep.mesh_scale = parse_cli_number(arg, value());
+      if (!(o.sweep.mesh_scale > 0))
+        throw InputError(cli, 0, arg, "must be positive");
+    } else if (arg == "--order") {
+      const double order = parse_cli_number(arg, value());
+      if (order != 1 && order != 2)
+        throw InputError(cli, 0, arg, "must be 1 or 2");
+      o.sweep.order = static_cast<int>(order);
     } else if (arg == "--out")
       o.out_dir = value();
     else if (arg.rfind("--", 0) == 0)
@@ -222,8 +233,18 @@ std::vector<StudyDesign> run_study(const StudyOptions& options) {
     grid = std::move(next);
   }
   std::vector<StudyDesign> designs;
-  for (const auto& values : grid)
+  // A line every 2 s at most (an analytic grid of hundreds of designs takes seconds; an FE
+  // design takes minutes and gets its own line).
+  auto last = std::chrono::steady_clock::now();
+  for (const auto& values : grid) {
     designs.push_back(evaluate_study_design(options, values));
+    const auto now = std::chrono::steady_clock::now();
+    if (!options.quiet && (now - last > std::chrono::seconds(2) || designs.size() == grid.size())) {
+      std::fprintf(stderr, "study: design %zu/%zu done (%.1f s)%s\n", designs.size(), grid.size(),
+                   designs.back().seconds, designs.back().ok ? "" : ", failed");
+      last = now;
+    }
+  }
   return designs;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // `magfem study CASE.yaml --param NAME=START:STEP:END [--param ..] --objective Q [..]
-//  [--rotate GROUP --axis A --angles LIST] [--analytic|--fe] [--jobs N] [--out DIR]`:
+//  [--rotate GROUP --axis A --angles LIST] [--analytic|--fe] [--mesh-scale S] [--order 1|2]
+//  [--jobs N] [--out DIR]`: (--mesh-scale and --order are the FE sweep's, as in `solve`)
 // a grid over case-file parameters (casefile/case_parameters.hpp), each design evaluated by a
 // sweep (app/sweep.hpp: analytic by default, the harmonic form where it applies), writing
 // DIR/study.csv (one column per parameter, one per objective), study.png and summary.json.
@@ -36,6 +37,7 @@ struct StudyOptions {
   std::vector<StudyObjective> objectives;
   SweepOptions sweep; // group, axis, angles, analytic, jobs (angles: peak_torque only)
   std::string out_dir;
+  bool quiet = false; // no progress lines on stderr
 };
 
 // Parses the arguments after `study`; throws InputError naming the option.

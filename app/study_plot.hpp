@@ -1,6 +1,8 @@
 #pragma once
-// study.png: each objective against the first parameter, one line per combination of the
-// other parameters (gnuplot, as sweep.png; none if gnuplot is missing).
+// study.png (gnuplot, as sweep.png; none if gnuplot is missing): with two parameters that
+// each take several values, a filled contour map of each objective over the two (a designer
+// reads the ridge of a 2D study off a map, not off a bundle of lines); otherwise each objective
+// against the first parameter, one line per combination of the other parameters.
 #include <filesystem>
 #include <string>
 #include <vector>

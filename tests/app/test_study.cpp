@@ -37,6 +37,14 @@ StudyOptions compensator_study(const std::vector<std::string>& params) {
   return parse_study_options(args);
 }
 
+// Width of a PNG (IHDR, big-endian at byte 16): which of the two plots was drawn.
+unsigned png_width(const std::filesystem::path& png) {
+  std::ifstream in(png, std::ios::binary);
+  unsigned char b[20] = {};
+  in.read(reinterpret_cast<char*>(b), sizeof b);
+  return (b[16] << 24) | (b[17] << 16) | (b[18] << 8) | b[19];
+}
+
 // The charge interaction's converged Table 4.2 peak torque (test_charge_gravity_compensator,
 // equal to the harmonic form to 1e-9: test_axisymmetric_interaction).
 constexpr double table42_torque = 12.3653;
@@ -141,5 +149,19 @@ TEST(Study, CommandWritesTheCsvThePlotAndTheSummary) {
   EXPECT_NE(text.find("\"designs\": 8"), std::string::npos) << text;
   if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
     EXPECT_GT(std::filesystem::file_size(dir / "study.png"), 1000u);
+    // Two parameters with several values each: a contour map per objective (620 px wide
+    // each), not lines (600 px each).
+    EXPECT_EQ(png_width(dir / "study.png"), 2 * 620u);
   }
+}
+
+TEST(Study, OneParameterIsPlottedAsLines) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "no gnuplot";
+  auto options = compensator_study({"R_out=44:4:56"});
+  const auto dir = std::filesystem::temp_directory_path() / "magfem_tests" / "study_lines";
+  std::filesystem::remove_all(dir);
+  options.out_dir = dir.string();
+  ASSERT_EQ(run_study_command(options), 0);
+  EXPECT_EQ(png_width(dir / "study.png"), 2 * 600u);
 }
