@@ -27,7 +27,10 @@ constexpr std::array<CommandHelp, 8> commands{{
      "[--n-max N]",
      "the same probes from the analytic models",
      "  3D magnets in air or with permeable spheres (spherical imaging) and coils\n"
-     "  (Biot-Savart): the charge model, or the spherical-harmonic model.\n"
+     "  (Biot-Savart): the charge model, or the spherical-harmonic model; with coils also\n"
+     "  forces.csv and the coils' force, torque, linkage and inductance (summary.json).\n"
+     "  Axisymmetric cases: coils and axial magnets exactly (loops, current sheets), F_z.\n"
+     "  Iron is refused (exit 2, naming the region).\n"
      "  --model charge|harmonic   (default charge)\n"
      "  --tolerance T             relative cubature tolerance of the charge model\n"
      "  --n-max N                 harmonic degree of the harmonic model\n"},

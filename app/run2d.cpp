@@ -33,16 +33,7 @@ Mesh2D mesh_case(const CaseSpec& spec) {
   try {
     return build_mesh_2d(spec.geometry2d);
   } catch (const MeshError& e) {
-    // Point at the region that caused it when we know it, else at the mesh settings. The
-    // mesher's polygon `vertices` are the case file's `points`.
-    const std::string field = e.field == "vertices" ? "points" : e.field;
-    for (std::size_t i = 0; i < spec.regions.size(); ++i)
-      if (const auto& r = spec.regions[i]; r.name == e.part)
-        throw InputError(spec.file, r.line,
-                         "regions[" + std::to_string(i) + "]" + (field.empty() ? "" : "." + field),
-                         e.reason);
-    throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
-                     e.reason);
+    throw_mesh_error_2d(spec, e);
   }
 }
 
@@ -106,6 +97,19 @@ nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
 }
 
 } // namespace
+
+void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e) {
+  // Point at the region that caused it when we know it, else at the mesh settings. The
+  // mesher's polygon `vertices` are the case file's `points`.
+  const std::string field = e.field == "vertices" ? "points" : e.field;
+  for (std::size_t i = 0; i < spec.regions.size(); ++i)
+    if (const auto& r = spec.regions[i]; r.name == e.part)
+      throw InputError(spec.file, r.line,
+                       "regions[" + std::to_string(i) + "]" + (field.empty() ? "" : "." + field),
+                       e.reason);
+  throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
+                   e.reason);
+}
 
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   const auto t_start = Clock::now();

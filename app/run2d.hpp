@@ -10,6 +10,7 @@
 #include "casefile/case_spec.hpp"
 #include "core/progress.hpp"
 #include "mesh/mesh2d.hpp"
+#include "mesh/mesh_error.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/field2d.hpp"
 #include "postproc/probe_table.hpp"
@@ -51,6 +52,9 @@ struct Run2D {
   std::vector<CoilResult2D> coils; // axisymmetric only
   Timings timings;
 };
+
+// A mesher error (bad part) as the InputError naming the case file's region and field.
+[[noreturn]] void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e);
 
 // Meshes and solves; throws InputError (bad case), SolveError (no convergence).
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/analytic_axi.hpp"
+#include "app/analytic_coils3d.hpp"
 #include "app/build_info.hpp"
 #include "app/coil_run3d.hpp"
 #include "app/resource_usage.hpp"
@@ -80,9 +82,15 @@ BatchField make_magnet_model(const AnalyticRun& run) {
 std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOptions& options) {
   const auto t_start = Clock::now();
   auto run = std::make_unique<AnalyticRun>();
+  run->options = options;
+  if (spec.axisymmetric()) {
+    run->spec = std::move(spec);
+    run_axi_analytic(*run);
+    run->evaluate_s = run->total_s = since(t_start);
+    return run;
+  }
   run->scene = analytic_scene(spec);
   run->spec = std::move(spec);
-  run->options = options;
   auto t0 = Clock::now();
   const BatchField field = make_model(*run);
   run->setup_s = since(t0);
@@ -98,10 +106,47 @@ std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOpti
     }
     run->probes.push_back(tabulate_probe_3d(probe, points, b, run->spec.length_unit));
   }
+  if (!run->spec.geometry3d.coils.empty()) {
+    ChargeModelOptions o;
+    o.tolerance = options.tolerance;
+    analytic_coils_3d(*run, o);
+  }
   run->evaluate_s = since(t0);
+  run->sources = std::to_string(run->scene.magnets.size()) + " magnet(s) by the " + options.model +
+                 " model, " + std::to_string(run->spec.geometry3d.coils.size()) +
+                 " coil(s) by their source field";
   run->total_s = since(t_start);
   return run;
 }
+
+namespace {
+
+nlohmann::ordered_json analytic_coils_json(const AnalyticRun& run) {
+  nlohmann::ordered_json coils = nlohmann::ordered_json::array();
+  const bool axi = run.spec.axisymmetric();
+  for (std::size_t k = 0; k < run.coils.size(); ++k) {
+    const CoilResult& c = run.coils[k];
+    // The FE's keys: axi reports linkage / current as inductance_H, 3D resistance and loss.
+    nlohmann::ordered_json j = {{"name", c.name}, {"turns", c.turns}, {"current_A", c.current_A}};
+    if (!axi) {
+      j["resistance_ohm"] = c.resistance_ohm;
+      j["power_W"] = c.power_W;
+    }
+    const bool known = run.linkage_known[k];
+    j["flux_linkage_Wb"] = known ? nlohmann::ordered_json(c.flux_linkage_Wb) : nullptr;
+    if (axi)
+      j["inductance_H"] = known && c.current_A != 0
+                              ? nlohmann::ordered_json(c.flux_linkage_Wb / c.current_A)
+                              : nullptr;
+    j["force_N"] = {c.force_N.x(), c.force_N.y(), c.force_N.z()};
+    if (!axi)
+      j["torque_Nm"] = {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()};
+    coils.push_back(j);
+  }
+  return coils;
+}
+
+} // namespace
 
 void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
@@ -111,15 +156,25 @@ void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path&
   nlohmann::ordered_json j;
   add_provenance(j);
   j["case"] = run.spec.file;
-  j["dimension"] = 3;
-  j["method"] = "analytic";
-  j["model"] = run.options.model;
-  if (run.options.model == "charge")
-    j["tolerance"] = run.options.tolerance;
+  const bool axi = run.spec.axisymmetric();
+  if (axi)
+    j["dimension"] = "axi";
   else
+    j["dimension"] = 3;
+  j["method"] = "analytic";
+  j["sources"] = run.sources;
+  if (axi)
+    j["model"] = "axisymmetric closed forms";
+  else
+    j["model"] = run.options.model;
+  if (!axi && run.options.model == "charge")
+    j["tolerance"] = run.options.tolerance;
+  else if (!axi)
     j["n_max"] = run.options.n_max;
-  j["magnets"] = run.scene.magnets.size();
-  j["permeable_spheres"] = run.scene.spheres.size();
+  if (!axi) {
+    j["magnets"] = run.scene.magnets.size();
+    j["permeable_spheres"] = run.scene.spheres.size();
+  }
   j["points"] = run.n_points;
   j["converged"] = true;
   j["timings_s"] = {{"setup", run.setup_s}, {"evaluate", run.evaluate_s}, {"total", run.total_s}};
@@ -128,20 +183,69 @@ void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path&
   j["notes"] = run.scene.notes;
   for (const auto& p : run.probes)
     j["probes"].push_back(p.name + ".csv");
+  if (!run.forces.empty()) {
+    if (axi)
+      j["forces_per"] = "body of revolution";
+    j["forces"] = forces_json(run.forces);
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  }
+  if (!run.coils.empty())
+    j["coils"] = analytic_coils_json(run);
+  if (run.inductance_H.size() > 0) {
+    nlohmann::ordered_json names = nlohmann::ordered_json::array(),
+                           l = nlohmann::ordered_json::array();
+    for (Eigen::Index i = 0; i < run.inductance_H.rows(); ++i) {
+      names.push_back(run.coils[static_cast<std::size_t>(i)].name);
+      nlohmann::ordered_json row = nlohmann::ordered_json::array();
+      for (Eigen::Index k = 0; k < run.inductance_H.cols(); ++k)
+        row.push_back(run.inductance_H(i, k));
+      l.push_back(row);
+    }
+    j["inductance_H"] = {{"names", names}, {"matrix", l}};
+  }
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
 
 std::string describe_analytic(const AnalyticRun& run) {
   char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "model    %s, %zu magnets, %zu permeable sphere(s)\n"
-                "points   %zu in %.3f s (%.3f ms per point), setup %.3f s\n",
-                run.options.model.c_str(), run.scene.magnets.size(), run.scene.spheres.size(),
+  std::string s;
+  if (run.spec.axisymmetric())
+    s = "model    axisymmetric closed forms: " + run.sources + "\n";
+  else {
+    std::snprintf(buf, sizeof buf,
+                  "model    %s, %zu magnets, %zu permeable sphere(s), %zu coil(s)\n",
+                  run.options.model.c_str(), run.scene.magnets.size(), run.scene.spheres.size(),
+                  run.spec.geometry3d.coils.size());
+    s = buf;
+  }
+  std::snprintf(buf, sizeof buf, "points   %zu in %.3f s (%.3f ms per point), setup %.3f s\n",
                 run.n_points, run.evaluate_s,
                 run.n_points ? 1e3 * run.evaluate_s / static_cast<double>(run.n_points) : 0.0,
                 run.setup_s);
-  std::string s = buf;
+  s += buf;
+  s += describe_forces(run.forces, false);
+  for (std::size_t k = 0; k < run.coils.size(); ++k) {
+    const CoilResult& c = run.coils[k];
+    std::snprintf(buf, sizeof buf,
+                  "coil     %-12s F (%.5g, %.5g, %.5g) N, T (%.5g, %.5g, %.5g) N m, ",
+                  c.name.c_str(), c.force_N.x(), c.force_N.y(), c.force_N.z(), c.torque_Nm.x(),
+                  c.torque_Nm.y(), c.torque_Nm.z());
+    s += buf;
+    if (run.linkage_known[k]) {
+      std::snprintf(buf, sizeof buf, "linkage %.6g Wb\n", c.flux_linkage_Wb);
+      s += buf;
+    } else
+      s += "linkage not computed\n";
+  }
+  for (Eigen::Index i = 0; i < run.inductance_H.rows() && run.inductance_H.rows() <= 4; ++i) {
+    s += i == 0 ? "L (H)   " : "        ";
+    for (Eigen::Index k = 0; k < run.inductance_H.cols(); ++k) {
+      std::snprintf(buf, sizeof buf, " %12.6g", run.inductance_H(i, k));
+      s += buf;
+    }
+    s += "\n";
+  }
   for (const auto& n : run.scene.notes)
     s += "note     " + n + "\n";
   return s;

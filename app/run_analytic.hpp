@@ -1,13 +1,19 @@
 #pragma once
 // `magfem analytic`: the same case file and probes, answered by the analytic models
-// (charge model with imaging by default, spherical harmonic model on request), written as
-// the same CSVs, so FE and analytic results can be compared point by point.
+// (charge model with imaging by default, spherical harmonic model on request; coils by their
+// source fields, app/analytic_coils3d.hpp; axisymmetric cases by app/analytic_axi.hpp),
+// written as the same CSVs (probes, forces.csv) and summary.json keys (coils, inductance_H),
+// so FE and analytic results can be compared point by point.
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "app/analytic_scene.hpp"
+#include "app/coil_run3d.hpp"
+#include "app/force_results.hpp"
 #include "postproc/probe_table.hpp"
 
 namespace magfem {
@@ -23,6 +29,11 @@ struct AnalyticRun {
   AnalyticScene scene;
   AnalyticOptions options;
   std::vector<ProbeTable> probes;
+  std::vector<ForceResult> forces; // the case's force specs the models can answer
+  std::vector<CoilResult> coils;   // force and torque about the origin; 3D and axi
+  std::vector<bool> linkage_known; // per coil: flux_linkage_Wb was computed
+  Eigen::MatrixXd inductance_H;    // coils in order; empty when not computable
+  std::string sources;             // what modelled what, for the console and summary
   std::size_t n_points = 0;
   double setup_s = 0, evaluate_s = 0, total_s = 0;
 };

@@ -35,8 +35,15 @@ report "C-core, steel_1010, Newton" "$out/ccore"
 
 echo
 echo "== axisymmetric (issue 11 targets: voice coil + magnet at ~100k P2 unknowns <= 1 s; 61-position sweep <= 30 s)"
+start=$(date +%s.%N)
 $magfem solve examples/axi/voice_coil_magnet.yaml --mesh-scale 0.75 --out "$out/vc100k" > /dev/null
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    voice coil + magnet solve, end to end (process wall, outputs written): %.2f s\n", b - a }'
 report "voice coil + magnet, P2, mesh-scale 0.75" "$out/vc100k"
+start=$(date +%s.%N)
+$magfem analytic examples/axi/voice_coil_magnet.yaml --out "$out/vc_exact" > /dev/null
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    the same case by magfem analytic (exact), end to end: %.2f s\n", b - a }'
+paste -d, "$out/vc_exact/forces.csv" "$out/vc100k/forces.csv" | awk -F, 'NR > 1 {
+  printf "    %-14s F_z analytic %.7g N, FE %.7g N (%+.1e)\n", $1, $5, $13, ($13 - $5) / $5 }'
 $magfem solve examples/axi/pot_core.yaml --out "$out/pot" > /dev/null
 report "pot core, steel_1010, Newton" "$out/pot"
 start=$(date +%s.%N)

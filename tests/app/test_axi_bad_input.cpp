@@ -2,11 +2,15 @@
 // field; through the CLI, exit code 2 and no outputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
 #include "case_helpers.hpp"
+#include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "validation/coil_closed_forms.hpp"
 
 using namespace magfem;
 
@@ -111,4 +115,38 @@ TEST(AxiBadInput, CliExitsWithCode2AndWritesNothing) {
   EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
   EXPECT_FALSE(std::filesystem::exists(out / "axis.csv"));
+}
+
+// Issue 11 lists "a coil on the axis with zero inner radius where that is singular". It is not
+// singular here: a uniform J_phi on a region touching the axis is a bounded current density
+// whose field is finite and smooth (the on-axis closed form has no singularity at r_i = 0), and
+// the weak form's r weighting integrates it like any other load. So the case is accepted, and
+// its on-axis field must equal the closed form. The FE's error there is that of the P2 field
+// near the kinks of B_z at the coil's end faces (dB_z/dz jumps where the current ends): 0.78 %
+// of the peak measured at these sizes (40 points, none on an end face), no larger than for a
+// ring r 2..4 mm on the same mesh (its pointwise rms 0.41 % vs 0.8 % here); tolerance 2.5 %.
+// Dropping the load of the elements on the axis (r < 0.5 mm: the innermost loops, which
+// give the most field per ampere on the axis) would move B there by several %.
+TEST(AxiBadInput, CoilTouchingTheAxisIsAcceptedAndExact) {
+  const auto path = test::write_temp_case("axi_coil_on_axis.yaml", R"(dimension: axi
+unit: mm
+regions:
+  - {name: coil, shape: rectangle, center: [2, 0], width: 4, height: 6, turns: 100, current: 1,
+     mesh_size: 0.5}
+boundary: {type: open, radius: 20}
+mesh: {size: 1.5}
+probes:
+  - {name: axis, type: line, start: [0, -10], end: [0, 10], points: 40}
+)");
+  const auto run = run_case_2d(read_case(path));
+  const auto& t = test::probe(*run, "axis");
+  const CoaxialCoil coil{0, 4e-3, -3e-3, 3e-3, 100};
+  double err = 0, peak = 0;
+  for (const auto& row : t.rows) {
+    const double exact = mu0 * coaxial_coil_axial_H(coil, 1.0, row[t.column("z")] * 1e-3);
+    err = std::max(err, std::abs(row[t.column("Bz")] - exact));
+    peak = std::max(peak, std::abs(exact));
+  }
+  std::printf("coil touching the axis: max |Bz - exact| / peak = %.2e\n", err / peak);
+  EXPECT_LT(err, 2.5e-2 * peak);
 }

@@ -6,13 +6,17 @@
 //   - action = reaction between a magnet (stress tensor) and a coil (Lorentz force);
 //   - bad coil input: exit-2 errors naming file, line and field.
 // The coil-over-plate tests take minutes (CG on the mu_r 1000 plate mesh), so they are
-// DISABLED_ in the default suite; run them with --gtest_also_run_disabled_tests. The
-// magnet/coil balance runs on a coarsened mesh.
+// DISABLED_ in the default suite; run them with --gtest_also_run_disabled_tests. Coarsening
+// does not bring them near the suite's ~20 s: at mesh scale 2 the solve had not finished after
+// 25 min of wall time (4.8 min of CPU, load 8-14 on 2 cores), so they stay disabled. The
+// inductance check runs in the default suite on a solenoid in air instead
+// (ThickSolenoidInductanceEqualsMaxwellsFormula); the magnet/coil balance on a coarsened mesh.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "app/run3d.hpp"
+#include "app/run_analytic.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
@@ -70,6 +74,43 @@ TEST(Coils3D, DISABLED_EnergyFluxLinkageAndInductanceAgree) {
   EXPECT_NEAR(c.flux_linkage_Wb, l * i, 5e-3 * std::abs(c.flux_linkage_Wb));
 }
 
+// A thick solenoid in air (r 10..15 mm, length 30 mm, 500 turns, 2 A): its inductance from the
+// sensitivity solve against Maxwell's formula integrated over the cross-section
+// (validation/coil_closed_forms.hpp, converged to 1e-13). In air the reduced potential is zero
+// and the field is the source field, so the FE inductance measures the energy and linkage
+// quadratures of H_s over the mesh and the shell (and the source field's own 1e-4 tolerance
+// near the bundle), not a discretisation of phi. Measured against the exact 3.148399 mH:
+// -7.1e-6 at 42k P2 unknowns (this mesh, ~6 s of CPU), +8.5e-5 at 118k, -2.7e-5 at 301k: no
+// trend, the quadrature level. Tolerance 5e-4. A factor 2 in the energy, a wrong turns count
+// or current per turn would be off by 100 % or more.
+TEST(Coils3D, ThickSolenoidInductanceEqualsMaxwellsFormula) {
+  const auto path = test::write_temp_case("coils3d_solenoid_in_air.yaml", R"(dimension: 3
+unit: mm
+regions:
+  - {name: bore, shape: cylinder, r_outer: 5, height: 10, material: air,
+     placement: {translate: [0, 0, -5]}}
+coils:
+  - {name: coil, shape: solenoid, r_inner: 10, r_outer: 15, length: 30, center: [0, 0, 0],
+     axis: [0, 0, 1], turns: 500, current: 2}
+boundary: {type: open, radius: 40}
+mesh: {size: 12, chord_tolerance: 1}
+solver: {order: 2}
+output: {vtu: false}
+)");
+  const auto run = run_case_3d(read_case(path));
+  ASSERT_EQ(run->coil_results.coils.size(), 1u);
+  const double l = run->coil_results.inductance_H(0, 0);
+  const double exact = coaxial_coil_self_inductance({10e-3, 15e-3, -15e-3, 15e-3, 500});
+  const auto& c = run->coil_results.coils[0];
+  std::printf("solenoid in air: L FE %.7g H, Maxwell %.7g H (%+.1e), %ld unknowns\n", l, exact,
+              (l - exact) / exact, static_cast<long>(run->dofs->n_dofs()));
+  EXPECT_NEAR(l, exact, 5e-4 * exact);
+  // Energy, reciprocity linkage and sensitivity inductance: in air all three integrate the
+  // same source field (measured equal to 1e-15); 1e-9 leaves room for summation order only.
+  EXPECT_NEAR(run->energy.total_J, 0.5 * l * c.current_A * c.current_A, 1e-9 * run->energy.total_J);
+  EXPECT_NEAR(c.flux_linkage_Wb, l * c.current_A, 1e-9 * c.flux_linkage_Wb);
+}
+
 // Action = reaction: the Lorentz force on the coil from the magnet's field equals minus the
 // stress-tensor force on the magnet (a sphere around it, in air). At mesh scale 2.5 (150k
 // P2 unknowns, ~20 s) the stress tensor's two spheres differ by 0.46 % and the two methods
@@ -87,6 +128,37 @@ TEST(Coils3D, MagnetAndCoilForcesBalance) {
   EXPECT_NEAR(coil.force.z(), -magnet.force.z(), 0.01 * std::abs(coil.force.z()));
   // The coil's summary entry is the same Lorentz force (about the origin).
   EXPECT_NEAR(run->coil_results.coils[0].force_N.z(), coil.force.z(), 1e-9);
+  // `magfem analytic` on the same case file (charge model + source field; exact to 1e-5,
+  // AnalyticCoils.Coil3DForceEqualsTheMutualInductanceGradient).
+  const auto an = run_case_analytic(read_case(test::example("3d/coil_and_magnet.yaml")), {});
+  const double exact = an->coils[0].force_N.z();
+  const auto& fe_axis = run->probes[0];
+  const auto& an_axis = an->probes[0];
+  double err = 0, peak = 0;
+  for (std::size_t k = 0; k < an_axis.rows.size(); ++k) {
+    const double z = an_axis.rows[k][an_axis.column("z")];
+    if (std::abs(std::abs(z) - 5) < 1e-9)
+      continue; // on the magnet's end faces the charge model's B is ambiguous (H + M)
+    const auto b = [&](const ProbeTable& t) {
+      return Eigen::Vector3d(t.rows[k][t.column("Bx")], t.rows[k][t.column("By")],
+                             t.rows[k][t.column("Bz")]);
+    };
+    err = std::max(err, (b(fe_axis) - b(an_axis)).norm());
+    peak = std::max(peak, b(an_axis).norm());
+  }
+  std::printf("analytic: coil F_z %.6g N (FE Lorentz %+.2f %%, FE stress %+.2f %%), axis B max "
+              "difference %.2e of the peak, linkage %.6g Wb (FE %.6g Wb)\n",
+              exact, 100 * (coil.force.z() - exact) / exact,
+              100 * (-magnet.force.z() - exact) / exact, err / peak, an->coils[0].flux_linkage_Wb,
+              run->coil_results.coils[0].flux_linkage_Wb);
+  // Measured at this mesh: FE Lorentz -0.23 %, FE stress -0.52 % (its two spheres differ by
+  // 0.46 %), axis field 4.3e-3 of the peak (P2 at 6-15 mm elements), linkage -1.2e-3. Tolerances:
+  // the 1 % above for the forces, about 3 times the measured value for the field and linkage.
+  EXPECT_NEAR(coil.force.z(), exact, 0.01 * std::abs(exact));
+  EXPECT_NEAR(magnet.force.z(), -exact, 0.01 * std::abs(exact));
+  EXPECT_LT(err, 1.5e-2 * peak);
+  EXPECT_NEAR(run->coil_results.coils[0].flux_linkage_Wb, an->coils[0].flux_linkage_Wb,
+              4e-3 * an->coils[0].flux_linkage_Wb);
 }
 
 namespace {
