@@ -7,49 +7,30 @@
 
 #include <Eigen/Dense>
 
+#include "box_problem3d.hpp"
 #include "core/input_error.hpp"
 #include "solver/assembler3d.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/p1_coarse_space.hpp"
-#include "structured_mesh3d.hpp"
 
 namespace magfem {
 namespace {
 
 constexpr double mm = 1e-3;
 
-// A magnet in the lower half of a 10 mm box, iron (mu_r 50) in the upper half.
-struct Box {
-  Mesh3D mesh;
-  Material air = Material::make_linear("air", 1.0, "test");
-  Material iron = Material::make_linear("iron", 50.0, "test");
-  Material magnet = Material::make_magnet("magnet", 1.2, 1.05, "test");
-  Problem3D problem;
+using Box = test::BoxProblem3D;
 
-  Box(int n, int order, OuterKind3D boundary) {
-    mesh = test::structured_box({0, 0, 0}, {10 * mm, 10 * mm, 10 * mm}, n);
-    for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-      Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k)
-        c += 0.25 * mesh.nodes[mesh.tets[t][k]];
-      mesh.tet_part[t] = c.z() < 5 * mm ? 0 : 1;
-    }
-    problem.mesh = &mesh;
-    problem.order = order;
-    problem.boundary = boundary;
-    problem.air.material = &air;
-    Magnetization m;
-    m.pattern = Magnetization::Pattern::parallel;
-    m.direction = Eigen::Vector3d(1, 2, 3).normalized();
-    problem.parts = {{&magnet, m}, {&iron, {}}};
-  }
-};
-
-Eigen::SparseMatrix<double> full_tangent(const Assembler3D& assembler) {
+// The residual at u = 0 (minus the load) and the tangent's lower triangle.
+std::pair<Eigen::VectorXd, Eigen::SparseMatrix<double>>
+residual_and_tangent_at_zero(const Assembler3D& assembler) {
   Eigen::VectorXd r;
   Eigen::SparseMatrix<double> lower;
   assembler.evaluate(Eigen::VectorXd::Zero(assembler.n_unknowns()), r, &lower, TangentKind::newton);
-  return lower.selfadjointView<Eigen::Lower>();
+  return {r, lower};
+}
+
+Eigen::SparseMatrix<double> full_tangent(const Assembler3D& assembler) {
+  return residual_and_tangent_at_zero(assembler).second.selfadjointView<Eigen::Lower>();
 }
 
 // Dirichlet (phi = 0 on the box's faces: every boundary vertex and midpoint constrained) and
@@ -105,9 +86,7 @@ TEST(P1CoarseSpace, PmgSolvesToTheDirectSolution) {
   const Box box(6, 2, OuterKind3D::dirichlet);
   const DofMap3D dofs(box.mesh, 2);
   const Assembler3D a(box.problem, dofs);
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> lower;
-  a.evaluate(Eigen::VectorXd::Zero(a.n_unknowns()), r, &lower, TangentKind::newton);
+  const auto [r, lower] = residual_and_tangent_at_zero(a);
   LinearSolverOptions o;
   o.kind = LinearSolverKind::cg;
   o.preconditioner = PreconditionerKind::pmg;
@@ -133,9 +112,7 @@ TEST(P1CoarseSpace, PmgWithoutACoarseSpaceIsBoomerAmgWithANote) {
   const DofMap3D dofs(box.mesh, 1);
   const Assembler3D a(box.problem, dofs);
   EXPECT_EQ(p1_prolongation(dofs, a.dof_to_equation()).size(), 0);
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> lower;
-  a.evaluate(Eigen::VectorXd::Zero(a.n_unknowns()), r, &lower, TangentKind::newton);
+  const auto [r, lower] = residual_and_tangent_at_zero(a);
   LinearSolverOptions o;
   o.kind = LinearSolverKind::cg;
   o.preconditioner = PreconditionerKind::pmg;
