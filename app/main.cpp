@@ -117,11 +117,7 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
-int run_solve_3d(const Args& args, magfem::CaseSpec spec) {
-  magfem::Progress progress;
-  magfem::RunOverrides overrides = args.overrides;
-  if (!args.quiet)
-    overrides.progress = &progress;
+int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
   auto run = magfem::run_case_3d(std::move(spec), overrides);
   std::cout << magfem::describe_run_3d(*run);
   magfem::write_outputs_3d(*run, args.out_dir);
@@ -136,9 +132,13 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec) {
 
 int run_solve(const Args& args) {
   auto spec = magfem::read_case(args.case_file);
+  magfem::Progress progress;
+  magfem::RunOverrides overrides = args.overrides;
+  if (!args.quiet)
+    overrides.progress = &progress;
   if (spec.dimension == 3)
-    return run_solve_3d(args, std::move(spec));
-  auto run = magfem::run_case_2d(std::move(spec), args.overrides);
+    return run_solve_3d(args, std::move(spec), overrides);
+  auto run = magfem::run_case_2d(std::move(spec), overrides);
   std::cout << magfem::describe_run_2d(*run);
   magfem::write_outputs_2d(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";

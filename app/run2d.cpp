@@ -121,13 +121,21 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   if (ov.domain_radius > 0)
     spec.geometry2d.outer.radius = ov.domain_radius;
   run->spec = std::move(spec);
+  run->spec.newton.linear.progress = ov.progress;
+  auto stage = [&](const std::string& what) {
+    if (ov.progress)
+      ov.progress->stage(what);
+  };
 
   auto t0 = Clock::now();
+  stage("meshing");
   run->mesh = mesh_case(run->spec);
   run->timings.mesh = since(t0);
 
   run->problem = build_problem(run->spec, run->mesh);
   t0 = Clock::now();
+  stage("assembly: " + std::to_string(run->mesh.n_triangles()) + " triangles, order " +
+        std::to_string(run->spec.order));
   run->dofs = std::make_unique<DofMap2D>(run->mesh, run->spec.order);
   Assembler2D assembler(run->problem, *run->dofs);
   const double setup = since(t0);
@@ -140,6 +148,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
     throw SolveError("the solver did not converge: " + run->report.message);
 
   t0 = Clock::now();
+  stage("post-processing");
   run->field = std::make_unique<Field2D>(run->problem, *run->dofs, assembler.expand(u));
   std::vector<std::string> names;
   for (const auto& r : run->spec.regions)

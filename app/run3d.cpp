@@ -19,6 +19,7 @@
 #include "postproc/probes3d.hpp"
 #include "postproc/vtu_export3d.hpp"
 #include "solver/assembler3d.hpp"
+#include "solver/p1_coarse_space.hpp"
 
 namespace magfem {
 namespace {
@@ -111,6 +112,12 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   }
   Assembler3D assembler(run->problem, *run->dofs);
   run->threads = assembler.threads();
+  // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
+  // preconditioner (O(unknowns) to build, unused by the other solvers).
+  if (run->spec.order == 2)
+    run->spec.newton.linear.coarse_prolongation =
+        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+            p1_prolongation(*run->dofs, assembler.dof_to_equation()));
   const double setup = since(t0);
 
   Eigen::VectorXd u;

@@ -80,14 +80,20 @@ void read_linear_solver(const YamlNode& n, LinearSolverOptions& o) {
     o.preconditioner = PreconditionerKind::boomeramg;
   else if (pre == "gamg")
     o.preconditioner = PreconditionerKind::gamg;
+  else if (pre == "pmg")
+    o.preconditioner = PreconditionerKind::pmg;
   else
-    n.at("preconditioner").fail("preconditioner must be auto, ichol, amg, boomeramg or gamg");
+    n.at("preconditioner").fail("preconditioner must be auto, ichol, pmg, amg, boomeramg or gamg");
   o.petsc_options = n.get_string("petsc_options", "");
   if (o.kind == LinearSolverKind::cholmod && (pre != "auto" || !o.petsc_options.empty()))
     n.at(pre != "auto" ? "preconditioner" : "petsc_options")
         .fail("a preconditioner and PETSc options are for linear_solver: cg, not cholmod");
   if (pre == "ichol" && !o.petsc_options.empty())
-    n.at("petsc_options").fail("petsc_options need an AMG preconditioner (auto, amg or gamg)");
+    n.at("petsc_options")
+        .fail("petsc_options need a PETSc preconditioner (auto, pmg, amg or gamg)");
+  if (!o.petsc_options.empty())
+    if (const std::string why = petsc_options_problem(o); !why.empty())
+      n.at("petsc_options").fail(why);
   if (n.has("linear_tolerance")) {
     o.cg_tolerance = n.at("linear_tolerance").as_positive();
     if (o.cg_tolerance >= 1)

@@ -27,6 +27,13 @@ public:
 
   int order() const { return order_; }
   int n_dofs() const { return n_dofs_; }
+  int n_vertices() const { return n_vertices_; } // DOFs 0 .. n_vertices - 1
+  // Order 2: the mesh vertices at the ends of the edge whose midpoint node is DOF `dof`
+  // (n_vertices <= dof < n_dofs).
+  std::array<int, 2> edge_ends(int dof) const {
+    const long long key = edge_keys_[static_cast<std::size_t>(dof - n_vertices_)];
+    return {static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffLL)};
+  }
   int dofs_per_element() const { return order_ == 1 ? 4 : 10; }
   // Global DOFs of tet t in local order (see tet_lagrange.hpp).
   const int* element_dofs(std::size_t t) const { return &element_dofs_[t * dofs_per_element()]; }

@@ -118,6 +118,16 @@ std::string describe(const KrylovOutcome& o, const std::string& method, double t
 
 } // namespace
 
+std::string petsc_options_problem(const LinearSolverOptions& options) {
+  PetscSolverOptions petsc;
+  petsc.petsc_options = options.petsc_options;
+  if (options.preconditioner == PreconditionerKind::gamg)
+    petsc.preconditioner = "gamg";
+  else if (options.preconditioner == PreconditionerKind::pmg)
+    petsc.preconditioner = "pmg";
+  return petsc_options_problem(petsc);
+}
+
 struct LinearSolver::Impl {
   bool use_direct = true;
   bool analyzed = false;
@@ -164,6 +174,16 @@ void LinearSolver::choose(const Eigen::SparseMatrix<double>& lower) {
     impl_->use_amg = true;
     impl_->amg_name = pre == PreconditionerKind::gamg ? "gamg" : "boomeramg";
     break;
+  case PreconditionerKind::pmg:
+    impl_->use_amg = true;
+    impl_->amg_name = options_.coarse_prolongation ? "pmg" : "boomeramg";
+    if (!options_.coarse_prolongation) {
+      notes_.push_back("p-multigrid needs P2 tetrahedra (no coarser order here): BoomerAMG "
+                       "on the system instead");
+      if (options_.progress)
+        options_.progress->note(notes_.back());
+    }
+    break;
   }
 }
 
@@ -183,9 +203,9 @@ void LinearSolver::set_up_krylov(const Eigen::SparseMatrix<double>& lower) {
                                std::to_string(lower.rows()) + " unknowns");
     try {
       if (!impl_->amg)
-        impl_->amg = std::make_unique<PetscSolver>(
-            PetscSolverOptions{impl_->amg_name, options_.petsc_options, options_.cg_tolerance,
-                               options_.cg_max_iterations, options_.progress});
+        impl_->amg = std::make_unique<PetscSolver>(PetscSolverOptions{
+            impl_->amg_name, options_.petsc_options, options_.cg_tolerance,
+            options_.cg_max_iterations, options_.progress, options_.coarse_prolongation.get()});
       impl_->amg->setup(lower);
       return;
     } catch (const SolveError& e) {

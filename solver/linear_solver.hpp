@@ -20,7 +20,7 @@ namespace magfem {
 class Progress;
 
 enum class LinearSolverKind { automatic, cholmod, cg };
-enum class PreconditionerKind { automatic, ichol, boomeramg, gamg };
+enum class PreconditionerKind { automatic, ichol, boomeramg, gamg, pmg };
 
 struct LinearSolverOptions {
   LinearSolverKind kind = LinearSolverKind::automatic;
@@ -44,9 +44,17 @@ struct LinearSolverOptions {
   // 1e-12: IC 403 iterations / 33 s; BoomerAMG HMIS ext+i 127 / 54 s; PETSc GAMG 212 / 65 s,
   // 2 shared cores), and its iterations grew under refinement (78 -> 115 from 248k to 308k).
   int amg_min_unknowns = std::numeric_limits<int>::max();
-  std::string petsc_options;    // e.g. "-pc_type gamg", passed through to PETSc
+  std::string petsc_options; // e.g. "-pc_type gamg", passed through to PETSc
+  // pmg (two-level p-multigrid): interpolation from the coarse space to the unknowns (for P2
+  // tetrahedra the P1 functions on the same mesh, solver/p1_coarse_space.hpp). Without one
+  // (P1, 2D) there is no coarser order and pmg is BoomerAMG on the system itself.
+  std::shared_ptr<const Eigen::SparseMatrix<double, Eigen::RowMajor>> coarse_prolongation;
   Progress* progress = nullptr; // not owned; null = silent
 };
+
+// Why PETSc would refuse options.petsc_options for options.preconditioner, "" if it accepts
+// them (petsc_solver.hpp). For the case reader.
+std::string petsc_options_problem(const LinearSolverOptions& options);
 
 class LinearSolver {
 public:
@@ -61,7 +69,7 @@ public:
   void factorize(const Eigen::SparseMatrix<double>& lower);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
   std::string name() const;           // cholmod | cg
-  std::string preconditioner() const; // none (direct) | ichol | boomeramg | gamg | ...
+  std::string preconditioner() const; // none (direct) | ichol | boomeramg | gamg | pmg | ...
   int last_iterations() const { return last_iterations_; }
   // Seconds spent so far in factorize() (factorization, preconditioner set-up) and solve().
   double setup_seconds() const { return setup_s_; }

@@ -1,8 +1,10 @@
 #pragma once
-// Conjugate gradients preconditioned by algebraic multigrid (hypre BoomerAMG or PETSc GAMG)
-// through PETSc. This header keeps PETSc out of every other translation unit: its types live
-// behind Impl in petsc_solver.cpp, the only file that includes PETSc. PETSc (and MPI) start on
-// the first use in a process and stop at its exit.
+// Conjugate gradients preconditioned by algebraic multigrid (hypre BoomerAMG or PETSc GAMG),
+// or by two-level p-multigrid (pmg: a symmetric Gauss-Seidel smoother on the system, BoomerAMG on
+// the Galerkin coarse operator P^T A P of a given coarse space), through PETSc. This header keeps
+// PETSc out of every other translation unit: its types live behind Impl in petsc_solver.cpp, the
+// only file that includes PETSc. PETSc (and MPI) start on the first use in a process and stop at
+// its exit.
 #include <memory>
 #include <string>
 
@@ -13,11 +15,14 @@ namespace magfem {
 class Progress;
 
 struct PetscSolverOptions {
-  std::string preconditioner = "boomeramg"; // boomeramg | gamg
+  std::string preconditioner = "boomeramg"; // boomeramg | gamg | pmg
   std::string petsc_options;                // passed to PETSc last: wins over ours
   double relative_tolerance = 1e-12;        // |b - A x| / |b| (unpreconditioned)
   int max_iterations = 20000;
   Progress* progress = nullptr; // not owned; null = silent
+  // pmg: interpolation from the coarse space (rows: the system's unknowns, columns: coarse
+  // unknowns). Copied by setup(); required for pmg.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>* prolongation = nullptr;
 };
 
 // How a Krylov solve ended. `converged` only when it stopped on the tolerance.
@@ -47,5 +52,11 @@ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Why PETSc would refuse `options.petsc_options` (their form: -name [value] pairs; a value or
+// a type name it does not know), or "" if it accepts them. Sets the preconditioner up with
+// them on a small system to find out (pmg: with a coarse space of its own). Lets the case
+// reader call a bad option an input error rather than a solver failure.
+std::string petsc_options_problem(const PetscSolverOptions& options);
 
 } // namespace magfem

@@ -110,6 +110,30 @@ TEST(BadInput, MeshThatCannotBeBuilt) {
                      true);
 }
 
+// petsc_options that PETSc would ignore ("pc_type gamg" lacks its '-') or refuse (an unknown
+// preconditioner type, a number that is none) are input errors at solver.petsc_options (line
+// 12), before meshing; they used to surface in the solve as a solver failure (exit 3). The
+// CLI exits 2 for them and writes nothing.
+TEST(BadInput, MalformedPetscOptions) {
+  for (const std::string options : {"pc_type gamg", "-pc_type nonsense", "-ksp_rtol abc"}) {
+    const auto text =
+        replace(good, "probes:", "solver: {order: 2, petsc_options: \"" + options + "\"}\nprobes:");
+    expect_input_error("petsc_options", text, {12, "solver.petsc_options"});
+  }
+  const auto path = test::write_temp_case(
+      "cli_bad_petsc.yaml",
+      replace(good,
+              "probes:", "solver: {order: 2, petsc_options: \"-pc_type nonsense\"}\nprobes:"));
+  const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "cli_bad_petsc_out";
+  std::filesystem::remove_all(out);
+  const int status = std::system(
+      (std::string(MAGFEM_BINARY) + " solve " + path + " --out " + out.string() + " 2>/dev/null")
+          .c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(BadInput, CliExitsWithCode2AndWritesNothing) {
   const auto path =
       test::write_temp_case("cli_bad.yaml", replace(good, "radius: 10", "radius: -3"));

@@ -251,6 +251,33 @@ TEST(Cli, SolveReportsTheKrylovSolverAndItsProgress) {
   EXPECT_EQ(quiet.out.find("preconditioner set-up"), std::string::npos) << quiet.out;
 }
 
+// A 2D solve shows its stages on stderr like a 3D one (it printed nothing before the
+// results), and --quiet silences them. A small magnet disk so that the run takes a second.
+TEST(Cli, TwoDimensionalSolveShowsItsStagesUnlessQuiet) {
+  const auto c = magfem::test::write_temp_case("cli_progress2d.yaml", R"(unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
+regions:
+  - {name: magnet, shape: disk, radius: 10, material: pm, magnetization: {type: parallel, angle: 0}}
+boundary: {type: open, radius: 25}
+mesh: {size: 3}
+output: {vtu: false}
+probes:
+  - {name: r12, type: circle, radius: 12, points: 36}
+)");
+  const auto out = fresh_dir("progress2d");
+  const auto r = run("solve " + c + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* stage : {"meshing", "assembly: ", " triangles, order 2",
+                            "factorization: CHOLMOD", "post-processing"})
+    EXPECT_NE(r.out.find(stage), std::string::npos) << stage << "\n" << r.out;
+  fs::remove_all(out);
+  const auto quiet = run("solve " + c + " --quiet --out " + out.string());
+  ASSERT_EQ(quiet.status, 0) << quiet.out;
+  for (const char* stage : {"meshing", "assembly: ", "factorization", "post-processing"})
+    EXPECT_EQ(quiet.out.find(stage), std::string::npos) << stage << "\n" << quiet.out;
+}
+
 // The analytic models have no nonlinear iron: refused with exit 2, the region named.
 TEST(Cli, AnalyticRefusesNonlinearIronNamingTheRegion) {
   const auto out = fresh_dir("analytic_refusal");

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "box_problem3d.hpp"
 #include "core/constants.hpp"
 #include "solver/assembler3d.hpp"
 #include "solver/linear_solver.hpp"
@@ -59,32 +60,7 @@ TEST(TetLagrange, PartitionOfUnityAndNodality) {
   }
 }
 
-struct Fixture {
-  Mesh3D mesh;
-  Material air = Material::make_linear("air", 1.0, "test");
-  Material iron = Material::make_linear("iron", 50.0, "test");
-  Material magnet = Material::make_magnet("magnet", 1.2, 1.05, "test");
-  Problem3D problem;
-
-  Fixture(int n, int order, OuterKind3D boundary) {
-    mesh = test::structured_box({0, 0, 0}, {10 * mm, 10 * mm, 10 * mm}, n);
-    // Region 0 (magnet) in the lower half, region 1 (iron) in the upper half.
-    for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-      Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k)
-        c += 0.25 * mesh.nodes[mesh.tets[t][k]];
-      mesh.tet_part[t] = c.z() < 5 * mm ? 0 : 1;
-    }
-    problem.mesh = &mesh;
-    problem.order = order;
-    problem.boundary = boundary;
-    problem.air.material = &air;
-    Magnetization m;
-    m.pattern = Magnetization::Pattern::parallel;
-    m.direction = Eigen::Vector3d(1, 2, 3).normalized();
-    problem.parts = {{&magnet, m}, {&iron, {}}};
-  }
-};
+using Fixture = test::BoxProblem3D;
 
 TEST(Assembler3D, ElementMatrixSymmetricWithConstantsInNullSpace) {
   for (int order : {1, 2}) {
