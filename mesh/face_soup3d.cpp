@@ -133,8 +133,8 @@ void FaceSoup3D::check_parts(const Geometry3D& geo) const {
   }
 }
 
-double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction,
-                                    double min_distance, int* hit_face) const {
+double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance,
+                                    int* hit_face) const {
   const K::Ray_3 ray(cgal(origin), K::Vector_3(direction.x(), direction.y(), direction.z()));
   const auto& tris = tree_->triangles;
   const double tol = 1e-9 * dec_.frames[0].breaks[0].back();

@@ -30,7 +30,6 @@ struct MeshEstimate3D {
 
 // size(x): the local size h(x) in metres (the mesher's size field, region caps included).
 // ball_radius: the meshed ball (the open boundary's shell included).
-MeshEstimate3D estimate_mesh_3d(const std::function<double(const Vec3&)>& size,
-                                double ball_radius);
+MeshEstimate3D estimate_mesh_3d(const std::function<double(const Vec3&)>& size, double ball_radius);
 
 } // namespace magfem

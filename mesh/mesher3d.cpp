@@ -155,8 +155,8 @@ void check_not_coincident(const Geometry3D& geo, const GridDecomposition3D& dec,
   const int them = is_air(other.label_low) ? other.label_high : other.label_low;
   char gap[160];
   std::snprintf(gap, sizeof gap, "%.3g m (the mesh size there is %.3g m)", w, h);
-  const std::string whom =
-      them >= 0 ? "a face of part '" + geo.parts[them].name + "'" : std::string("the domain boundary");
+  const std::string whom = them >= 0 ? "a face of part '" + geo.parts[them].name + "'"
+                                     : std::string("the domain boundary");
   throw MeshError(geo.parts[self].name, "",
                   "a face lies " + std::string(gap) + " from " + whom +
                       ": nearly coincident faces cannot be meshed; make them touch or move them "

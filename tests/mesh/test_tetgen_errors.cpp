@@ -63,11 +63,10 @@ TEST(TetGenErrors, ASelfIntersectingSurfaceThrowsCode3) {
 }
 
 TEST(TetGenErrors, AFailedAssertionInsideTetGenThrows) {
-  const std::vector<double> points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.2, 0.2, -0.5, 0.2, 0.2, 0.5,
-                                      0.9, 0.9, 0};
+  const std::vector<double> points = {0,   0,   0,    1,   0,   0,   0,   1,   0,
+                                      0.2, 0.2, -0.5, 0.2, 0.2, 0.5, 0.9, 0.9, 0};
   for (int round = 0; round < 3; ++round)
-    EXPECT_THROW(tetrahedralize_triangles(points, {{0, 1, 2}, {3, 4, 5}}),
-                 magfem::TetGenAssertion);
+    EXPECT_THROW(tetrahedralize_triangles(points, {{0, 1, 2}, {3, 4, 5}}), magfem::TetGenAssertion);
 }
 
 } // namespace
