@@ -109,7 +109,7 @@ void check_cuts(const CaseSpec& spec, const std::vector<Point>& nodes,
           above = above || d > s.tol;
         }
         if (s.volume ? below : below && above)
-          throw InputError(spec.file, f.line, "forces[" + std::to_string(i) + "]",
+          throw InputError(spec.file, f.line, "forces." + f.name,
                            "force '" + f.name + "': its " + s.description + " cuts " +
                                field_source_kind(spec.regions[part]) + " region '" +
                                spec.regions[part].name +

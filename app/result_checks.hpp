@@ -44,9 +44,9 @@ std::vector<std::string> bh_extrapolation_warnings(const std::vector<RegionSpec>
   return bh_extrapolation_warnings(regions, peaks);
 }
 
-// Throws InputError (the force's line, field forces[i]) when a stress-tensor surface cuts a
-// magnet or permeable part: an element of the part with vertices on both sides of the
-// surface, or inside a band.
+// Throws InputError (the force's line, field forces.NAME, as the stress integration names it) when
+// a stress-tensor surface cuts a magnet or permeable part: an element of the part with vertices on
+// both sides of the surface, or inside a band.
 void check_stress_surfaces_2d(const CaseSpec& spec, const Mesh2D& mesh);
 void check_stress_surfaces_3d(const CaseSpec& spec, const Mesh3D& mesh);
 

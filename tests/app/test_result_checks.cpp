@@ -95,7 +95,7 @@ void expect_cut(const std::function<void()>& run, const std::string& force,
     const std::string what = e.what();
     EXPECT_NE(what.find("force '" + force + "'"), std::string::npos) << what;
     EXPECT_NE(what.find(region), std::string::npos) << what;
-    EXPECT_EQ(e.field(), "forces[0]") << what;
+    EXPECT_EQ(e.field(), "forces." + force) << what;
   }
 }
 
