@@ -14,13 +14,18 @@ struct CommandHelp {
 };
 
 constexpr std::array<CommandHelp, 8> commands{{
-    {"solve", "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--quiet]",
+    {"solve",
+     "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--max-memory GB]\n"
+     "                    [--quiet]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
      "  mesh and solver figures, magfem_version and commit), one CSV per probe, forces.csv\n"
      "  and solution.vtu for ParaView.\n"
      "  --order 1|2       element order (overrides the case's mesh.order)\n"
      "  --mesh-scale S    multiply every mesh size by S (S > 1 is coarser)\n"
+     "  --max-memory GB   3D: refuse (exit 2) a mesh whose estimated peak memory exceeds GB\n"
+     "                    (default: the memory available now) and say which --mesh-scale\n"
+     "                    would fit; the estimate is made before meshing\n"
      "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
@@ -40,9 +45,10 @@ constexpr std::array<CommandHelp, 8> commands{{
     {"sweep",
      "magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
      "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
-     "                    [--surface-radius R] [--jobs N] [--out DIR]\n"
+     "                    [--surface-radius R] [--jobs N] [--max-memory GB] [--resume]\n"
+     "                    [--out DIR]\n"
      "       magfem sweep CASE.yaml --move GROUP --axis z --positions START:STEP:END|A,B,C\n"
-     "                    [--jobs N] [--out DIR]          (axisymmetric cases)",
+     "                    [--jobs N] [--resume] [--out DIR]   (axisymmetric cases)",
      "torque and force while a group of parts rotates (or, axisymmetric, moves)",
      "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
@@ -55,7 +61,11 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  case's unit, angles in degrees.\n"
      "  Axisymmetric cases: --move translates GROUP along the axis by the positions (mm)\n"
      "  and writes sweep.csv (position_mm,Fz_N: the Lorentz force on the group).\n"
-     "  --jobs N   positions solved in parallel (default: one per core)\n"},
+     "  --jobs N   positions solved in parallel (default: one per core)\n"
+     "  --resume   continue a sweep that was interrupted (Ctrl-C, kill, crash): every\n"
+     "             finished position is kept in DIR/.magfem-checkpoint.jsonl as it\n"
+     "             finishes, and is not solved again; the outputs are those of an\n"
+     "             uninterrupted run. Refused if the case file or options changed.\n"},
     {"study",
      "magfem study CASE.yaml --param NAME=START:STEP:END|A,B,C [--param ...]\n"
      "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"

@@ -21,6 +21,7 @@
 #include "app/run2d.hpp"
 #include "app/run3d.hpp"
 #include "app/run_analytic.hpp"
+#include "app/run_checkpoint.hpp"
 #include "app/study.hpp"
 #include "app/sweep.hpp"
 #include "app/sweep_axi.hpp"
@@ -43,7 +44,8 @@ struct Args {
   magfem::AnalyticOptions analytic;
   std::string rotate, axis, angles, point, surface_radius, move, positions;
   bool analytic_sweep = false;
-  bool quiet = false; // no progress lines on stderr
+  bool resume = false; // sweep: continue from the checkpoint in --out
+  bool quiet = false;  // no progress lines on stderr
   int jobs = 0;
 };
 
@@ -69,6 +71,10 @@ Args parse_args(int argc, char** argv) {
       a.overrides.mesh_scale = magfem::parse_cli_number(arg, value());
       if (!(a.overrides.mesh_scale > 0)) // 0 would silently mean "as in the case"
         throw magfem::InputError("<command line>", 0, arg, "must be positive");
+    } else if (arg == "--max-memory") {
+      a.overrides.max_memory_gb = parse_number(arg, value());
+      if (!(a.overrides.max_memory_gb > 0))
+        throw magfem::InputError("<command line>", 0, arg, "must be positive (GB)");
     } else if (arg == "--model")
       a.analytic.model = value();
     else if (arg == "--tolerance")
@@ -97,6 +103,8 @@ Args parse_args(int argc, char** argv) {
       a.analytic_sweep = true;
     else if (arg == "--quiet")
       a.quiet = true;
+    else if (arg == "--resume")
+      a.resume = true;
     else if (arg.rfind("--", 0) == 0)
       throw magfem::InputError("<command line>", 0, arg, "unknown option");
     else
@@ -178,6 +186,12 @@ void show_progress(int done, int total) {
   }
 }
 
+void report_restored(const magfem::RunCheckpoint& checkpoint) {
+  if (checkpoint.n_restored())
+    std::fprintf(stderr, "magfem: --resume: %zu finished positions from the checkpoint\n",
+                 checkpoint.n_restored());
+}
+
 // Axial sweep of an axisymmetric case (app/sweep_axi.hpp).
 int run_sweep_axi(const Args& args) {
   using magfem::InputError;
@@ -194,9 +208,16 @@ int run_sweep_axi(const Args& args) {
   o.jobs = args.jobs;
   o.order = args.overrides.order;
   o.mesh_scale = args.overrides.mesh_scale;
+  magfem::RunCheckpoint checkpoint(
+      args.out_dir,
+      magfem::checkpoint_identity("sweep --move", args.case_file,
+                                  o.group + " order " + std::to_string(o.order) + " mesh-scale " +
+                                      magfem::RunCheckpoint::key_of(o.mesh_scale)),
+      args.resume);
+  report_restored(checkpoint);
+  o.checkpoint = &checkpoint;
   const auto rows = magfem::run_sweep_axi(spec, o, show_progress);
 
-  std::filesystem::create_directories(args.out_dir);
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
   nlohmann::ordered_json j;
@@ -219,6 +240,7 @@ int run_sweep_axi(const Args& args) {
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
+  checkpoint.remove();
   std::printf("%12s %14s %9s\n", "position_mm", "Fz_N", "time_s");
   for (const auto& r : rows)
     if (r.ok)
@@ -260,9 +282,20 @@ int run_sweep(const Args& args) {
   o.jobs = args.jobs;
   o.order = args.overrides.order;
   o.mesh_scale = args.overrides.mesh_scale;
+  o.max_memory_gb = args.overrides.max_memory_gb;
+  magfem::RunCheckpoint checkpoint(
+      args.out_dir,
+      magfem::checkpoint_identity("sweep --rotate", args.case_file,
+                                  o.group + " axis " + args.axis + " point " + args.point +
+                                      " surface-radius " + args.surface_radius +
+                                      (o.analytic ? " analytic" : " fe") + " order " +
+                                      std::to_string(o.order) + " mesh-scale " +
+                                      magfem::RunCheckpoint::key_of(o.mesh_scale)),
+      args.resume);
+  report_restored(checkpoint);
+  o.checkpoint = &checkpoint;
 
   const auto rows = magfem::run_sweep(spec, o, show_progress);
-  std::filesystem::create_directories(args.out_dir);
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows));
   std::string why;
@@ -294,6 +327,7 @@ int run_sweep(const Args& args) {
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
+  checkpoint.remove();
 
   std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", "angle_deg", "Tx_Nm", "Ty_Nm", "Tz_Nm",
               "Fx_N", "Fy_N", "Fz_N", "time_s");

@@ -9,6 +9,7 @@
 #include "app/build_info.hpp"
 #include "app/force2d.hpp"
 #include "app/resource_usage.hpp"
+#include "app/result_checks.hpp"
 #include "app/solver_summary.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
@@ -131,6 +132,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   stage("meshing");
   run->mesh = mesh_case(run->spec);
   run->timings.mesh = since(t0);
+  check_stress_surfaces_2d(run->spec, run->mesh); // before the solve: fail fast
 
   run->problem = build_problem(run->spec, run->mesh);
   t0 = Clock::now();
@@ -147,6 +149,8 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   if (!run->report.converged)
     throw SolveError("the solver did not converge: " + run->report.message);
 
+  check_finite(u, "solution");
+
   t0 = Clock::now();
   stage("post-processing");
   run->field = std::make_unique<Field2D>(run->problem, *run->dofs, assembler.expand(u));
@@ -159,6 +163,9 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
   run->forces = compute_forces_2d(*run);
   run->coils = coil_results(*run);
+  check_finite(run->energy.total_J_per_m, "magnetic energy");
+  check_forces_finite(run->forces);
+  run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -239,6 +246,7 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   }
   if (!run.coils.empty())
     j["coils"] = coils_json(run.coils);
+  j["warnings"] = run.warnings;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
@@ -273,6 +281,8 @@ std::string describe_run_2d(const Run2D& run) {
                 run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
                 run.timings.total);
   s += buf;
+  for (const auto& w : run.warnings)
+    s += "warning  " + w + "\n";
   return s;
 }
 

@@ -29,6 +29,7 @@ struct RunOverrides {
   int order = 0;                // 0 = as in the case
   double mesh_scale = 0;        // 0 = as in the case; multiplies every mesh size
   double domain_radius = 0;     // metres; 0 = as in the case
+  double max_memory_gb = 0;     // 3D memory guard limit; 0 = the memory available now
   Progress* progress = nullptr; // console progress (not owned); null = silent
 };
 
@@ -49,7 +50,8 @@ struct Run2D {
   EnergySummary2D energy;
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
-  std::vector<CoilResult2D> coils; // axisymmetric only
+  std::vector<CoilResult2D> coils;   // axisymmetric only
+  std::vector<std::string> warnings; // app/result_checks.hpp
   Timings timings;
 };
 

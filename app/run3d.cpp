@@ -1,6 +1,7 @@
 #include "app/run3d.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -8,7 +9,9 @@
 
 #include "app/build_info.hpp"
 #include "app/force3d.hpp"
+#include "app/memory_guard.hpp"
 #include "app/resource_usage.hpp"
+#include "app/result_checks.hpp"
 #include "app/solver_summary.hpp"
 #include "core/constants.hpp"
 #include "core/output_stage.hpp"
@@ -46,9 +49,13 @@ std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
   return out;
 }
 
-Mesh3D mesh_case(const CaseSpec& spec) {
+Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
+  const auto guard = [&](const MeshEstimate3D& e, const std::function<double(double)>& at) {
+    estimate = e;
+    check_memory(e, spec.order, ov.max_memory_gb, ov.mesh_scale > 0 ? ov.mesh_scale : 1.0, at);
+  };
   try {
-    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec));
+    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), guard);
   } catch (const MeshError& e) {
     for (std::size_t i = 0; i < spec.regions.size(); ++i)
       if (const auto& r = spec.regions[i]; r.name == e.part)
@@ -92,8 +99,9 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
 
   auto t0 = Clock::now();
   stage("meshing");
-  run->mesh = mesh_case(run->spec);
+  run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
   run->timings.mesh = since(t0);
+  check_stress_surfaces_3d(run->spec, run->mesh); // before the solve: fail fast
 
   run->problem = build_problem(run->spec, run->mesh);
   t0 = Clock::now();
@@ -127,6 +135,8 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   if (!run->report.converged)
     throw SolveError("the solver did not converge: " + run->report.message);
 
+  check_finite(u, "solution");
+
   t0 = Clock::now();
   stage("post-processing");
   run->field = std::make_unique<Field3D>(run->problem, *run->dofs, assembler.expand(u));
@@ -143,6 +153,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   for (auto& f : coil_lorentz_forces(*run))
     run->forces.push_back(f);
   run->coil_results = compute_coil_results(*run, assembler, u);
+  check_finite(run->recovered_B, "recovered flux density");
+  check_finite(run->energy.total_J, "magnetic energy");
+  check_forces_finite(run->forces);
+  run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -190,6 +204,9 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
                     {"postprocess", run.timings.postprocess},
                     {"total", run.timings.total}};
   j["peak_memory_MB"] = peak_memory_mb();
+  j["memory_guard"] = {{"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
+                       {"estimated_peak_memory_MB",
+                        estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order)}};
   auto& regions = j["regions"];
   for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
     const auto& r = run.energy.regions[i];
@@ -227,6 +244,7 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
   }
+  j["warnings"] = run.warnings;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
 }
@@ -258,7 +276,10 @@ std::string describe_run_3d(const Run3D& run) {
                 run.timings.mesh, run.timings.assemble, run.timings.solve,
                 run.report.linear_setup_s, run.timings.postprocess, run.timings.total,
                 peak_memory_mb());
-  return s + buf;
+  s += buf;
+  for (const auto& w : run.warnings)
+    s += "warning  " + w + "\n";
+  return s;
 }
 
 } // namespace magfem

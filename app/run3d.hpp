@@ -9,6 +9,7 @@
 #include "app/coil_run3d.hpp"
 #include "app/run2d.hpp"
 #include "mesh/mesh3d.hpp"
+#include "mesh/mesh_estimate3d.hpp"
 #include "postproc/energy3d.hpp"
 #include "postproc/field3d.hpp"
 #include "solver/coil_source3d.hpp"
@@ -20,6 +21,7 @@ namespace magfem {
 struct Run3D {
   CaseSpec spec;
   Mesh3D mesh;
+  MeshEstimate3D mesh_estimate; // before meshing (the memory guard's)
   std::unique_ptr<DofMap3D> dofs;
   Problem3D problem;
   std::unique_ptr<CaseCoils> coils; // null without coils
@@ -31,6 +33,7 @@ struct Run3D {
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
   CoilResults coil_results;
+  std::vector<std::string> warnings; // app/result_checks.hpp
   Timings timings;
   int threads = 1; // element-loop threads of the assembly
 };

@@ -13,6 +13,7 @@
 #include "app/analytic_scene.hpp"
 #include "app/force3d.hpp"
 #include "app/run3d.hpp"
+#include "app/run_checkpoint.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "validation/analytic_force.hpp"
@@ -177,6 +178,7 @@ SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angl
       RunOverrides ov;
       ov.order = o.order;
       ov.mesh_scale = o.mesh_scale;
+      ov.max_memory_gb = o.max_memory_gb;
       spec.probes.clear(); // a sweep wants forces only
       spec.write_vtu = false;
       const auto run =
@@ -197,6 +199,46 @@ SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angl
     row.error = e.what();
   }
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return row;
+}
+
+nlohmann::json row_to_json(const SweepRow& r) {
+  return {{"angle_deg", r.angle_deg},
+          {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
+          {"force", {r.force.x(), r.force.y(), r.force.z()}},
+          {"seconds", r.seconds},
+          {"unknowns", r.unknowns},
+          {"method", r.method},
+          {"n_max", r.n_max},
+          {"torque_bound", r.torque_bound},
+          {"force_bound", r.force_bound}};
+}
+
+SweepRow row_from_json(const nlohmann::json& j) {
+  SweepRow r;
+  r.angle_deg = j.at("angle_deg").get<double>();
+  for (int k = 0; k < 3; ++k)
+    r.torque[k] = j.at("torque").at(k).get<double>(),
+    r.force[k] = j.at("force").at(k).get<double>();
+  r.seconds = j.at("seconds").get<double>();
+  r.unknowns = j.at("unknowns").get<long>();
+  r.method = j.at("method").get<std::string>();
+  r.n_max = j.at("n_max").get<int>();
+  r.torque_bound = j.at("torque_bound").get<double>();
+  r.force_bound = j.at("force_bound").get<double>();
+  r.ok = true;
+  return r;
+}
+
+// A position from the checkpoint if an earlier run finished it, else solved (and recorded).
+SweepRow checkpointed_position(const CaseSpec& spec, const SweepOptions& o, double angle_deg) {
+  const std::string key = RunCheckpoint::key_of(angle_deg);
+  if (o.checkpoint)
+    if (const auto saved = o.checkpoint->find(key))
+      return row_from_json(*saved);
+  SweepRow row = solve_position(spec, o, angle_deg);
+  if (o.checkpoint && row.ok) // failed positions are tried again on --resume
+    o.checkpoint->record(key, row_to_json(row));
   return row;
 }
 
@@ -334,7 +376,7 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   std::mutex mutex;
   auto work = [&] {
     for (int i; (i = next++) < total;) {
-      rows[i] = solve_position(spec, options, options.angles_deg[i]);
+      rows[i] = checkpointed_position(spec, options, options.angles_deg[i]);
       const std::lock_guard<std::mutex> lock(mutex);
       ++done;
       if (progress)

@@ -21,6 +21,8 @@
 
 namespace magfem {
 
+class RunCheckpoint;
+
 struct SweepOptions {
   std::string group;                               // Part3D::group to rotate
   Eigen::Vector3d axis = Eigen::Vector3d::UnitY(); // rotation axis (any length)
@@ -31,7 +33,10 @@ struct SweepOptions {
   int jobs = 0;                                    // worker threads (0: one per core)
   double mesh_scale = 0;                           // FE: RunOverrides::mesh_scale
   int order = 0;                                   // FE: RunOverrides::order
+  double max_memory_gb = 0;                        // FE: RunOverrides::max_memory_gb
   double analytic_tolerance = 1e-6;                // analytic: charge interaction tolerance
+  // Finished positions found there are not solved again; new ones are recorded (not owned).
+  RunCheckpoint* checkpoint = nullptr;
 };
 
 struct SweepRow {

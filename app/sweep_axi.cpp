@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "app/run2d.hpp"
+#include "app/run_checkpoint.hpp"
 #include "core/input_error.hpp"
 
 namespace magfem {
@@ -73,6 +74,26 @@ AxiSweepRow solve_position(const CaseSpec& base, const AxiSweepOptions& o, doubl
   return row;
 }
 
+// A position from the checkpoint if an earlier run finished it, else solved (and recorded).
+AxiSweepRow checkpointed_position(const CaseSpec& spec, const AxiSweepOptions& o, double dz) {
+  const std::string key = RunCheckpoint::key_of(dz);
+  if (o.checkpoint)
+    if (const auto saved = o.checkpoint->find(key)) {
+      AxiSweepRow row;
+      row.position_m = dz;
+      row.fz_N = saved->at("fz_N").get<double>();
+      row.seconds = saved->at("seconds").get<double>();
+      row.unknowns = saved->at("unknowns").get<long>();
+      row.ok = true;
+      return row;
+    }
+  AxiSweepRow row = solve_position(spec, o, dz);
+  if (o.checkpoint && row.ok) // failed positions are tried again on --resume
+    o.checkpoint->record(
+        key, {{"fz_N", row.fz_N}, {"seconds", row.seconds}, {"unknowns", row.unknowns}});
+  return row;
+}
+
 } // namespace
 
 CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz) {
@@ -107,7 +128,7 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
   std::mutex report;
   const auto worker = [&] {
     for (int i; (i = next++) < total;) {
-      rows[i] = solve_position(spec, o, o.positions_m[i]);
+      rows[i] = checkpointed_position(spec, o, o.positions_m[i]);
       const std::lock_guard<std::mutex> lock(report);
       if (progress)
         progress(++done, total);

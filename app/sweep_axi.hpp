@@ -16,12 +16,16 @@
 
 namespace magfem {
 
+class RunCheckpoint;
+
 struct AxiSweepOptions {
   std::string group;               // RegionSpec::group to move
   std::vector<double> positions_m; // axial displacements of the group, metres
   int jobs = 0;                    // worker threads (0: one per core)
   double mesh_scale = 0;           // RunOverrides::mesh_scale
   int order = 0;                   // RunOverrides::order
+  // Finished positions found there are not solved again; new ones are recorded (not owned).
+  RunCheckpoint* checkpoint = nullptr;
 };
 
 struct AxiSweepRow {

@@ -133,8 +133,8 @@ void FaceSoup3D::check_parts(const Geometry3D& geo) const {
   }
 }
 
-double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction,
-                                    double min_distance) const {
+double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance,
+                                    int* hit_face) const {
   const K::Ray_3 ray(cgal(origin), K::Vector_3(direction.x(), direction.y(), direction.z()));
   const auto& tris = tree_->triangles;
   const double tol = 1e-9 * dec_.frames[0].breaks[0].back();
@@ -152,10 +152,15 @@ double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction,
     return face_contains(dec_.frames[face.frame], face, origin, tol);
   };
   const auto hit = tree_->tree.first_intersection(ray, skip);
+  if (hit_face)
+    *hit_face = -1;
   if (!hit)
     return std::numeric_limits<double>::infinity();
-  if (const K::Point_3* p = boost::get<K::Point_3>(&hit->first))
+  if (const K::Point_3* p = boost::get<K::Point_3>(&hit->first)) {
+    if (hit_face)
+      *hit_face = tri_face_[hit->second - tris.begin()];
     return std::sqrt(CGAL::squared_distance(*p, ray.source()));
+  }
   return std::numeric_limits<double>::infinity(); // a segment: only grazing hits do that
 }
 

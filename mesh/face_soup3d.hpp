@@ -29,8 +29,10 @@ public:
   // Distance from origin along the unit direction to the first face met at an angle of
   // incidence within about 78 deg of the normal (grazing hits are no gap) and at least
   // min_distance away, ignoring faces that contain origin (the coarse triangles of faces
-  // next to the start point cross the ray near it); infinity when none.
-  double distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance) const;
+  // next to the start point cross the ray near it); infinity when none. hit_face, if given,
+  // receives the index of the face hit (-1 when none).
+  double distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance,
+                          int* hit_face = nullptr) const;
 
 private:
   struct Tree;

@@ -25,15 +25,25 @@
 // Limitations: parts of different frames may not touch (a cylinder standing on a box face, a
 // rotated segment touching another array); coincident surfaces of different frames are not
 // merged.
+#include <functional>
 #include <vector>
 
 #include "mesh/geometry3d.hpp"
 #include "mesh/mesh3d.hpp"
+#include "mesh/mesh_estimate3d.hpp"
 
 namespace magfem {
 
+// Called with the estimated mesh size once the size field is known, before the surfaces and
+// the volume are meshed; it may throw to stop the run (the memory guard). The second
+// argument estimates the tetrahedra with every size multiplied by a factor (a coarser
+// --mesh-scale; seconds per call on large cases).
+using MeshSizeCheck =
+    std::function<void(const MeshEstimate3D&, const std::function<double(double)>&)>;
+
 // Throws MeshError naming the offending part(s) for degenerate primitives, parts outside the
 // domain ball, intersecting parts and TetGen failures.
-Mesh3D build_mesh_3d(const Geometry3D& geometry, const std::vector<ProbeSurface>& refine = {});
+Mesh3D build_mesh_3d(const Geometry3D& geometry, const std::vector<ProbeSurface>& refine = {},
+                     const MeshSizeCheck& check = {});
 
 } // namespace magfem

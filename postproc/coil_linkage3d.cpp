@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "core/constants.hpp"
+#include "core/thread_count.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -17,7 +18,7 @@ template <class Body>
 Eigen::MatrixXd sum_over_tets(std::size_t n_tets, Eigen::Index rows, Eigen::Index cols,
                               const Body& body) {
   const int n_threads = static_cast<int>(std::min<std::size_t>(
-      std::max(1u, std::thread::hardware_concurrency()), 1 + n_tets / 5000));
+      available_threads(), 1 + n_tets / 5000));
   std::vector<Eigen::MatrixXd> partial(n_threads, Eigen::MatrixXd::Zero(rows, cols));
   std::vector<std::thread> pool;
   for (int k = 0; k < n_threads; ++k)

@@ -5,6 +5,7 @@
 
 #include "core/constants.hpp"
 #include "core/parallel_scatter.hpp"
+#include "core/thread_count.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 
@@ -120,8 +121,8 @@ std::vector<Eigen::Vector3d> Field3D::recovered_B(int threads) const {
   std::vector<Eigen::Vector3d> sum(dofs_.n_dofs(), Eigen::Vector3d::Zero());
   std::vector<double> weight(dofs_.n_dofs(), 0.0);
   if (threads <= 0) // all cores, one per ~20k elements at most (as the assembly)
-    threads = static_cast<int>(std::min<std::size_t>(
-        std::max(1u, std::thread::hardware_concurrency()), 1 + mesh.n_tets() / 20000));
+    threads =
+        static_cast<int>(std::min<std::size_t>(available_threads(), 1 + mesh.n_tets() / 20000));
   // Per element and local DOF: vol B (3 values) and vol; each DOF summed by one thread in
   // element order, so the result does not depend on the thread count.
   parallel_element_scatter(

@@ -18,7 +18,7 @@ _magfem() {
     --model) COMPREPLY=($(compgen -W "charge harmonic" -- "$cur")); return ;;
     --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
-    --mesh-scale | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
+    --mesh-scale | --max-memory | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
       --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature) return ;;
     --objective | --maximize | --minimize)
       COMPREPLY=($(compgen -W "peak_torque torque_at:" -- "$cur"))
@@ -27,10 +27,10 @@ _magfem() {
   esac
   local options
   case "$command" in
-    solve) options="--out --order --mesh-scale --quiet --help" ;;
+    solve) options="--out --order --mesh-scale --max-memory --quiet --help" ;;
     analytic) options="--out --model --tolerance --n-max --help" ;;
     compare) options="--help" ;;
-    sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --help" ;;
+    sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --help" ;;
     validate) options="--tier --only --source --jobs --out --help" ;;
     study) options="--param --objective --rotate --axis --angles --analytic --fe --mesh-scale --order --jobs --quiet --out --help" ;;
     actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --out --help" ;;

@@ -6,6 +6,7 @@
 
 #include "core/constants.hpp"
 #include "core/parallel_scatter.hpp"
+#include "core/thread_count.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -170,7 +171,7 @@ int Assembler3D::loop_threads() const {
     return options_.threads;
   // Automatic: all cores, but one thread per ~20k elements at most (below that the start-up
   // outweighs the work).
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int cores = available_threads();
   return static_cast<int>(std::min<std::size_t>(cores, 1 + problem_.mesh->n_tets() / 20000));
 }
 

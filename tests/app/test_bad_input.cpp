@@ -193,3 +193,41 @@ mesh: {size: 8, chord_tolerance: 0.05}
     EXPECT_NE(std::string(e.what()).find("chord_tolerance"), std::string::npos) << e.what();
   }
 }
+
+// Nearly coincident faces (issue 15): two boxes 1e-5 mm apart used to mesh silently with a
+// 0.00 deg dihedral across the 10 nm slab; now an InputError naming both parts, at the line
+// of the part whose face sees the other. Touching exactly (one interface) still meshes: the
+// rule is about faces far closer than the mesh size without meeting.
+namespace {
+std::string two_boxes(const std::string& upper_z) {
+  return R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.0, mu_r: 1.05}
+regions:
+  - {name: lower, shape: box, size: [10, 10, 5], material: pm,
+     magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: 3}
+  - {name: upper, shape: box, size: [10, 10, 5], material: pm,
+     placement: {translate: [0, 0, )" +
+         upper_z + R"(]}, magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: 3}
+boundary: {type: open, radius: 30, shell_ratio: 1.5}
+mesh: {size: 8}
+solver: {order: 1}
+)";
+}
+} // namespace
+
+TEST(BadInput, NearlyCoincidentFacesNameBothParts3D) {
+  const auto path = test::write_temp_case("coincident3d.yaml", two_boxes("5.00001"));
+  try {
+    run_case_3d(read_case(path));
+    FAIL() << "boxes 1e-5 mm apart were meshed";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_TRUE(e.line() == 6 || e.line() == 8) << what;
+    EXPECT_NE(what.find("'lower'"), std::string::npos) << what;
+    EXPECT_NE(what.find("'upper'"), std::string::npos) << what;
+    EXPECT_NE(what.find("coincident"), std::string::npos) << what;
+  }
+  EXPECT_NO_THROW(run_case_3d(read_case(test::write_temp_case("touching3d.yaml", two_boxes("5")))));
+}

@@ -24,26 +24,15 @@
 
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
+#include "run_cli.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int status = -1;
-  std::string out; // stdout and stderr
-};
-
+using Outcome = magfem::test::CliOutcome;
 Outcome run(const std::string& args) {
-  const std::string cmd = std::string(MAGFEM_BINARY) + " " + args + " 2>&1";
-  Outcome o;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (pipe && fgets(buf.data(), buf.size(), pipe))
-    o.out += buf.data();
-  const int raw = pipe ? pclose(pipe) : -1;
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return o;
+  return magfem::test::run_cli(args);
 }
 
 fs::path fresh_dir(const std::string& name) {

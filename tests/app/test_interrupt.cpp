@@ -1,8 +1,8 @@
 // Ctrl-C and kill during a run (core/interrupt.hpp): the binary exits with the shell's code
 // for the signal (130 for SIGINT, 143 for SIGTERM), says so, and leaves no outputs: no
-// sweep.csv or summary.json, no staging folder, not even the output directory it created.
-// The signal goes to an axisymmetric sweep of 61 remeshed positions after the first one is
-// reported, while meshing and solving are under way.
+// sweep.csv or summary.json, no staging folder; only the sweep's checkpoint, from which
+// --resume continues (app/run_checkpoint.hpp). The signal goes to an axisymmetric sweep of
+// remeshed positions once some are reported, while meshing and solving are under way.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -15,7 +15,9 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
+#include "app/run_checkpoint.hpp"
 #include "case_helpers.hpp"
 
 namespace fs = std::filesystem;
@@ -27,8 +29,16 @@ struct Outcome {
   std::string stderr_text;
 };
 
-Outcome interrupt_sweep(int sig, const fs::path& out) {
-  fs::remove_all(out);
+std::string text_of(const fs::path& p) {
+  std::stringstream s;
+  s << std::ifstream(p).rdbuf();
+  return s.str();
+}
+
+// Starts `magfem sweep` of the voice-coil magnet over `positions` into `out`, stderr to a
+// file next to it; `mesh_scale` coarsens the meshes (seconds matter in the resume test).
+pid_t start_sweep(const std::string& positions, const fs::path& out, bool resume,
+                  const std::string& mesh_scale = "1") {
   const fs::path err = out.string() + ".stderr";
   const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
   fs::remove(err);
@@ -38,55 +48,117 @@ Outcome interrupt_sweep(int sig, const fs::path& out) {
     dup2(fd, 2);
     const int null = ::open("/dev/null", O_WRONLY);
     dup2(null, 1);
-    execl(MAGFEM_BINARY, MAGFEM_BINARY, "sweep", case_file.c_str(), "--move", "coil", "--axis", "z",
-          "--positions", "0:0.2:12", "--jobs", "1", "--out", out.c_str(), nullptr);
+    std::vector<const char*> argv = {
+        MAGFEM_BINARY, "sweep", case_file.c_str(), "--move",          "coil",
+        "--axis",      "z",     "--positions",     positions.c_str(), "--jobs",
+        "1",           "--out", out.c_str(),       "--mesh-scale",    mesh_scale.c_str()};
+    if (resume)
+      argv.push_back("--resume");
+    argv.push_back(nullptr);
+    execv(MAGFEM_BINARY, const_cast<char* const*>(argv.data()));
     _exit(127);
   }
-  // The first progress line means the handler is installed and the sweep is working (a
-  // signal before main() would kill the process instead); 60 positions are still to come.
-  const auto t0 = std::chrono::steady_clock::now();
-  auto text_of = [](const fs::path& p) {
-    std::stringstream s;
-    s << std::ifstream(p).rdbuf();
-    return s.str();
-  };
-  while (text_of(err).find("position") == std::string::npos &&
-         std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  kill(pid, sig);
+  return pid;
+}
+
+Outcome finish(pid_t pid, const fs::path& out) {
   int status = 0;
   waitpid(pid, &status, 0);
   Outcome o;
   if (WIFEXITED(status))
     o.exit_code = WEXITSTATUS(status);
-  o.stderr_text = text_of(err);
+  o.stderr_text = text_of(out.string() + ".stderr");
   return o;
 }
 
+// Sends `sig` once the sweep has reported `progress` (e.g. "position 1/") on stderr: the
+// handler is installed then (a signal before main() would kill the process instead).
+Outcome interrupt_sweep(int sig, const fs::path& out, const std::string& positions,
+                        const std::string& progress, const std::string& mesh_scale = "1") {
+  fs::remove_all(out);
+  const pid_t pid = start_sweep(positions, out, false, mesh_scale);
+  const auto t0 = std::chrono::steady_clock::now();
+  while (text_of(out.string() + ".stderr").find(progress) == std::string::npos &&
+         std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, sig);
+  return finish(pid, out);
+}
+
+// Nothing but the checkpoint (not an output: a hidden file --resume reads).
 void expect_nothing_written(const fs::path& out) {
   if (!fs::exists(out))
-    return; // the sweep created it, and it went with the rest
+    return;
   for (const auto& f : fs::directory_iterator(out))
-    ADD_FAILURE() << "left behind: " << f.path();
+    if (f.path().filename() != magfem::RunCheckpoint::file_name)
+      ADD_FAILURE() << "left behind: " << f.path();
+}
+
+fs::path test_dir(const std::string& name) {
+  const fs::path out = fs::temp_directory_path() / "magfem_tests" / name;
+  fs::create_directories(out.parent_path());
+  return out;
 }
 
 } // namespace
 
 TEST(Interrupt, SigintDuringASweepExits130AndLeavesNoOutputs) {
-  const fs::path out = fs::temp_directory_path() / "magfem_tests" / "interrupt_int";
-  fs::create_directories(out.parent_path());
-  const auto o = interrupt_sweep(SIGINT, out);
+  const fs::path out = test_dir("interrupt_int");
+  const auto o = interrupt_sweep(SIGINT, out, "0:0.2:12", "position 1/");
   EXPECT_EQ(o.exit_code, 130) << o.stderr_text;
   EXPECT_NE(o.stderr_text.find("interrupted by SIGINT"), std::string::npos) << o.stderr_text;
   expect_nothing_written(out);
 }
 
 TEST(Interrupt, SigtermDuringASweepExits143AndLeavesNoOutputs) {
-  const fs::path out = fs::temp_directory_path() / "magfem_tests" / "interrupt_term";
-  fs::create_directories(out.parent_path());
-  const auto o = interrupt_sweep(SIGTERM, out);
+  const fs::path out = test_dir("interrupt_term");
+  const auto o = interrupt_sweep(SIGTERM, out, "0:0.2:12", "position 1/");
   EXPECT_EQ(o.exit_code, 143) << o.stderr_text;
   EXPECT_NE(o.stderr_text.find("interrupted by SIGTERM"), std::string::npos) << o.stderr_text;
   expect_nothing_written(out);
+}
+
+// The promise: --resume after Ctrl-C gives the sweep.csv of an uninterrupted run,
+// byte for byte (restored positions are the computed doubles, 17 digits in the checkpoint;
+// a position solved again is deterministic). Would fail if restored rows were re-rounded,
+// misplaced (keyed by index instead of position), dropped, or all recomputed.
+TEST(Interrupt, ResumedSweepWritesTheSameCsvAsAnUninterruptedRun) {
+  const std::string positions = "0:1:5", scale = "2"; // 6 positions
+  const fs::path whole = test_dir("resume_whole"), resumed = test_dir("resume_resumed");
+  fs::remove_all(whole);
+  const auto w = finish(start_sweep(positions, whole, false, scale), whole);
+  ASSERT_EQ(w.exit_code, 0) << w.stderr_text;
+
+  const auto i = interrupt_sweep(SIGINT, resumed, positions, "position 2/", scale);
+  ASSERT_EQ(i.exit_code, 130) << i.stderr_text;
+  expect_nothing_written(resumed);
+  const fs::path checkpoint = resumed / magfem::RunCheckpoint::file_name;
+  ASSERT_TRUE(fs::exists(checkpoint));
+  std::stringstream lines(text_of(checkpoint));
+  int n_lines = 0;
+  for (std::string line; std::getline(lines, line);)
+    ++n_lines;
+  EXPECT_GE(n_lines - 1, 2) << "positions 1-2 were reported done before the signal";
+  EXPECT_LT(n_lines - 1, 6);
+
+  const auto r = finish(start_sweep(positions, resumed, true, scale), resumed);
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("finished positions from the checkpoint"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_EQ(text_of(resumed / "sweep.csv"), text_of(whole / "sweep.csv"));
+  EXPECT_FALSE(fs::exists(checkpoint)) << "the checkpoint goes once the outputs are written";
+}
+
+// A checkpoint of another run is refused rather than mixed in.
+TEST(Interrupt, ResumeRefusesTheCheckpointOfADifferentRun) {
+  const fs::path out = test_dir("resume_other");
+  fs::remove_all(out);
+  fs::create_directories(out);
+  std::ofstream(out / magfem::RunCheckpoint::file_name)
+      << "{\"identity\":\"sweep --move other\"}\n{\"key\":\"0\",\"value\":{\"fz_N\":1}}\n";
+  const auto r = finish(start_sweep("0:0.5:1", out, true), out);
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("--resume"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out / "sweep.csv"));
 }

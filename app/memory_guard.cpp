@@ -1,0 +1,119 @@
+#include "app/memory_guard.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "core/input_error.hpp"
+
+namespace magfem {
+namespace {
+
+// Calibrated (README, "Memory guard"): MB, and kB per tetrahedron by order, fitted to the
+// measured peaks of the 3D examples (order 2: DOF map, matrix and the incomplete-Cholesky
+// or CHOLMOD factor dominate; order 1: TetGen's structures and the mesh).
+constexpr double base_mb = 50;
+constexpr double kb_per_tet_order1 = 0.36;
+constexpr double kb_per_tet_order2 = 2.2;
+
+double meminfo_available_mb() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0;
+  std::string unit;
+  while (in >> key >> kb >> unit)
+    if (key == "MemAvailable:")
+      return kb / 1024;
+  return std::numeric_limits<double>::infinity();
+}
+
+// cgroup v2: the limit of this process's group minus what the group uses ("max" = none).
+double cgroup_available_mb() {
+  std::ifstream limit("/sys/fs/cgroup/memory.max"), used("/sys/fs/cgroup/memory.current");
+  std::string max_text;
+  double current = 0;
+  if (!(limit >> max_text) || max_text == "max" || !(used >> current))
+    return std::numeric_limits<double>::infinity();
+  try {
+    return (std::stod(max_text) - current) / (1024 * 1024);
+  } catch (const std::exception&) {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
+double kb_per_tet(int order) {
+  return order == 2 ? kb_per_tet_order2 : kb_per_tet_order1;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+} // namespace
+
+double estimated_peak_memory_mb(double tetrahedra, int order) {
+  return base_mb + tetrahedra * kb_per_tet(order) / 1024;
+}
+
+double memory_limit_mb(double max_memory_gb) {
+  if (max_memory_gb > 0)
+    return 1024 * max_memory_gb;
+  return std::min(meminfo_available_mb(), cgroup_available_mb());
+}
+
+void check_memory(const MeshEstimate3D& estimate, int order, double max_memory_gb,
+                  double mesh_scale, const std::function<double(double)>& tets_at_factor) {
+  const double limit = memory_limit_mb(max_memory_gb);
+  const double need = estimated_peak_memory_mb(estimate.tetrahedra, order);
+  if (need <= limit)
+    return;
+  const std::string field = max_memory_gb > 0 ? "--max-memory" : "--mesh-scale";
+  const std::string source =
+      max_memory_gb > 0 ? "the --max-memory limit" : "the memory available now";
+  std::string message = "the mesh would have about " + fixed(estimate.tetrahedra / 1e6, 2) +
+                        " million tetrahedra and need about " + fixed(need / 1024, 2) +
+                        " GB at order " + std::to_string(order) + ", more than " + source + " (" +
+                        fixed(limit / 1024, 2) + " GB); ";
+  // The smallest factor 1.25^k (k = 1..9, up to 7.45) whose estimate fits with a 30 %
+  // margin (the estimate's spread over the calibration runs), by bisection: each estimate
+  // rebuilds the size field (seconds on large cases), and the count falls as the factor
+  // grows. The answer is rounded up to two significant digits.
+  constexpr int n_factors = 9;
+  constexpr double step = 1.25;
+  const double max_factor = std::pow(step, n_factors);
+  const auto fits = [&](int k, double& tets) {
+    tets = tets_at_factor(std::pow(step, k));
+    return 1.3 * estimated_peak_memory_mb(tets, order) <= limit;
+  };
+  double tets = 0;
+  if (1.3 * base_mb < limit && fits(n_factors, tets)) {
+    int lo = 0, hi = n_factors; // lo does not fit (the present mesh), hi does
+    double tets_hi = tets;
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      if (fits(mid, tets))
+        hi = mid, tets_hi = tets;
+      else
+        lo = mid;
+    }
+    double s = mesh_scale * std::pow(step, hi);
+    const double mag = std::pow(10.0, std::floor(std::log10(s)) - 1);
+    s = std::ceil(s / mag - 1e-9) * mag;
+    message += "--mesh-scale " + fixed(s, s < 10 ? 2 : 1) + " would fit (about " +
+               fixed(tets_hi / 1e6, 2) + " million tetrahedra)";
+    throw InputError("<command line>", 0, field, message);
+  }
+  message += "no --mesh-scale up to " + fixed(max_factor * mesh_scale, 1) +
+             " fits: the curved surfaces' chord_tolerance bounds the element size (it does "
+             "not grow with --mesh-scale; raise it in the case file), or the limit is below "
+             "the " +
+             fixed(base_mb, 0) + " MB a run needs before any element";
+  throw InputError("<command line>", 0, field, message);
+}
+
+} // namespace magfem

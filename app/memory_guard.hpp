@@ -1,0 +1,31 @@
+#pragma once
+// The memory guard of a 3D run: before the mesher allocates anything large, the estimated
+// mesh (mesh/mesh_estimate3d.hpp) is turned into an estimated peak memory; a run that would
+// need more than the limit stops with exit 2 and says which --mesh-scale would fit.
+//
+// Peak memory model: a fixed base (libraries, the size field, the surface mesh) plus a cost
+// per tetrahedron that depends on the element order (TetGen's own structures while meshing;
+// the DOF map, the matrix and the linear solver's factor or preconditioner afterwards).
+// Calibrated on the 3D examples (README, "Memory guard": estimated against measured peak).
+#include <functional>
+#include <string>
+
+#include "mesh/mesh_estimate3d.hpp"
+
+namespace magfem {
+
+// Estimated peak resident memory (MB) of a 3D solve with this many tetrahedra.
+double estimated_peak_memory_mb(double tetrahedra, int order);
+
+// The memory a run may use, in MB: `max_memory_gb` if positive, else what the machine (and
+// the cgroup the process runs in, if it has a limit) has available now.
+double memory_limit_mb(double max_memory_gb);
+
+// Throws InputError (field --max-memory when the limit came from it, else --mesh-scale)
+// when the estimate exceeds the limit, naming the --mesh-scale that would fit (searched with
+// `tets_at_factor`, the estimate with every size multiplied by a factor), or saying that none
+// up to 8 times the present one does; `mesh_scale` is the one in force (1 if none given).
+void check_memory(const MeshEstimate3D& estimate, int order, double max_memory_gb,
+                  double mesh_scale, const std::function<double(double)>& tets_at_factor);
+
+} // namespace magfem

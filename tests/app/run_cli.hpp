@@ -1,0 +1,28 @@
+#pragma once
+// Runs the magfem binary (MAGFEM_BINARY) with a command line, stdout and stderr together.
+#include <array>
+#include <cstdio>
+#include <string>
+
+#include <sys/wait.h>
+
+namespace magfem::test {
+
+struct CliOutcome {
+  int status = -1; // exit code, -1 if killed by a signal
+  std::string out; // stdout and stderr
+};
+
+inline CliOutcome run_cli(const std::string& args) {
+  const std::string cmd = std::string(MAGFEM_BINARY) + " " + args + " 2>&1";
+  CliOutcome o;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (pipe && fgets(buf.data(), buf.size(), pipe))
+    o.out += buf.data();
+  const int raw = pipe ? pclose(pipe) : -1;
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return o;
+}
+
+} // namespace magfem::test
