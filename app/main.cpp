@@ -72,7 +72,7 @@ Args parse_args(int argc, char** argv) {
       if (!(a.overrides.mesh_scale > 0)) // 0 would silently mean "as in the case"
         throw magfem::InputError("<command line>", 0, arg, "must be positive");
     } else if (arg == "--max-memory") {
-      a.overrides.max_memory_gb = parse_number(arg, value());
+      a.overrides.max_memory_gb = magfem::parse_cli_number(arg, value());
       if (!(a.overrides.max_memory_gb > 0))
         throw magfem::InputError("<command line>", 0, arg, "must be positive (GB)");
     } else if (arg == "--model")
