@@ -216,7 +216,8 @@ int run_sweep_axi(const Args& args) {
       args.resume);
   report_restored(checkpoint);
   o.checkpoint = &checkpoint;
-  const auto rows = magfem::run_sweep_axi(spec, o, show_progress);
+  const auto rows =
+      magfem::run_sweep_axi(spec, o, args.quiet ? magfem::AxiSweepProgress{} : show_progress);
 
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
@@ -295,7 +296,8 @@ int run_sweep(const Args& args) {
   report_restored(checkpoint);
   o.checkpoint = &checkpoint;
 
-  const auto rows = magfem::run_sweep(spec, o, show_progress);
+  const auto rows =
+      magfem::run_sweep(spec, o, args.quiet ? magfem::SweepProgress{} : show_progress);
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows));
   std::string why;

@@ -267,6 +267,21 @@ probes:
     EXPECT_EQ(quiet.out.find(stage), std::string::npos) << stage << "\n" << quiet.out;
 }
 
+// A sweep reports each finished position on stderr; --quiet silences that too (it did not).
+TEST(Cli, SweepShowsItsPositionsUnlessQuiet) {
+  const std::string c = magfem::test::example("axi/voice_coil_magnet.yaml");
+  const std::string sweep = "sweep " + c + " --move coil --axis z --positions 0,6 --mesh-scale 3";
+  const auto out = fresh_dir("sweep_progress");
+  const auto r = run(sweep + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("2/2"), std::string::npos) << r.out;
+  fs::remove_all(out);
+  const auto quiet = run(sweep + " --quiet --out " + out.string());
+  ASSERT_EQ(quiet.status, 0) << quiet.out;
+  EXPECT_EQ(quiet.out.find("1/2"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("2/2"), std::string::npos) << quiet.out;
+}
+
 // The analytic models have no nonlinear iron: refused with exit 2, the region named.
 TEST(Cli, AnalyticRefusesNonlinearIronNamingTheRegion) {
   const auto out = fresh_dir("analytic_refusal");
