@@ -315,15 +315,11 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
       if (eq == std::string::npos || eq == 0)
         throw InputError(cli, 0, arg, "expected NAME=VALUE, got '" + p + "'");
       o.parameters[p.substr(0, eq)] = parse_cli_number(arg, p.substr(eq + 1));
-    } else if (arg == "--mesh-scale") {
-      o.mesh_scale = parse_cli_number(arg, value());
-      if (!(o.mesh_scale > 0))
-        throw InputError(cli, 0, arg, "must be positive");
-    } else if (arg == "--order") {
-      o.order = static_cast<int>(parse_cli_number(arg, value()));
-      if (o.order != 1 && o.order != 2)
-        throw InputError(cli, 0, arg, "must be 1 or 2");
-    } else if (arg == "--out")
+    } else if (arg == "--mesh-scale")
+      o.mesh_scale = parse_cli_mesh_scale(value());
+    else if (arg == "--order")
+      o.order = parse_cli_order(value());
+    else if (arg == "--out")
       o.out_dir = value();
     else if (arg.rfind("--", 0) == 0)
       throw InputError(cli, 0, arg, "unknown option for actuator");

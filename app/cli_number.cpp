@@ -19,4 +19,18 @@ double parse_cli_number(const std::string& option, const std::string& text) {
   throw InputError("<command line>", 0, option, "expected a finite number, got '" + text + "'");
 }
 
+double parse_cli_mesh_scale(const std::string& text) {
+  const double scale = parse_cli_number("--mesh-scale", text);
+  if (!(scale > 0))
+    throw InputError("<command line>", 0, "--mesh-scale", "must be positive");
+  return scale;
+}
+
+int parse_cli_order(const std::string& text) {
+  const double order = parse_cli_number("--order", text);
+  if (order != 1 && order != 2)
+    throw InputError("<command line>", 0, "--order", "must be 1 or 2");
+  return static_cast<int>(order);
+}
+
 } // namespace magfem

@@ -7,4 +7,9 @@ namespace magfem {
 
 double parse_cli_number(const std::string& option, const std::string& text);
 
+// The FE mesh options shared by the commands that solve: --mesh-scale (positive) and
+// --order (exactly 1 or 2).
+double parse_cli_mesh_scale(const std::string& text);
+int parse_cli_order(const std::string& text);
+
 } // namespace magfem

@@ -165,16 +165,11 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
       o.sweep.jobs = static_cast<int>(parse_cli_number(arg, value()));
       if (o.sweep.jobs < 1)
         throw InputError(cli, 0, arg, "must be at least 1");
-    } else if (arg == "--mesh-scale") {
-      o.sweep.mesh_scale = parse_cli_number(arg, value());
-      if (!(o.sweep.mesh_scale > 0))
-        throw InputError(cli, 0, arg, "must be positive");
-    } else if (arg == "--order") {
-      const double order = parse_cli_number(arg, value());
-      if (order != 1 && order != 2)
-        throw InputError(cli, 0, arg, "must be 1 or 2");
-      o.sweep.order = static_cast<int>(order);
-    } else if (arg == "--out")
+    } else if (arg == "--mesh-scale")
+      o.sweep.mesh_scale = parse_cli_mesh_scale(value());
+    else if (arg == "--order")
+      o.sweep.order = parse_cli_order(value());
+    else if (arg == "--out")
       o.out_dir = value();
     else if (arg.rfind("--", 0) == 0)
       throw InputError(cli, 0, arg, "unknown option for study");

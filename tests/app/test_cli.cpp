@@ -137,8 +137,10 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
   const auto out = fresh_dir("options");
   const std::string c = magfem::test::example("2d/diametric_cylinder.yaml");
   const std::string o = " --out " + out.string();
-  const std::array<std::pair<std::string, std::string>, 8> cases{{
+  const std::array<std::pair<std::string, std::string>, 10> cases{{
       {"solve " + c + o + " --order 3", "--order"},
+      {"solve " + c + o + " --order 1.5", "--order"}, // was truncated to 1
+      {"solve " + c + o + " --order 0", "--order"},   // was "as in the case", silently
       {"solve " + c + o + " --mesh-scale 0", "--mesh-scale"},
       {"solve " + c + o + " --mesh-scale nan", "--mesh-scale"},
       {"solve " + c + " --out", "--out"},

@@ -131,6 +131,16 @@ TEST(Study, BadOptionsNameTheOption) {
   EXPECT_THROW(parse_study_options({"case.yaml", "--param", "a=1", "--objective", "peak_torque",
                                     "--rotate", "g", "--axis", "y"}), // no --angles
                InputError);
+  for (const std::string bad : {"--order=1.5", "--mesh-scale=0"}) {
+    const auto eq = bad.find('=');
+    try {
+      parse_study_options({"case.yaml", "--param", "a=1", "--objective", "torque_at:90", "--rotate",
+                           "g", "--axis", "y", bad.substr(0, eq), bad.substr(eq + 1)});
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), bad.substr(0, eq));
+    }
+  }
 }
 
 TEST(Study, CommandWritesTheCsvThePlotAndTheSummary) {
