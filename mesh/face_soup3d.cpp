@@ -134,11 +134,14 @@ void FaceSoup3D::check_parts(const Geometry3D& geo) const {
 }
 
 double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance,
-                                    int* hit_face) const {
+                                    int* hit_face, bool parts_only) const {
   const K::Ray_3 ray(cgal(origin), K::Vector_3(direction.x(), direction.y(), direction.z()));
   const auto& tris = tree_->triangles;
   const double tol = 1e-9 * dec_.frames[0].breaks[0].back();
   auto skip = [&](Iterator id) {
+    const GridFace3D& face = dec_.faces[tri_face_[id - tris.begin()]];
+    if (parts_only && face.label_low < 0 && face.label_high < 0)
+      return true;
     const Vec3 a(id->vertex(0).x(), id->vertex(0).y(), id->vertex(0).z());
     const Vec3 b(id->vertex(1).x(), id->vertex(1).y(), id->vertex(1).z());
     const Vec3 c(id->vertex(2).x(), id->vertex(2).y(), id->vertex(2).z());
@@ -148,7 +151,6 @@ double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction, d
       return true;
     if ((a - origin).dot(n) / dn < min_distance)
       return true; // plane hit too close
-    const GridFace3D& face = dec_.faces[tri_face_[id - tris.begin()]];
     return face_contains(dec_.frames[face.frame], face, origin, tol);
   };
   const auto hit = tree_->tree.first_intersection(ray, skip);

@@ -30,9 +30,10 @@ public:
   // incidence within about 78 deg of the normal (grazing hits are no gap) and at least
   // min_distance away, ignoring faces that contain origin (the coarse triangles of faces
   // next to the start point cross the ray near it); infinity when none. hit_face, if given,
-  // receives the index of the face hit (-1 when none).
+  // receives the index of the face hit (-1 when none). With parts_only, faces that bound no
+  // part (the domain ball and the open-boundary shell) are not met.
   double distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance,
-                          int* hit_face = nullptr) const;
+                          int* hit_face = nullptr, bool parts_only = false) const;
 
 private:
   struct Tree;

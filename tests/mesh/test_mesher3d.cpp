@@ -273,6 +273,32 @@ TEST(Mesher3D, HemispheresWithGapLayers) {
   EXPECT_LE(worst, (1 * mm) / 3 * (1 + 1e-9));
 }
 
+// A gap lies between two parts, not between a part and the domain boundary: a sphere 5 mm
+// inside the ball (3 layers across would ask for 1.7 mm elements in air meshed at 8 mm) meshes
+// the same with gap_layers 1 and 3; before this rule the outer boundary counted as the far
+// side of a gap and refined the whole air ball (benchmark32 at size 20: 524k tets instead of
+// 45k). A second sphere 1 mm from the first still gets its gap refined.
+TEST(Mesher3D, SpaceBetweenAPartAndTheBoundaryIsNoGap) {
+  auto tets = [](int layers, bool second) {
+    Geometry3D g = domain(20 * mm, 8 * mm, 0.1 * mm);
+    g.options.gap_layers = layers;
+    g.parts.push_back(segment("ball", 0, 15 * mm, 0, pi, 0, 2 * pi));
+    if (second) {
+      g.parts[0] = segment("ball", 0, 6 * mm, 0, pi, 0, 2 * pi);
+      Part3D p = segment("other", 0, 5 * mm, 0, pi, 0, 2 * pi);
+      p.placement.translation = Eigen::Vector3d(12 * mm, 0, 0); // 1 mm from "ball"
+      g.parts.push_back(p);
+    }
+    return build_mesh_3d(g).tets.size();
+  };
+  const std::size_t alone1 = tets(1, false), alone3 = tets(3, false);
+  const std::size_t pair1 = tets(1, true), pair3 = tets(3, true);
+  std::printf("sphere alone: %zu / %zu tets (gap_layers 1 / 3); pair 1 mm apart: %zu / %zu\n",
+              alone1, alone3, pair1, pair3);
+  EXPECT_EQ(alone1, alone3);
+  EXPECT_GT(pair3, pair1 * 3 / 2);
+}
+
 // Cylinders of any placement, hollow and solid, a ring of them pointing radially on a sphere
 // (as the thesis's outer magnet of 178 cylinders) and a rotated box.
 TEST(Mesher3D, CylindersOnSphereAndBoxVolumes) {
