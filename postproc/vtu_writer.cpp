@@ -24,7 +24,8 @@ vtkNew<vtkDoubleArray> make_array(const VtuArray& a) {
   arr->SetNumberOfComponents(a.components);
   const vtkIdType n = static_cast<vtkIdType>(a.values.size()) / a.components;
   arr->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n * a.components; ++i) arr->SetValue(i, a.values[i]);
+  for (vtkIdType i = 0; i < n * a.components; ++i)
+    arr->SetValue(i, a.values[i]);
   return arr;
 }
 
@@ -48,12 +49,15 @@ void write_vtu(const std::string& path, const VtuGrid& grid) {
   vtkNew<vtkUnstructuredGrid> ug;
   ug->SetPoints(points);
   ug->SetCells(const_cast<int*>(grid.cell_types.data()), cells);
-  for (const auto& a : grid.point_data) ug->GetPointData()->AddArray(make_array(a));
-  for (const auto& a : grid.cell_data) ug->GetCellData()->AddArray(make_array(a));
+  for (const auto& a : grid.point_data)
+    ug->GetPointData()->AddArray(make_array(a));
+  for (const auto& a : grid.cell_data)
+    ug->GetCellData()->AddArray(make_array(a));
   if (!grid.material_names.empty()) {
     vtkNew<vtkStringArray> names;
     names->SetName("material_names");
-    for (const auto& n : grid.material_names) names->InsertNextValue(n);
+    for (const auto& n : grid.material_names)
+      names->InsertNextValue(n);
     ug->GetFieldData()->AddArray(names);
   }
 
@@ -61,8 +65,11 @@ void write_vtu(const std::string& path, const VtuGrid& grid) {
   writer->SetFileName(path.c_str());
   writer->SetInputData(ug);
   writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1) throw std::runtime_error("cannot write " + path);
+  // LZ4 rather than zlib: compressing with zlib was 15 % of a 100k-unknown axisymmetric run;
+  // LZ4 compresses about ten times faster, and ParaView and VTK read it alike.
+  writer->SetCompressorTypeToLZ4();
+  if (writer->Write() != 1)
+    throw std::runtime_error("cannot write " + path);
 }
 
 } // namespace magfem
