@@ -6,11 +6,12 @@
 #include <string>
 
 #include "app/run2d.hpp"
+#include "tests/test_paths.hpp"
 
 namespace magfem::test {
 
 inline std::string example(const std::string& relative) {
-  return std::string(MAGFEM_SOURCE_DIR) + "/examples/" + relative;
+  return std::string(magfem::test::source_dir()) + "/examples/" + relative;
 }
 
 // Writes `text` to a fresh temporary case file and returns its path.
@@ -24,7 +25,8 @@ inline std::string write_temp_case(const std::string& name, const std::string& t
 
 inline const ProbeTable& probe(const Run2D& run, const std::string& name) {
   for (const auto& p : run.probes)
-    if (p.name == name) return p;
+    if (p.name == name)
+      return p;
   throw std::runtime_error("no probe " + name);
 }
 

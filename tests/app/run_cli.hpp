@@ -1,9 +1,10 @@
 #pragma once
-// Runs the magfem binary (MAGFEM_BINARY) with a command line, stdout and stderr together.
+// Runs the magfem binary with a command line, stdout and stderr together.
 #include <array>
 #include <cstdio>
 #include <string>
 
+#include "tests/test_paths.hpp"
 #include <sys/wait.h>
 
 namespace magfem::test {
@@ -14,7 +15,7 @@ struct CliOutcome {
 };
 
 inline CliOutcome run_cli(const std::string& args) {
-  const std::string cmd = std::string(MAGFEM_BINARY) + " " + args + " 2>&1";
+  const std::string cmd = std::string(magfem::test::magfem_binary()) + " " + args + " 2>&1";
   CliOutcome o;
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};

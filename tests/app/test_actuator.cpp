@@ -27,6 +27,7 @@
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "tests/test_paths.hpp"
 
 using namespace magfem;
 
@@ -159,7 +160,7 @@ TEST(Actuator, OrientationGridAndCsv) {
 TEST(Actuator, CommandWritesItsOutputsAndRefusesBadInput) {
   const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "actuator_cli";
   std::filesystem::remove_all(out);
-  const std::string exe = MAGFEM_BINARY;
+  const std::string exe = magfem::test::magfem_binary();
   const std::string base = exe + " actuator " + design + " --orientations rx=0,15,ry=0,15 ";
   ASSERT_EQ(std::system((base + "--rotor rotor --torque 0,0,1 --analytic --out " + out.string() +
                          " > /dev/null")

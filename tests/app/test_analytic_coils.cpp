@@ -15,6 +15,7 @@
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "tests/test_paths.hpp"
 #include "validation/coil_closed_forms.hpp"
 #include "validation/rotor_coil_pair.hpp"
 
@@ -54,7 +55,7 @@ double table_difference(const ProbeTable& a, const ProbeTable& b, const std::str
 }
 
 int run_cli(const std::string& args, std::string& out) {
-  const std::string cmd = std::string(MAGFEM_BINARY) + " " + args + " 2>&1";
+  const std::string cmd = std::string(magfem::test::magfem_binary()) + " " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
   while (pipe && fgets(buf.data(), buf.size(), pipe))

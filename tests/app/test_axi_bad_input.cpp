@@ -10,6 +10,7 @@
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "tests/test_paths.hpp"
 #include "validation/coil_closed_forms.hpp"
 
 using namespace magfem;
@@ -108,8 +109,8 @@ TEST(AxiBadInput, CliExitsWithCode2AndWritesNothing) {
       test::write_temp_case("axi_cli_bad.yaml", replace(good, "center: [3, 0]", "center: [2, 0]"));
   const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "axi_cli_bad_out";
   std::filesystem::remove_all(out);
-  const std::string cmd =
-      std::string(MAGFEM_BINARY) + " solve " + path + " --out " + out.string() + " 2>/dev/null";
+  const std::string cmd = std::string(magfem::test::magfem_binary()) + " solve " + path +
+                          " --out " + out.string() + " 2>/dev/null";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);

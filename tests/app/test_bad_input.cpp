@@ -8,6 +8,7 @@
 #include "app/run3d.hpp"
 #include "case_helpers.hpp"
 #include "core/input_error.hpp"
+#include "tests/test_paths.hpp"
 
 using namespace magfem;
 
@@ -126,9 +127,9 @@ TEST(BadInput, MalformedPetscOptions) {
               "probes:", "solver: {order: 2, petsc_options: \"-pc_type nonsense\"}\nprobes:"));
   const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "cli_bad_petsc_out";
   std::filesystem::remove_all(out);
-  const int status = std::system(
-      (std::string(MAGFEM_BINARY) + " solve " + path + " --out " + out.string() + " 2>/dev/null")
-          .c_str());
+  const int status = std::system((std::string(magfem::test::magfem_binary()) + " solve " + path +
+                                  " --out " + out.string() + " 2>/dev/null")
+                                     .c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);
   EXPECT_FALSE(std::filesystem::exists(out));
@@ -139,8 +140,8 @@ TEST(BadInput, CliExitsWithCode2AndWritesNothing) {
       test::write_temp_case("cli_bad.yaml", replace(good, "radius: 10", "radius: -3"));
   const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "cli_bad_out";
   std::filesystem::remove_all(out);
-  const std::string cmd =
-      std::string(MAGFEM_BINARY) + " solve " + path + " --out " + out.string() + " 2>/dev/null";
+  const std::string cmd = std::string(magfem::test::magfem_binary()) + " solve " + path +
+                          " --out " + out.string() + " 2>/dev/null";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2);

@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "case_helpers.hpp"
+#include "tests/test_paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -41,9 +42,9 @@ const std::set<std::string> not_results = {
 int solve(const std::string& case_file, const fs::path& out, int threads) {
   fs::remove_all(out);
   const std::string cmd = "MAGFEM_THREADS=" + std::to_string(threads) +
-                          " OPENBLAS_NUM_THREADS=" + std::to_string(threads) + " " + MAGFEM_BINARY +
-                          " solve " + case_file + " --quiet --out " + out.string() + " > " +
-                          out.string() + ".log 2>&1";
+                          " OPENBLAS_NUM_THREADS=" + std::to_string(threads) + " " +
+                          magfem::test::magfem_binary() + " solve " + case_file +
+                          " --quiet --out " + out.string() + " > " + out.string() + ".log 2>&1";
   const int raw = std::system(cmd.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }

@@ -19,6 +19,7 @@
 
 #include "app/run_checkpoint.hpp"
 #include "case_helpers.hpp"
+#include "tests/test_paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -48,14 +49,25 @@ pid_t start_sweep(const std::string& positions, const fs::path& out, bool resume
     dup2(fd, 2);
     const int null = ::open("/dev/null", O_WRONLY);
     dup2(null, 1);
-    std::vector<const char*> argv = {
-        MAGFEM_BINARY, "sweep", case_file.c_str(), "--move",          "coil",
-        "--axis",      "z",     "--positions",     positions.c_str(), "--jobs",
-        "1",           "--out", out.c_str(),       "--mesh-scale",    mesh_scale.c_str()};
+    std::vector<const char*> argv = {magfem::test::magfem_binary(),
+                                     "sweep",
+                                     case_file.c_str(),
+                                     "--move",
+                                     "coil",
+                                     "--axis",
+                                     "z",
+                                     "--positions",
+                                     positions.c_str(),
+                                     "--jobs",
+                                     "1",
+                                     "--out",
+                                     out.c_str(),
+                                     "--mesh-scale",
+                                     mesh_scale.c_str()};
     if (resume)
       argv.push_back("--resume");
     argv.push_back(nullptr);
-    execv(MAGFEM_BINARY, const_cast<char* const*>(argv.data()));
+    execv(magfem::test::magfem_binary(), const_cast<char* const*>(argv.data()));
     _exit(127);
   }
   return pid;

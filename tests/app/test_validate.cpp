@@ -13,12 +13,14 @@
 #include "app/validate_report.hpp"
 #include "case_helpers.hpp"
 #include "core/input_error.hpp"
+#include "tests/test_paths.hpp"
 
 using namespace magfem;
 
 namespace {
 
-const std::string catalogue = std::string(MAGFEM_SOURCE_DIR) + "/validation/catalogue.yaml";
+const std::string catalogue =
+    std::string(magfem::test::source_dir()) + "/validation/catalogue.yaml";
 
 std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -56,8 +58,8 @@ struct CliRun {
 
 CliRun run_cli(const std::string& args, const std::string& tag) {
   const auto err = std::filesystem::temp_directory_path() / ("magfem_validate_" + tag + ".err");
-  const std::string cmd =
-      std::string(MAGFEM_BINARY) + " validate " + args + " > /dev/null 2> " + err.string();
+  const std::string cmd = std::string(magfem::test::magfem_binary()) + " validate " + args +
+                          " > /dev/null 2> " + err.string();
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
 }

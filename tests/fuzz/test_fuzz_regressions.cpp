@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/fuzz/fuzz_entries.hpp"
+#include "tests/test_paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,7 +29,7 @@ std::string read_bytes(const fs::path& p) {
 int replay(const std::string& target, const std::function<void(std::string_view)>& entry) {
   int n = 0;
   for (const char* kind : {"regressions", "corpus"}) {
-    const fs::path dir = fs::path(MAGFEM_SOURCE_DIR) / "tests/fuzz" / kind / target;
+    const fs::path dir = fs::path(magfem::test::source_dir()) / "tests/fuzz" / kind / target;
     if (!fs::is_directory(dir))
       continue;
     for (const auto& f : fs::directory_iterator(dir)) {

@@ -9,6 +9,7 @@
 #include "core/constants.hpp"
 #include "materials/library_text.hpp"
 #include "materials/material_library.hpp"
+#include "tests/test_paths.hpp"
 
 using magfem::Material;
 using magfem::MaterialKind;
@@ -97,7 +98,7 @@ TEST(MaterialLibrary, SoftIronsAreMonotoneAndSaturate) {
 }
 
 TEST(MaterialLibrary, EmbeddedTextIsTheSourceFile) {
-  std::ifstream in(std::string(MAGFEM_SOURCE_DIR) + "/materials/library.yaml");
+  std::ifstream in(std::string(magfem::test::source_dir()) + "/materials/library.yaml");
   ASSERT_TRUE(in.good());
   std::stringstream s;
   s << in.rdbuf();
