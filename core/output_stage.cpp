@@ -56,19 +56,29 @@ std::vector<std::string> read_manifest(const std::filesystem::path& path) {
 void OutputStage::commit() {
   namespace fs = std::filesystem;
   const bool has_record = std::find(names_.begin(), names_.end(), record_) != names_.end();
-  std::string manifest;
+  // The manifest in place during the transition lists the files of both runs, so that a
+  // commit cut short (power cut, SIGKILL) leaves no file that a later run would not clean up.
+  const std::vector<std::string> previous = read_manifest(out_dir_ / manifest_name);
+  std::string both, manifest;
   for (const auto& name : names_)
     manifest += name + "\n";
+  both = manifest;
+  for (const auto& old : previous)
+    if (std::find(names_.begin(), names_.end(), old) == names_.end())
+      both += old + "\n";
   // Staged before anything moves, so a full disk fails here, with the old run intact.
+  const std::string transition = std::string(manifest_name) + ".transition";
   write_text(manifest_name, manifest);
-  names_.pop_back();
+  write_text(transition, both);
+  names_.resize(names_.size() - 2);
 
   // From here on the directory is in transition: no record until the end. An interrupt
   // waits for the end (core/interrupt.hpp).
   const auto hold = hold_outputs();
+  fs::rename(staging_ / transition, out_dir_ / manifest_name);
   if (has_record)
     fs::remove(out_dir_ / record_);
-  for (const auto& old : read_manifest(out_dir_ / manifest_name))
+  for (const auto& old : previous)
     if (std::find(names_.begin(), names_.end(), old) == names_.end())
       fs::remove(out_dir_ / old);
   for (const auto& name : names_)

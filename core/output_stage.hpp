@@ -9,7 +9,8 @@
 // removed from the case), never anything else. The record file (summary.json unless told
 // otherwise) is deleted first and renamed into place last, so a commit interrupted half way
 // (power cut, SIGKILL) leaves a directory without a record: recognisably incomplete, never a
-// mix of two runs that looks whole.
+// mix of two runs that looks whole. During the renames the manifest lists the files of both
+// runs, so the next run into the directory removes whatever the cut one left.
 #include <filesystem>
 #include <string>
 #include <vector>
