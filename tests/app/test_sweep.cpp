@@ -120,7 +120,7 @@ TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
   // of the magnitude leaves room for the sum of the face contributions.
   expect_dipole_dipole(rows, o.axis, 1e-5);
   // The arm sphere is off the centre: not a case for the harmonic form.
-  EXPECT_EQ(sweep_method(rows, o), "charge_interaction");
+  EXPECT_EQ(sweep_method(rows, o), "charge_pair_interaction");
 }
 
 TEST(Sweep, AnalyticCompensatorSweepUsesTheHarmonicForm) {
