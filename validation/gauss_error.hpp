@@ -1,6 +1,6 @@
 #pragma once
-// A priori error of tensor Gauss-Legendre rules on charge-domain boxes, shared by the
-// face-pair interaction (pair_interaction.hpp) and the exterior-field interaction
+// Orders of tensor Gauss-Legendre rules on charge-domain boxes from their a priori error, shared by
+// the face-pair interaction (pair_interaction.hpp) and the exterior-field interaction
 // (exterior_field_interaction.hpp):
 //  - a kernel singular `rho` box radii from the box centre: the Bernstein-ellipse rate
 //    (rho + sqrt(rho^2 - 1))^(-2n) of an n-point rule;
@@ -8,23 +8,19 @@
 //    density, the Jacobian and the position are sines and cosines of the angular parameters;
 //    an n-point rule over a half-width h integrates such a product with relative error about
 //    c_n (2 h')^(2n), c_n = (n!)^4 / ((2n + 1) ((2n)!)^3) (the remainder term), taking
-//    h' = 2 h for products of up to two trigonometric factors of the same angle.
+//    h' = 3 h: the density (M.n), the Jacobian and the position each bring one trigonometric
+//    factor of the angle, so the product's derivatives grow like 3^k.
 #include <algorithm>
 #include <cmath>
 
 namespace magfem {
-
-// 1 (nothing resolved) for rho <= 1.
-inline double gauss_kernel_error(double rho, int n) {
-  return rho > 1 ? std::exp(-2.0 * n * std::acosh(rho)) : 1.0;
-}
 
 inline double gauss_angle_error(double half_angle, int n) {
   if (half_angle == 0)
     return 0;
   const double log_c =
       4 * std::lgamma(n + 1.0) - std::log(2.0 * n + 1) - 3 * std::lgamma(2.0 * n + 1);
-  return std::exp(log_c + 2.0 * n * std::log(4 * half_angle));
+  return std::exp(log_c + 2.0 * n * std::log(6 * half_angle));
 }
 
 // Smallest order in [min_order, max_order] whose two errors are below tolerance, or
@@ -39,10 +35,6 @@ inline int gauss_order(double tolerance, double rho, double half_angle, int min_
   while (n <= max_order && gauss_angle_error(half_angle, n) > tolerance)
     ++n;
   return n;
-}
-
-inline double gauss_error(double rho, double half_angle, int n) {
-  return std::max(gauss_kernel_error(rho, n), gauss_angle_error(half_angle, n));
 }
 
 } // namespace magfem
