@@ -26,7 +26,7 @@ namespace magfem {
 struct ExteriorFieldOptions {
   double tolerance = 1e-6; // relative: per box and for the series' tail
   int max_order = 8;       // Gauss points per direction per box
-  int n_limit = 4000;      // refuse (std::domain_error) if more degrees would be needed
+  int n_limit = 20000;     // refuse (std::domain_error) if more degrees would be needed
   int n_threads = 0;       // 0 = std::thread::hardware_concurrency()
 };
 
