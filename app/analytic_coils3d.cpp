@@ -13,6 +13,7 @@
 #include "validation/analytic_force.hpp"
 #include "validation/azimuthal_current_wrench.hpp"
 #include "validation/coil_closed_forms.hpp"
+#include "validation/pair_interaction.hpp"
 
 namespace magfem {
 namespace {
@@ -264,9 +265,10 @@ void analytic_coils_3d(AnalyticRun& run, const ChargeModelOptions& field_options
       (magnet_inside(f, m) ? in : out).push_back(m);
     ForceTorque total;
     if (!in.empty() && !out.empty()) {
-      ChargeInteractionOptions o;
-      o.field = field_options;
-      total = total + charge_interaction(in, out, f.torque_point, o);
+      PairInteractionOptions o;
+      o.tolerance = field_options.tolerance;
+      o.n_threads = field_options.n_threads;
+      total = total + pair_interaction(in, out, f.torque_point, o).on_A;
     }
     for (std::size_t k = 0; k < coils.size(); ++k) {
       if (coil_in[k]) {

@@ -38,15 +38,38 @@ bool shell_outside(const AnalyticMagnet& m, double r) {
   return seg && m.placement.translation.norm() < 1e-12 && seg->r_inner >= r - 1e-12;
 }
 
+// A sphere containing the part (centre, radius), for skipping pairs that cannot overlap.
+std::pair<Vec3, double> bounding_sphere(const Part3D& part) {
+  return std::visit(
+      [&](const auto& s) -> std::pair<Vec3, double> {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, SphericalSegment>)
+          return {part.placement.translation, s.r_outer};
+        else if constexpr (std::is_same_v<T, Cylinder>)
+          return {part.placement.to_global(Vec3(0, 0, 0.5 * s.height)),
+                  std::hypot(s.r_outer, 0.5 * s.height)};
+        else
+          return {part.placement.translation, 0.5 * s.size.norm()};
+      },
+      part.shape);
+}
+
 // The charge model superposes magnets: two that share volume would be added up without
-// complaint (the mesher refuses them in FE). Parts that only touch are fine.
+// complaint (the mesher refuses them in FE). Parts that only touch are fine. Pairs whose
+// bounding spheres are apart are skipped (a 180-cylinder array has 16,000 pairs).
 void reject_overlaps(const CaseSpec& spec) {
   const auto& parts = spec.geometry3d.parts;
+  std::vector<std::pair<Vec3, double>> spheres;
+  for (const auto& part : parts)
+    spheres.push_back(bounding_sphere(part));
   for (std::size_t j = 0; j < parts.size(); ++j) {
     if (is_air(*spec.regions[j].material))
       continue;
     for (std::size_t i = 0; i < j; ++i) {
       if (is_air(*spec.regions[i].material))
+        continue;
+      const double apart = (spheres[i].first - spheres[j].first).norm();
+      if (apart > 1.001 * (spheres[i].second + spheres[j].second))
         continue;
       auto x = overlap_point(parts[i], parts[j], 12);
       if (!x)

@@ -316,6 +316,8 @@ int run_sweep(const Args& args) {
     if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
       p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
       p["force_bound_N"] = r.force_bound;
+    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
+      p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
     if (!r.ok)
       p["error"] = r.error, ++failed;
     total_s += r.seconds;

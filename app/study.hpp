@@ -49,6 +49,9 @@ struct StudyDesign {
   bool ok = false;
   std::string error;
   std::string method; // sweep_method() of its sweep
+  // Largest torque accuracy figure of its positions, N m: the truncation bound of the harmonic
+  // form or the estimated quadrature error of the face-pair interaction (0 for FE).
+  double torque_accuracy = 0;
   double seconds = 0;
 };
 

@@ -47,8 +47,10 @@ struct SweepRow {
   std::string error; // why the position failed
   double seconds = 0;
   long unknowns = 0; // FE only
-  // How the position was computed: "harmonic_interaction", "charge_interaction" or
-  // "maxwell_stress_sphere"; for the harmonic form its degrees and truncation bounds.
+  // How the position was computed: "harmonic_interaction", "exterior_field_interaction",
+  // "charge_pair_interaction" or "maxwell_stress_sphere"; for the harmonic form its degrees
+  // and (rigorous) truncation bounds, for the other analytic ones their estimated error
+  // (validation/exterior_field_interaction.hpp, pair_interaction.hpp).
   std::string method;
   int n_max = 0;
   double torque_bound = 0, force_bound = 0; // N m, N

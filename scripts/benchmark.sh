@@ -153,6 +153,14 @@ $magfem study examples/3d/compensator_study.yaml --param R_in=25:0.5:34.5 --para
   --objective peak_torque --rotate outer --axis y --angles 0:10:180 --out "$out/study" > /dev/null
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    400 designs, wall %.1f s\n", b - a }'
 echo
+echo "== non-axisymmetric analytic interaction (issue 14 target: >= 20x faster than the field-quadrature"
+echo "   charge interaction at the same accuracy; errors against a 1e-11 face-pair reference)"
+build/validation/magfem_bench_pair | sed 's/^/    /'
+start=$(date +%s.%N)
+$magfem study examples/3d/compensator_prototype_height_study.yaml --param height=5,7.5,10,12.5,15,20,25,30,40,50,60 \
+  --objective torque_at:90 --rotate outer --axis y --quiet --out "$out/proto" | sed 's/^/    /'
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    prototype height study (thesis Fig. 6.7: 5.2 N m at 50 mm), 11 designs, wall %.1f s\n", b - a }'
+echo
 echo "== spherical actuator (issue 10 target: analytic torque constants, 7 x 7 grid, 12 coils <= 10 s)"
 start=$(date +%s.%N)
 $magfem actuator examples/3d/spherical_actuator_design.yaml --rotor rotor \

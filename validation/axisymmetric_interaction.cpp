@@ -199,6 +199,12 @@ std::optional<AxisymmetricBody> axisymmetric_body(const AnalyticMagnet& magnet, 
   return body;
 }
 
+AxisymmetricMoments axisymmetric_source_moments(const AxisymmetricBody& body, double a, int n_max) {
+  Moments m{std::vector<double>(n_max + 1, 0.0), std::vector<double>(n_max + 1, 0.0)};
+  add_interior(body, a, n_max, m);
+  return {std::move(m.value), std::move(m.bound)};
+}
+
 AxisymmetricInteraction axisymmetric_interaction(const std::vector<AnalyticMagnet>& on,
                                                  const std::vector<AnalyticMagnet>& by,
                                                  const AxisymmetricInteractionOptions& options) {

@@ -55,6 +55,14 @@ struct AxisymmetricBody {
 std::optional<AxisymmetricBody> axisymmetric_body(const AnalyticMagnet& magnet,
                                                   std::string* why = nullptr);
 
+// The moments that give a body's potential outside the sphere of radius a >= r_outer:
+//   psi(x) = (1/4pi) sum_n q_n r^-(n+1) P_n(x.axis / r),  q_n = a^(n+2) value[n],
+// q_n = int M . grad(r^n P_n(cos t)) dV (closed forms, see above); bound[n] >= |value[n]|.
+struct AxisymmetricMoments {
+  std::vector<double> value, bound; // n = 0..n_max
+};
+AxisymmetricMoments axisymmetric_source_moments(const AxisymmetricBody& body, double a, int n_max);
+
 struct AxisymmetricInteractionOptions {
   double tolerance = 1e-10; // truncation bound relative to the series' scale (see above)
   int n_limit = 200000;     // refuse (std::domain_error) if more degrees would be needed

@@ -360,31 +360,30 @@ BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub) {
   return e;
 }
 
-std::vector<ParamBox> root_boxes(const ChargeDomain& d, double max_angle) {
+std::array<bool, 3> angular_parameters(const ChargeDomain& d) {
   using K = ChargeDomainKind;
-  std::array<bool, 3> angular{false, false, false};
   switch (d.kind) {
   case K::sphere_face:
-    angular = {true, true, false};
-    break;
+    return {true, true, false};
   case K::cone_face:
   case K::meridian_face:
   case K::cap_face:
-    angular = {false, true, false};
-    break;
+    return {false, true, false};
   case K::sphere_volume:
-    angular = {false, true, true};
-    break;
+    return {false, true, true};
   case K::mantle_face:
-    angular = {true, false, false};
-    break;
+    return {true, false, false};
   case K::cylinder_volume:
-    angular = {false, true, false};
-    break;
+    return {false, true, false};
   case K::box_face:
   case K::box_volume:
     break;
   }
+  return {false, false, false};
+}
+
+std::vector<ParamBox> root_boxes(const ChargeDomain& d, double max_angle) {
+  const std::array<bool, 3> angular = angular_parameters(d);
   std::vector<ParamBox> boxes{d.box};
   for (int a = 0; a < 3; ++a) {
     if (!angular[a])

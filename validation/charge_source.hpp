@@ -94,6 +94,9 @@ struct BoxExtent {
 };
 BoxExtent box_extent(const ChargeDomain& domain, const ParamBox& sub);
 
+// Which parameters of the domain are angles (the others are lengths).
+std::array<bool, 3> angular_parameters(const ChargeDomain& domain);
+
 // The domain's box cut into a grid whose angular parameters span at most max_angle each:
 // Gauss rules in an angle converge at a rate set by the complex distance ln(D/a) of the
 // singularity, which for large arcs is much less than the chord distance suggests.

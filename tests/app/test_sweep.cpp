@@ -116,11 +116,12 @@ TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
   o.analytic = true;
   const auto rows = run_sweep(spec, o);
   ASSERT_EQ(rows.size(), 3u);
-  // The charge interaction integrates to a relative tolerance of 1e-6 of the total; 1e-5
+  // The analytic interaction integrates to a relative tolerance of 1e-6 per box; 1e-5
   // of the magnitude leaves room for the sum of the face contributions.
   expect_dipole_dipole(rows, o.axis, 1e-5);
-  // The arm sphere is off the centre: not a case for the harmonic form.
-  EXPECT_EQ(sweep_method(rows, o), "charge_interaction");
+  // The arm sphere is off the centre: not a case for the harmonic form, but it lies outside
+  // the centred sphere (magnetized along its own axis), whose exterior field it sees.
+  EXPECT_EQ(sweep_method(rows, o), "exterior_field_interaction");
 }
 
 TEST(Sweep, AnalyticCompensatorSweepUsesTheHarmonicForm) {

@@ -1,0 +1,40 @@
+#pragma once
+// Orders of tensor Gauss-Legendre rules on charge-domain boxes from their a priori error, shared by
+// the face-pair interaction (pair_interaction.hpp) and the exterior-field interaction
+// (exterior_field_interaction.hpp):
+//  - a kernel singular `rho` box radii from the box centre: the Bernstein-ellipse rate
+//    (rho + sqrt(rho^2 - 1))^(-2n) of an n-point rule;
+//  - the box's own angles: far from the singularity the kernel is nearly constant, but the
+//    density, the Jacobian and the position are sines and cosines of the angular parameters;
+//    an n-point rule over a half-width h integrates such a product with relative error about
+//    c_n (2 h')^(2n), c_n = (n!)^4 / ((2n + 1) ((2n)!)^3) (the remainder term), taking
+//    h' = 3 h: the density (M.n), the Jacobian and the position each bring one trigonometric
+//    factor of the angle, so the product's derivatives grow like 3^k.
+#include <algorithm>
+#include <cmath>
+
+namespace magfem {
+
+inline double gauss_angle_error(double half_angle, int n) {
+  if (half_angle == 0)
+    return 0;
+  const double log_c =
+      4 * std::lgamma(n + 1.0) - std::log(2.0 * n + 1) - 3 * std::lgamma(2.0 * n + 1);
+  return std::exp(log_c + 2.0 * n * std::log(6 * half_angle));
+}
+
+// Smallest order in [min_order, max_order] whose two errors are below tolerance, or
+// max_order + 1 if none is.
+inline int gauss_order(double tolerance, double rho, double half_angle, int min_order,
+                       int max_order) {
+  int n = min_order;
+  if (rho <= 1.0 + 1e-12)
+    return max_order + 1;
+  const double kernel = std::ceil(std::log(1.0 / tolerance) / (2.0 * std::acosh(rho)));
+  n = static_cast<int>(std::clamp(kernel, double(min_order), double(max_order + 1)));
+  while (n <= max_order && gauss_angle_error(half_angle, n) > tolerance)
+    ++n;
+  return n;
+}
+
+} // namespace magfem
