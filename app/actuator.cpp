@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include "app/actuator_coil_pitch.hpp"
 #include "app/actuator_plot.hpp"
 #include "app/analytic_scene.hpp"
 #include "app/build_info.hpp"
@@ -129,18 +131,8 @@ std::vector<TorqueConstants> analytic_gamma(const CaseSpec& spec, const std::str
                                             const std::vector<CoilField>& coils,
                                             const std::vector<Eigen::Matrix3d>& rotations,
                                             const CoilRule& rule, std::vector<std::string>& notes) {
-  for (std::size_t i = 0; i < spec.regions.size(); ++i)
-    if (spec.regions[i].material->is_magnet() && !in_rotor(spec.geometry3d.parts[i], rotor))
-      throw InputError(spec.file, spec.regions[i].line, "regions[" + std::to_string(i) + "]",
-                       "magnet " + spec.regions[i].name + " is not on the rotor '" + rotor +
-                           "'; the analytic torque constants need every magnet on it");
-  const AnalyticScene scene = analytic_scene(magnets_and_iron(spec));
-  for (const auto& n : scene.notes)
-    notes.push_back(n);
-  const ChargeModel model(scene.magnets, scene.spheres);
-  return torque_constants_rotating(
-      coils, rotations, [&model](const std::vector<Eigen::Vector3d>& x) { return model.B(x); },
-      rule);
+  return torque_constants_rotating(coils, rotations, analytic_rotor_field(spec, rotor, notes),
+                                   rule);
 }
 
 std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOptions& options,
@@ -219,6 +211,20 @@ nlohmann::ordered_json orientation_json(const ActuatorResult& r, int i) {
 }
 
 } // namespace
+
+FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& rotor,
+                                   std::vector<std::string>& notes) {
+  for (std::size_t i = 0; i < spec.regions.size(); ++i)
+    if (spec.regions[i].material->is_magnet() && !in_rotor(spec.geometry3d.parts[i], rotor))
+      throw InputError(spec.file, spec.regions[i].line, "regions[" + std::to_string(i) + "]",
+                       "magnet " + spec.regions[i].name + " is not on the rotor '" + rotor +
+                           "'; the analytic torque constants need every magnet on it");
+  const AnalyticScene scene = analytic_scene(magnets_and_iron(spec));
+  for (const auto& n : scene.notes)
+    notes.push_back(n);
+  const auto model = std::make_shared<const ChargeModel>(scene.magnets, scene.spheres);
+  return [model](const std::vector<Eigen::Vector3d>& x) { return model->B(x); };
+}
 
 Eigen::Matrix3d rotor_rotation(const Orientation& o) {
   using A = Eigen::AngleAxisd;
@@ -321,6 +327,8 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
       o.order = parse_cli_order(value());
     else if (arg == "--out")
       o.out_dir = value();
+    else if (arg == "--coil-pitch")
+      o.coil_pitch = value();
     else if (arg.rfind("--", 0) == 0)
       throw InputError(cli, 0, arg, "unknown option for actuator");
     else
@@ -468,6 +476,8 @@ std::string torque_constants_csv(const ActuatorResult& r) {
 }
 
 int run_actuator_command(const ActuatorOptions& options) {
+  if (!options.coil_pitch.empty())
+    return run_coil_pitch_command(options);
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Orientation> orientations = parse_orientations(options.orientations);
   const CaseSpec spec = read_case(options.case_file, options.parameters);

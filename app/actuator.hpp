@@ -1,6 +1,7 @@
 #pragma once
 // `magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]
-//  [--analytic] [--param NAME=VALUE ..] [--mesh-scale S] [--order 1|2] [--out DIR]`:
+//  [--analytic] [--param NAME=VALUE ..] [--mesh-scale S] [--order 1|2] [--out DIR]`
+//  [--coil-pitch START:STEP:END] (the thesis's coil-pitch study, app/actuator_coil_pitch.hpp):
 // a multi-coil spherical actuator (thesis ch. 5-6) over a set of rotor orientations. For each
 // orientation: the torque constants Gamma of every coil (app/torque_constants.hpp), the
 // currents of eq. 5.4 for the demanded torque with their copper loss, peak and cond(Gamma)
@@ -60,7 +61,9 @@ struct ActuatorOptions {
   double mesh_scale = 0; // FE: RunOverrides
   int order = 0;
   bool verify = false;
-  CoilRule coil_rule; // quadrature over each coil (app/torque_constants.hpp)
+  CoilRule coil_rule;     // quadrature over each coil (app/torque_constants.hpp)
+  std::string coil_pitch; // --coil-pitch START:STEP:END (deg): the study of
+                          // app/actuator_coil_pitch.hpp instead of the case's coils
   std::string out_dir;
 };
 
@@ -100,6 +103,12 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
 // Checks the case against the options (exit-2 InputError: unknown rotor group, coils on the
 // rotor or inside its swept sphere, stator parts inside it, no coils).
 void check_actuator_case(const CaseSpec& spec, const std::string& rotor);
+
+// The rotor's B (tesla) in its own frame by the charge model with spherical imaging; every
+// magnet must be on the rotor (InputError naming the magnet otherwise). Approximations made
+// go to `notes`. The model lives as long as the returned function.
+FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& rotor,
+                                   std::vector<std::string>& notes);
 
 // Gamma at every orientation (analytic or FE) and the commutation of every demand.
 ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options,
