@@ -105,6 +105,7 @@ CoilPitchStudy run_coil_pitch_study(const CaseSpec& spec, const ActuatorOptions&
       throw InputError(cli, 0, "--coil-pitch",
                        "coil pitch " + std::to_string(p) + " deg is outside 10..120 deg");
   CoilPitchStudy study;
+  study.n_orientations = orientations.size();
   const auto t0 = std::chrono::steady_clock::now();
   const FieldAtPoints b = analytic_rotor_field(spec, options.rotor, study.notes);
   const std::vector<CoilField> probe{CoilField(thesis_coil_array(tpl, 50 * deg_to_rad).front())};

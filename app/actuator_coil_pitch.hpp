@@ -47,6 +47,7 @@ struct CoilPitchRow {
 
 struct CoilPitchStudy {
   std::vector<CoilPitchRow> rows;
+  std::size_t n_orientations = 0;
   double table_step_deg = 0;
   std::size_t table_points = 0;
   double table_seconds = 0, study_seconds = 0;
