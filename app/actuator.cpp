@@ -226,6 +226,26 @@ FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& roto
   return [model](const std::vector<Eigen::Vector3d>& x) { return model->B(x); };
 }
 
+std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const std::string& rotor,
+                                                   const std::vector<Orientation>& orientations,
+                                                   const CoilRule& rule) {
+  std::vector<std::string> notes;
+  std::vector<CoilField> coils;
+  Eigen::VectorXd current(static_cast<Eigen::Index>(spec.geometry3d.coils.size()));
+  for (const auto& c : spec.geometry3d.coils) {
+    current(static_cast<Eigen::Index>(coils.size())) = c.current;
+    coils.emplace_back(c);
+  }
+  std::vector<Eigen::Matrix3d> rotations;
+  for (const auto& o : orientations)
+    rotations.push_back(rotor_rotation(o));
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& g :
+       torque_constants_rotating(coils, rotations, analytic_rotor_field(spec, rotor, notes), rule))
+    out.push_back(-(g * current));
+  return out;
+}
+
 Eigen::Matrix3d rotor_rotation(const Orientation& o) {
   using A = Eigen::AngleAxisd;
   return (A(o.rz_deg * deg_to_rad, Eigen::Vector3d::UnitZ()) *

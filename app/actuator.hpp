@@ -110,6 +110,14 @@ void check_actuator_case(const CaseSpec& spec, const std::string& rotor);
 FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& rotor,
                                    std::vector<std::string>& notes);
 
+// Torque (N m, about the origin) on the rotor at each orientation from the case's own coil
+// currents, by the Lorentz torque in the charge model's field: minus the torque on the
+// coils, sum_k Gamma_k i_k. No check that the rotor can turn (check_actuator_case): rotors
+// that reach around the coils (seed 001's design B) are allowed.
+std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const std::string& rotor,
+                                                   const std::vector<Orientation>& orientations,
+                                                   const CoilRule& rule = {});
+
 // Gamma at every orientation (analytic or FE) and the commutation of every demand.
 ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options,
                             const std::vector<Orientation>& orientations);

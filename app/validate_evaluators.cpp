@@ -121,6 +121,7 @@ const std::map<std::string, Evaluator>& evaluator_registry() {
     register_thesis_ch5(r);
     register_harwin(r);
     register_voicecoil(r);
+    register_dmp(r);
     return r;
   }();
   return registry;

@@ -95,5 +95,6 @@ void register_thesis_ch4(std::map<std::string, Evaluator>& r);
 void register_thesis_ch5(std::map<std::string, Evaluator>& r);
 void register_harwin(std::map<std::string, Evaluator>& r);
 void register_voicecoil(std::map<std::string, Evaluator>& r);
+void register_dmp(std::map<std::string, Evaluator>& r);
 
 } // namespace magfem
