@@ -246,6 +246,27 @@ std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const s
   return out;
 }
 
+double InclinationTorque::peak_Nm() const {
+  double p = 0;
+  for (double t : ty_Nm)
+    p = std::max(p, std::abs(t));
+  return p;
+}
+
+InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
+                                          double max_deg, double step_deg) {
+  InclinationTorque c;
+  std::vector<Orientation> grid;
+  const int n = static_cast<int>(std::floor(max_deg / step_deg + 1e-9));
+  for (int i = -n; i <= n; ++i) {
+    c.ry_deg.push_back(step_deg * i);
+    grid.push_back({0, step_deg * i, 0});
+  }
+  for (const auto& t : analytic_rotor_torque(spec, rotor, grid))
+    c.ty_Nm.push_back(t.y());
+  return c;
+}
+
 Eigen::Matrix3d rotor_rotation(const Orientation& o) {
   using A = Eigen::AngleAxisd;
   return (A(o.rz_deg * deg_to_rad, Eigen::Vector3d::UnitZ()) *

@@ -118,6 +118,15 @@ std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const s
                                                    const std::vector<Orientation>& orientations,
                                                    const CoilRule& rule = {});
 
+// The rotor torque about y (analytic_rotor_torque) against the inclination about y, from
+// -max_deg to max_deg in steps of step_deg (seed 001's Fig. 4 curve).
+struct InclinationTorque {
+  std::vector<double> ry_deg, ty_Nm;
+  double peak_Nm() const; // max |T_y|
+};
+InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
+                                          double max_deg, double step_deg);
+
 // Gamma at every orientation (analytic or FE) and the commutation of every demand.
 ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options,
                             const std::vector<Orientation>& orientations);

@@ -4,8 +4,6 @@
 // model's own physics: magnets as magnetic charges, coils by the Lorentz law), for the two
 // cases (examples/3d/dmp_actuator_{a,b}.yaml, whose headers list the assumptions); the
 // quantity is the ratio of the peak torques.
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 
 #include "app/actuator.hpp"
@@ -15,27 +13,9 @@ namespace magfem {
 
 namespace {
 
-struct TorqueCurve {
-  std::vector<double> ry_deg, ty_Nm;
-  double peak() const {
-    double p = 0;
-    for (double t : ty_Nm)
-      p = std::max(p, std::abs(t));
-    return p;
-  }
-};
-
-std::shared_ptr<const TorqueCurve> curve(const EvalContext& ctx, const std::string& file) {
-  return ctx.cache.get<TorqueCurve>("dmp_torque:" + file, [&] {
-    TorqueCurve c;
-    std::vector<Orientation> grid;
-    for (int i = -12; i <= 12; ++i) {
-      c.ry_deg.push_back(2.5 * i);
-      grid.push_back({0, 2.5 * i, 0});
-    }
-    for (const auto& t : analytic_rotor_torque(*cached_case(ctx.cache, file), "rotor", grid))
-      c.ty_Nm.push_back(t.y());
-    return c;
+std::shared_ptr<const InclinationTorque> curve(const EvalContext& ctx, const std::string& file) {
+  return ctx.cache.get<InclinationTorque>("dmp_torque:" + file, [&] {
+    return analytic_torque_about_y(*cached_case(ctx.cache, file), "rotor", 30, 2.5);
   });
 }
 
@@ -47,9 +27,9 @@ EvalResult design_ratio(const EvalContext& ctx) {
   const auto b = curve(ctx, ctx.entry.case_file);
   const auto a = curve(ctx, ref);
   EvalResult r;
-  r.analytic = b->peak() / a->peak();
-  r.details["peak_torque_A_Nm"] = a->peak();
-  r.details["peak_torque_B_Nm"] = b->peak();
+  r.analytic = b->peak_Nm() / a->peak_Nm();
+  r.details["peak_torque_A_Nm"] = a->peak_Nm();
+  r.details["peak_torque_B_Nm"] = b->peak_Nm();
   r.plots.push_back(
       {"Rotor torque about y, EM pair at +2 / -2 A",
        "inclination about y (deg)",

@@ -24,32 +24,6 @@
 
 using namespace magfem;
 
-namespace {
-
-struct Curve {
-  std::vector<double> ry, ty;
-  double peak() const {
-    double p = 0;
-    for (double t : ty)
-      p = std::max(p, std::abs(t));
-    return p;
-  }
-};
-
-Curve torque_curve(const CaseSpec& spec) {
-  Curve out;
-  std::vector<Orientation> grid;
-  for (int i = -12; i <= 12; ++i) {
-    out.ry.push_back(2.5 * i);
-    grid.push_back({0, 2.5 * i, 0});
-  }
-  for (const auto& t : analytic_rotor_torque(spec, "rotor", grid))
-    out.ty.push_back(t.y());
-  return out;
-}
-
-} // namespace
-
 TEST(DmpActuator, DesignBAgainstDesignA) {
   const CaseSpec a = read_case(test::example("3d/dmp_actuator_a.yaml"));
   const CaseSpec b = read_case(test::example("3d/dmp_actuator_b.yaml"));
@@ -63,18 +37,20 @@ TEST(DmpActuator, DesignBAgainstDesignA) {
                   .norm(),
               1e-12);
   }
-  const Curve ca = torque_curve(a), cb = torque_curve(b);
+  const auto ca = analytic_torque_about_y(a, "rotor", 30, 2.5);
+  const auto cb = analytic_torque_about_y(b, "rotor", 30, 2.5);
   std::printf("rotor inclination ry (deg), rotor torque T_y (N m): design A, design B, B / A\n");
-  for (std::size_t i = 0; i < ca.ry.size(); ++i)
-    std::printf("  %5.1f  %10.5f  %10.5f  %6.3f\n", ca.ry[i], ca.ty[i], cb.ty[i],
-                cb.ty[i] / ca.ty[i]);
+  for (std::size_t i = 0; i < ca.ry_deg.size(); ++i)
+    std::printf("  %5.1f  %10.5f  %10.5f  %6.3f\n", ca.ry_deg[i], ca.ty_Nm[i], cb.ty_Nm[i],
+                cb.ty_Nm[i] / ca.ty_Nm[i]);
   std::printf("peak |T_y|: design A %.4f N m, design B %.4f N m, ratio %.3f (paper: about 2)\n",
-              ca.peak(), cb.peak(), cb.peak() / ca.peak());
-  for (const Curve* c : {&ca, &cb}) {
-    const std::size_t n = c->ty.size();
+              ca.peak_Nm(), cb.peak_Nm(), cb.peak_Nm() / ca.peak_Nm());
+  for (const InclinationTorque* c : {&ca, &cb}) {
+    const std::size_t n = c->ty_Nm.size();
     for (std::size_t i = 0; i < n; ++i)
-      EXPECT_LT(std::abs(c->ty[i] + c->ty[n - 1 - i]), 1e-5 * c->peak()) << c->ry[i] << " deg";
+      EXPECT_LT(std::abs(c->ty_Nm[i] + c->ty_Nm[n - 1 - i]), 1e-5 * c->peak_Nm())
+          << c->ry_deg[i] << " deg";
   }
-  EXPECT_GT(ca.peak(), 0);
-  EXPECT_GT(cb.peak(), ca.peak());
+  EXPECT_GT(ca.peak_Nm(), 0);
+  EXPECT_GT(cb.peak_Nm(), ca.peak_Nm());
 }
