@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include "app/actuator_coil_pitch.hpp"
 #include "app/actuator_plot.hpp"
 #include "app/analytic_scene.hpp"
 #include "app/build_info.hpp"
@@ -129,18 +131,8 @@ std::vector<TorqueConstants> analytic_gamma(const CaseSpec& spec, const std::str
                                             const std::vector<CoilField>& coils,
                                             const std::vector<Eigen::Matrix3d>& rotations,
                                             const CoilRule& rule, std::vector<std::string>& notes) {
-  for (std::size_t i = 0; i < spec.regions.size(); ++i)
-    if (spec.regions[i].material->is_magnet() && !in_rotor(spec.geometry3d.parts[i], rotor))
-      throw InputError(spec.file, spec.regions[i].line, "regions[" + std::to_string(i) + "]",
-                       "magnet " + spec.regions[i].name + " is not on the rotor '" + rotor +
-                           "'; the analytic torque constants need every magnet on it");
-  const AnalyticScene scene = analytic_scene(magnets_and_iron(spec));
-  for (const auto& n : scene.notes)
-    notes.push_back(n);
-  const ChargeModel model(scene.magnets, scene.spheres);
-  return torque_constants_rotating(
-      coils, rotations, [&model](const std::vector<Eigen::Vector3d>& x) { return model.B(x); },
-      rule);
+  return torque_constants_rotating(coils, rotations, analytic_rotor_field(spec, rotor, notes),
+                                   rule);
 }
 
 std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOptions& options,
@@ -219,6 +211,61 @@ nlohmann::ordered_json orientation_json(const ActuatorResult& r, int i) {
 }
 
 } // namespace
+
+FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& rotor,
+                                   std::vector<std::string>& notes) {
+  for (std::size_t i = 0; i < spec.regions.size(); ++i)
+    if (spec.regions[i].material->is_magnet() && !in_rotor(spec.geometry3d.parts[i], rotor))
+      throw InputError(spec.file, spec.regions[i].line, "regions[" + std::to_string(i) + "]",
+                       "magnet " + spec.regions[i].name + " is not on the rotor '" + rotor +
+                           "'; the analytic torque constants need every magnet on it");
+  const AnalyticScene scene = analytic_scene(magnets_and_iron(spec));
+  for (const auto& n : scene.notes)
+    notes.push_back(n);
+  const auto model = std::make_shared<const ChargeModel>(scene.magnets, scene.spheres);
+  return [model](const std::vector<Eigen::Vector3d>& x) { return model->B(x); };
+}
+
+std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const std::string& rotor,
+                                                   const std::vector<Orientation>& orientations,
+                                                   const CoilRule& rule) {
+  std::vector<std::string> notes;
+  std::vector<CoilField> coils;
+  Eigen::VectorXd current(static_cast<Eigen::Index>(spec.geometry3d.coils.size()));
+  for (const auto& c : spec.geometry3d.coils) {
+    current(static_cast<Eigen::Index>(coils.size())) = c.current;
+    coils.emplace_back(c);
+  }
+  std::vector<Eigen::Matrix3d> rotations;
+  for (const auto& o : orientations)
+    rotations.push_back(rotor_rotation(o));
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& g :
+       torque_constants_rotating(coils, rotations, analytic_rotor_field(spec, rotor, notes), rule))
+    out.push_back(-(g * current));
+  return out;
+}
+
+double InclinationTorque::peak_Nm() const {
+  double p = 0;
+  for (double t : ty_Nm)
+    p = std::max(p, std::abs(t));
+  return p;
+}
+
+InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
+                                          double max_deg, double step_deg) {
+  InclinationTorque c;
+  std::vector<Orientation> grid;
+  const int n = static_cast<int>(std::floor(max_deg / step_deg + 1e-9));
+  for (int i = -n; i <= n; ++i) {
+    c.ry_deg.push_back(step_deg * i);
+    grid.push_back({0, step_deg * i, 0});
+  }
+  for (const auto& t : analytic_rotor_torque(spec, rotor, grid))
+    c.ty_Nm.push_back(t.y());
+  return c;
+}
 
 Eigen::Matrix3d rotor_rotation(const Orientation& o) {
   using A = Eigen::AngleAxisd;
@@ -321,6 +368,8 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
       o.order = parse_cli_order(value());
     else if (arg == "--out")
       o.out_dir = value();
+    else if (arg == "--coil-pitch")
+      o.coil_pitch = value();
     else if (arg.rfind("--", 0) == 0)
       throw InputError(cli, 0, arg, "unknown option for actuator");
     else
@@ -468,6 +517,8 @@ std::string torque_constants_csv(const ActuatorResult& r) {
 }
 
 int run_actuator_command(const ActuatorOptions& options) {
+  if (!options.coil_pitch.empty())
+    return run_coil_pitch_command(options);
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Orientation> orientations = parse_orientations(options.orientations);
   const CaseSpec spec = read_case(options.case_file, options.parameters);

@@ -1,6 +1,7 @@
 #pragma once
 // `magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]
-//  [--analytic] [--param NAME=VALUE ..] [--mesh-scale S] [--order 1|2] [--out DIR]`:
+//  [--analytic] [--param NAME=VALUE ..] [--mesh-scale S] [--order 1|2] [--out DIR]`
+//  [--coil-pitch START:STEP:END] (the thesis's coil-pitch study, app/actuator_coil_pitch.hpp):
 // a multi-coil spherical actuator (thesis ch. 5-6) over a set of rotor orientations. For each
 // orientation: the torque constants Gamma of every coil (app/torque_constants.hpp), the
 // currents of eq. 5.4 for the demanded torque with their copper loss, peak and cond(Gamma)
@@ -60,7 +61,9 @@ struct ActuatorOptions {
   double mesh_scale = 0; // FE: RunOverrides
   int order = 0;
   bool verify = false;
-  CoilRule coil_rule; // quadrature over each coil (app/torque_constants.hpp)
+  CoilRule coil_rule;     // quadrature over each coil (app/torque_constants.hpp)
+  std::string coil_pitch; // --coil-pitch START:STEP:END (deg): the study of
+                          // app/actuator_coil_pitch.hpp instead of the case's coils
   std::string out_dir;
 };
 
@@ -100,6 +103,29 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
 // Checks the case against the options (exit-2 InputError: unknown rotor group, coils on the
 // rotor or inside its swept sphere, stator parts inside it, no coils).
 void check_actuator_case(const CaseSpec& spec, const std::string& rotor);
+
+// The rotor's B (tesla) in its own frame by the charge model with spherical imaging; every
+// magnet must be on the rotor (InputError naming the magnet otherwise). Approximations made
+// go to `notes`. The model lives as long as the returned function.
+FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& rotor,
+                                   std::vector<std::string>& notes);
+
+// Torque (N m, about the origin) on the rotor at each orientation from the case's own coil
+// currents, by the Lorentz torque in the charge model's field: minus the torque on the
+// coils, sum_k Gamma_k i_k. No check that the rotor can turn (check_actuator_case): rotors
+// that reach around the coils (seed 001's design B) are allowed.
+std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const std::string& rotor,
+                                                   const std::vector<Orientation>& orientations,
+                                                   const CoilRule& rule = {});
+
+// The rotor torque about y (analytic_rotor_torque) against the inclination about y, from
+// -max_deg to max_deg in steps of step_deg (seed 001's Fig. 4 curve).
+struct InclinationTorque {
+  std::vector<double> ry_deg, ty_Nm;
+  double peak_Nm() const; // max |T_y|
+};
+InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
+                                          double max_deg, double step_deg);
 
 // Gamma at every orientation (analytic or FE) and the commutation of every demand.
 ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options,

@@ -92,4 +92,31 @@ bool plot_power_map(const ActuatorResult& r, const std::string& title,
   return run_gnuplot(script, data, why);
 }
 
+bool plot_coil_pitch(const CoilPitchStudy& study, const std::string& title,
+                     const std::filesystem::path& png, std::string& why) {
+  if (study.rows.size() < 2) {
+    why = "one coil pitch only";
+    return false;
+  }
+  if (!gnuplot_available(why))
+    return false;
+  const auto script = std::filesystem::path(png).replace_extension(".gp");
+  const auto data = std::filesystem::path(png).replace_extension(".dat");
+  {
+    std::ofstream f(data);
+    for (const auto& r : study.rows)
+      f << r.pitch_deg << ' ' << r.P_W[0] << ' ' << r.P_W[1] << ' ' << r.P_W[2] << ' ' << r.mean_W()
+        << '\n';
+    std::ofstream g(script);
+    g << "set terminal png size 760,520 noenhanced\n"
+      << "set output '" << png.string() << "'\n"
+      << "set title \"" << gnuplot_title(title) << "\"\n"
+      << "set xlabel 'coil pitch (deg)'\nset ylabel 'mean copper loss at 1 N m (W)'\nset grid\n"
+      << "set key top left\n"
+      << "plot '" << data.string() << "' u 1:2 w lp t 'P_x', '' u 1:3 w lp t 'P_y', "
+      << "'' u 1:4 w lp t 'P_z', '' u 1:5 w l lw 3 t 'mean'\n";
+  }
+  return run_gnuplot(script, {data}, why);
+}
+
 } // namespace magfem

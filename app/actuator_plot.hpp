@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/actuator.hpp"
+#include "app/actuator_coil_pitch.hpp"
 
 namespace magfem {
 
@@ -13,5 +14,10 @@ namespace magfem {
 // orientation only).
 bool plot_power_map(const ActuatorResult& result, const std::string& title,
                     const std::filesystem::path& png, std::string& why);
+
+// coil_pitch.png of `magfem actuator --coil-pitch`: P_x, P_y, P_z and their mean against the
+// coil pitch (as the thesis's Figs. 5.9-5.11). False with the reason in `why` if not made.
+bool plot_coil_pitch(const CoilPitchStudy& study, const std::string& title,
+                     const std::filesystem::path& png, std::string& why);
 
 } // namespace magfem

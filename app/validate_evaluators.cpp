@@ -11,7 +11,9 @@ namespace magfem {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 } // namespace
 
 std::vector<double> EvalContext::fe_scales() const {
@@ -49,8 +51,11 @@ const ProbeTable& FeProbes::probe(const std::string& name) const {
 }
 
 nlohmann::ordered_json FeProbes::describe() const {
-  return {{"mesh_scale", mesh_scale}, {"elements", elements}, {"unknowns", unknowns},
-          {"iterations", iterations}, {"seconds", seconds}};
+  return {{"mesh_scale", mesh_scale},
+          {"elements", elements},
+          {"unknowns", unknowns},
+          {"iterations", iterations},
+          {"seconds", seconds}};
 }
 
 std::shared_ptr<const CaseSpec> cached_case(ComputeCache& cache, const std::string& case_file) {
@@ -113,8 +118,10 @@ const std::map<std::string, Evaluator>& evaluator_registry() {
     std::map<std::string, Evaluator> r;
     register_thesis_ch3(r);
     register_thesis_ch4(r);
+    register_thesis_ch5(r);
     register_harwin(r);
     register_voicecoil(r);
+    register_dmp(r);
     return r;
   }();
   return registry;

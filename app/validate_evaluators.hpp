@@ -92,7 +92,9 @@ const std::map<std::string, Evaluator>& evaluator_registry();
 // Registration per source (validate_eval_*.cpp).
 void register_thesis_ch3(std::map<std::string, Evaluator>& r);
 void register_thesis_ch4(std::map<std::string, Evaluator>& r);
+void register_thesis_ch5(std::map<std::string, Evaluator>& r);
 void register_harwin(std::map<std::string, Evaluator>& r);
 void register_voicecoil(std::map<std::string, Evaluator>& r);
+void register_dmp(std::map<std::string, Evaluator>& r);
 
 } // namespace magfem

@@ -167,6 +167,16 @@ $magfem actuator examples/3d/spherical_actuator_design.yaml --rotor rotor \
   --orientations rx=-45:15:45,ry=-45:15:45,rz=0 --analytic --out "$out/act" 2> /dev/null | sed 's/^/    /'
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
 echo
+echo "== coil-pitch study (issue 10, thesis sec. 5.3; --full: the thesis's 31 pitches x 3375 orientations)"
+grid="rx=-45:15:45,ry=-45:15:45,rz=-45:15:45" pitches="40:2:70"
+if ((full)); then
+  step=6.428571428571429 grid="rx=-45:$step:45,ry=-45:$step:45,rz=-45:$step:45" pitches="40:1:70"
+fi
+start=$(date +%s.%N)
+$magfem actuator examples/3d/spherical_actuator_topology.yaml --rotor rotor --analytic \
+  --coil-pitch $pitches --orientations $grid --out "$out/coil_pitch" 2> /dev/null | sed 's/^/    /'
+awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    wall %.1f s\n", b - a }'
+echo
 echo "== magfem validate (issue 12: quick tier <= 10 min, full tier <= 60 min on 2 cores)"
 tiers="quick"
 ((full)) && tiers="quick full"
