@@ -223,7 +223,7 @@ TEST(CoilPitch, DISABLED_ThesisStudy) {
 TEST(CoilPitch, CommandWritesItsOutputsAndRefusesBadInput) {
   const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "coil_pitch_cli";
   std::filesystem::remove_all(out);
-  const std::string exe = MAGFEM_BINARY;
+  const std::string exe = magfem::test::magfem_binary();
   const std::string base = exe + " actuator " + topology + " --rotor rotor --orientations rx=0,20 ";
   ASSERT_EQ(std::system((base + "--analytic --coil-pitch 50:10:60 --out " + out.string() +
                          " > /dev/null 2>&1")
