@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/constants.hpp"
+#include "uniform_balls.hpp"
 #include "validation/analytic_force.hpp"
 #include "validation/charge_model.hpp"
 
@@ -14,20 +15,8 @@ namespace magfem {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-AnalyticMagnet ball(const Vec3& c, double a, const Vec3& dir, double B_r) {
-  AnalyticMagnet m;
-  m.shape = SphericalSegment{0, a, 0, pi, 0, 2 * pi};
-  m.placement.translation = c;
-  m.magnetization.pattern = Magnetization::Pattern::parallel;
-  m.magnetization.direction = dir.normalized();
-  m.B_r = B_r;
-  return m;
-}
-
-Vec3 moment(double a, const Vec3& dir, double B_r) {
-  return (4.0 / 3.0) * pi * a * a * a * (B_r / mu0) * dir.normalized();
-}
+using test::ball;
+using test::moment;
 
 Vec3 dipole_B(const Vec3& m, const Vec3& r) {
   const double n = r.norm();

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/constants.hpp"
+#include "uniform_balls.hpp"
 #include "validation/analytic_force.hpp"
 #include "validation/exterior_field_interaction.hpp"
 #include "validation/interaction_cases.hpp"
@@ -16,16 +17,7 @@ namespace magfem {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-AnalyticMagnet ball(const Vec3& c, double a, const Vec3& dir, double B_r) {
-  AnalyticMagnet m;
-  m.shape = SphericalSegment{0, a, 0, pi, 0, 2 * pi};
-  m.placement.translation = c;
-  m.magnetization.pattern = Magnetization::Pattern::parallel;
-  m.magnetization.direction = dir.normalized();
-  m.B_r = B_r;
-  return m;
-}
+using test::ball;
 
 // A sphere at the origin magnetized along its own axis (z) and an off-centre sphere
 // magnetized obliquely: exactly two point dipoles (force and torque about the outer centre).
