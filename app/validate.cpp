@@ -12,6 +12,8 @@
 #include <thread>
 
 #include "app/build_info.hpp"
+#include "app/run_checkpoint.hpp"
+#include "app/validate_checkpoint.hpp"
 #include "app/validate_report.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
@@ -168,6 +170,8 @@ ValidateOptions parse_validate_options(const std::vector<std::string>& args) {
       o.out_dir = value();
     } else if (arg == "--catalogue") {
       o.catalogue = value();
+    } else if (arg == "--resume") {
+      o.resume = true;
     } else {
       throw InputError(cli, 0, arg, "unknown option or argument for validate");
     }
@@ -191,6 +195,15 @@ int run_validate(const ValidateOptions& options) {
   const int n_hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   run.jobs = std::max(
       1, std::min<int>(options.jobs > 0 ? options.jobs : n_hw, static_cast<int>(selected.size())));
+  // Finished entries go to a checkpoint as they finish, so that an interrupted run continues
+  // with --resume (failed entries are evaluated again).
+  std::string selection =
+      "tier=" + to_string(options.tier) + " source=" + options.source + " only=";
+  for (const auto& id : options.only)
+    selection += id + ",";
+  RunCheckpoint checkpoint(options.out_dir,
+                           checkpoint_identity("validate", run.catalogue_file, selection),
+                           options.resume);
   ComputeCache cache;
   std::atomic<std::size_t> next{0};
   std::mutex print_mutex;
@@ -198,12 +211,27 @@ int run_validate(const ValidateOptions& options) {
   auto worker = [&] {
     for (std::size_t i = next++; i < run.results.size(); i = next++) {
       EntryResult& r = run.results[i];
-      evaluate(r, options.tier, cache);
+      bool resumed = false;
+      if (const auto saved = checkpoint.find(r.entry->id)) {
+        try {
+          entry_from_checkpoint(*saved, r);
+          resumed = true;
+        } catch (const std::exception&) {
+          const CatalogueEntry* entry = r.entry; // a record of another shape: evaluate again
+          r = EntryResult();
+          r.entry = entry;
+        }
+      }
+      if (!resumed) {
+        evaluate(r, options.tier, cache);
+        if (r.status != "fail")
+          checkpoint.record(r.entry->id, entry_to_checkpoint(r));
+      }
       std::lock_guard<std::mutex> lock(print_mutex);
       ++done;
-      std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)\n", done,
+      std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n", done,
                    run.results.size(), r.status.c_str(), r.entry->id.c_str(), r.seconds,
-                   since(t_start));
+                   since(t_start), resumed ? " resumed" : "");
     }
   };
   std::vector<std::thread> pool;
@@ -218,6 +246,7 @@ int run_validate(const ValidateOptions& options) {
   OutputStage stage(options.out_dir, "results.csv");
   write_validation_outputs(run, stage);
   stage.commit();
+  checkpoint.remove();
 
   std::map<std::string, int> counts;
   std::vector<std::string> failed;

@@ -17,7 +17,8 @@ struct ValidateOptions {
   std::string source;            // seed file prefix; empty = all
   int jobs = 0;                  // 0: one per core
   std::string out_dir = "out/validate";
-  std::string catalogue;         // empty: validation/catalogue.yaml of the source tree
+  std::string catalogue; // empty: validation/catalogue.yaml of the source tree
+  bool resume = false;   // continue from the checkpoint an interrupted run left
 };
 
 struct EntryResult {
@@ -26,7 +27,7 @@ struct EntryResult {
   std::optional<double> fe, analytic, fe_error_pct, analytic_error_pct;
   std::optional<double> discretisation_pct; // |fe - fe on the next coarser mesh|, % of fe
   double seconds = 0;
-  std::string note;  // why skipped, the error of a failed entry, FE not in this tier
+  std::string note; // why skipped, the error of a failed entry, FE not in this tier
   EvalResult eval;
 };
 

@@ -5,11 +5,14 @@
 // remeshed positions once some are reported, while meshing and solving are under way.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -173,4 +176,79 @@ TEST(Interrupt, ResumeRefusesTheCheckpointOfADifferentRun) {
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("--resume"), std::string::npos) << r.stderr_text;
   EXPECT_FALSE(fs::exists(out / "sweep.csv"));
+}
+
+namespace {
+
+// results.csv without its last column (seconds: the time of each entry, which a rerun does
+// not reproduce).
+std::string results_without_seconds(const fs::path& csv) {
+  std::stringstream in(text_of(csv)), out;
+  for (std::string line; std::getline(in, line);)
+    out << line.substr(0, line.rfind(',')) << "\n";
+  return out.str();
+}
+
+int run_validate(const fs::path& out, bool resume) {
+  const std::string cmd =
+      std::string(magfem::test::magfem_binary()) + " validate --source 002 --jobs 1 --out " +
+      out.string() + (resume ? " --resume" : "") + " > /dev/null 2> " + out.string() + ".stderr";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+// validate keeps its finished entries too (issue 15): Ctrl-C once five entries of seed 002's
+// (21 entries, ~7 s) are in the checkpoint, then --resume. Exit 130 and nothing but the
+// checkpoint after the signal; the resumed run restores the entries it finds (says so per
+// entry) and writes the results.csv of an uninterrupted run (but for the time column).
+TEST(Interrupt, ResumedValidateWritesTheSameResultsAsAnUninterruptedRun) {
+  const fs::path whole = test_dir("validate_whole"), cut = test_dir("validate_cut");
+  fs::remove_all(whole);
+  fs::remove_all(cut);
+  ASSERT_EQ(run_validate(whole, false), 0) << text_of(whole.string() + ".stderr");
+
+  const fs::path err = cut.string() + ".stderr";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    dup2(null, 1);
+    const char* argv[] = {magfem::test::magfem_binary(),
+                          "validate",
+                          "--source",
+                          "002",
+                          "--jobs",
+                          "1",
+                          "--out",
+                          cut.c_str(),
+                          nullptr};
+    execv(magfem::test::magfem_binary(), const_cast<char* const*>(argv));
+    _exit(127);
+  }
+  const fs::path checkpoint = cut / magfem::RunCheckpoint::file_name;
+  auto lines = [&] {
+    std::ifstream in(checkpoint);
+    return std::count(std::istreambuf_iterator<char>(in), {}, '\n');
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  while (lines() < 6 && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  kill(pid, SIGINT);
+  const Outcome o = finish(pid, cut);
+  ASSERT_EQ(o.exit_code, 130) << "the run ended before the signal: " << o.stderr_text;
+  expect_nothing_written(cut);
+
+  ASSERT_EQ(run_validate(cut, true), 0) << text_of(err);
+  std::size_t resumed = 0;
+  const std::string log = text_of(err);
+  for (auto at = log.find(" resumed"); at != std::string::npos; at = log.find(" resumed", at + 1))
+    ++resumed;
+  EXPECT_GE(resumed, 5u) << log;
+  EXPECT_LT(resumed, 21u) << log;
+  EXPECT_EQ(results_without_seconds(cut / "results.csv"),
+            results_without_seconds(whole / "results.csv"));
+  EXPECT_FALSE(fs::exists(checkpoint)) << "the checkpoint outlived the committed outputs";
 }
