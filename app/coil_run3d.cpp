@@ -43,11 +43,15 @@ CoilFieldOptions fe_source_options() {
   return o;
 }
 
-// Points memoised per run: ~80 bytes each for one coil, so at most ~1.3 GB.
-constexpr std::size_t max_cached_points = 16'000'000;
+// Points memoised per run: ~56 bytes of key and index plus 24 per coil, at most
+// coil_field_cache_limit_mb in all. (A cap of 16 M points, meant as 1.3 GB for one coil,
+// let 12 coils take 2.9 GB on a 423k-tetrahedron actuator, 3x the rest of the run.)
+std::size_t max_cached_points(std::size_t n_coils) {
+  return static_cast<std::size_t>(coil_field_cache_limit_mb * 1024 * 1024) / (56 + 24 * n_coils);
+}
 
 CaseCoils::CaseCoils(const std::vector<Coil3D>& coils, const CoilFieldOptions& options)
-    : coils_(coils), cache_(static_cast<int>(coils.size()), max_cached_points) {
+    : coils_(coils), cache_(static_cast<int>(coils.size()), max_cached_points(coils.size())) {
   for (const auto& c : coils_)
     fields_.push_back(std::make_unique<CoilField>(c, options));
 }

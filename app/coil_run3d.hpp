@@ -27,6 +27,9 @@ class Assembler3D;
 // is 10 times faster (TEAM 20 coil: ~30 instead of ~290 us per point).
 CoilFieldOptions fe_source_options();
 
+// The most memory (MB) the memo of the coils' source field may take in a run.
+inline constexpr double coil_field_cache_limit_mb = 1300;
+
 // SourceField3D over the case's coils (sources/coil_field.hpp), memoised at points.
 class CaseCoils : public SourceField3D {
 public:

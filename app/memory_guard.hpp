@@ -14,8 +14,9 @@
 
 namespace magfem {
 
-// Estimated peak resident memory (MB) of a 3D solve with this many tetrahedra.
-double estimated_peak_memory_mb(double tetrahedra, int order);
+// Estimated peak resident memory (MB) of a 3D solve with this many tetrahedra and coils
+// (each coil's source field is memoised at the quadrature points, up to a fixed budget).
+double estimated_peak_memory_mb(double tetrahedra, int order, int n_coils = 0);
 
 // The memory a run may use, in MB: `max_memory_gb` if positive, else what the machine (and
 // the cgroup the process runs in, if it has a limit) has available now.
@@ -25,7 +26,7 @@ double memory_limit_mb(double max_memory_gb);
 // when the estimate exceeds the limit, naming the --mesh-scale that would fit (searched with
 // `tets_at_factor`, the estimate with every size multiplied by a factor), or saying that none
 // up to 8 times the present one does; `mesh_scale` is the one in force (1 if none given).
-void check_memory(const MeshEstimate3D& estimate, int order, double max_memory_gb,
+void check_memory(const MeshEstimate3D& estimate, int order, int n_coils, double max_memory_gb,
                   double mesh_scale, const std::function<double(double)>& tets_at_factor);
 
 } // namespace magfem

@@ -52,7 +52,8 @@ std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
 Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
   const auto guard = [&](const MeshEstimate3D& e, const std::function<double(double)>& at) {
     estimate = e;
-    check_memory(e, spec.order, ov.max_memory_gb, ov.mesh_scale > 0 ? ov.mesh_scale : 1.0, at);
+    check_memory(e, spec.order, static_cast<int>(spec.geometry3d.coils.size()), ov.max_memory_gb,
+                 ov.mesh_scale > 0 ? ov.mesh_scale : 1.0, at);
   };
   try {
     return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), guard);
@@ -204,9 +205,11 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
                     {"postprocess", run.timings.postprocess},
                     {"total", run.timings.total}};
   j["peak_memory_MB"] = peak_memory_mb();
-  j["memory_guard"] = {{"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
-                       {"estimated_peak_memory_MB",
-                        estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order)}};
+  j["memory_guard"] = {
+      {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
+      {"estimated_peak_memory_MB",
+       estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order,
+                                static_cast<int>(run.spec.geometry3d.coils.size()))}};
   auto& regions = j["regions"];
   for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
     const auto& r = run.energy.regions[i];
