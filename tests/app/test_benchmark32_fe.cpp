@@ -48,8 +48,8 @@ probes:
 
 // Worst pointwise rms error rms(FE - charge) / rms(charge) and worst |eq. 3.117| over the
 // spherical components.
-std::pair<double, double> fe_against_charge(const std::string& name, const std::string& pattern) {
-  const auto path = test::write_temp_case(name + ".yaml", benchmark32_case(pattern));
+std::pair<double, double> fe_against_charge(const std::string& name, const std::string& text) {
+  const auto path = test::write_temp_case(name + ".yaml", text);
   const auto fe = run_case_3d(read_case(path));
   const auto charge = run_case_analytic(read_case(path), {});
   EXPECT_TRUE(fe->report.converged);
@@ -75,16 +75,68 @@ std::pair<double, double> fe_against_charge(const std::string& name, const std::
 // convention instead of the centre one differs by 25-28 % pointwise (1.3-7.7 % in eq. 3.117),
 // a flipped segment by twice the field of a whole magnet.
 TEST(Benchmark32FE, ParallelMagnetizationAgreesWithTheChargeModel) {
-  const auto [pointwise, eq3117] =
-      fe_against_charge("b32_parallel", "{type: parallel_alternating, convention: centre}");
+  const auto [pointwise, eq3117] = fe_against_charge(
+      "b32_parallel", benchmark32_case("{type: parallel_alternating, convention: centre}"));
   EXPECT_LT(pointwise, 0.03);
   EXPECT_LT(eq3117, 0.01);
 }
 
 TEST(Benchmark32FE, RadialMagnetizationAgreesWithTheChargeModel) {
-  const auto [pointwise, eq3117] = fe_against_charge("b32_radial", "{type: radial_alternating}");
+  const auto [pointwise, eq3117] =
+      fe_against_charge("b32_radial", benchmark32_case("{type: radial_alternating}"));
   EXPECT_LT(pointwise, 0.03);
   EXPECT_LT(eq3117, 0.01);
+}
+
+// The bounded benchmark (sec. 3.6: the array inside an iron shell) against the charge model
+// with spherical imaging (the shell as an infinitely permeable sphere from its inner radius).
+// The thesis's 1 mm gap over the whole sphere is 2.9 M tetrahedra even at one gap layer, so
+// the shell starts at 63 mm (8 mm gap) and the probe patch sits mid-gap at 59 mm: 285k P2
+// unknowns, ~30 s. Measured: pointwise 4.2 % (B_rho) and 10.4-10.8 % (tangential: the
+// coarse elements across the gap), eq. 3.117 within 3.1 %; with a 5 mm patch and a 6 mm
+// shell (302k unknowns) 1.2-5.3 %, so it falls with the mesh. Bounds 8 % for B_rho, 15 %
+// pointwise and 5 % in eq. 3.117: without the shell the model's field differs by 25-63 %
+// pointwise (B_rho -25 % in eq. 3.117), and mu_r 4000 against an ideal shell is 0.1 %.
+TEST(Benchmark32FE, IronShellAgreesWithSphericalImaging) {
+  const std::string text = R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
+  iron: {kind: linear, mu_r: 4000}
+regions:
+  - name: m
+    shape: segment_array
+    r_inner: 40
+    r_outer: 55
+    theta: [0, 180]
+    phi: [0, 360]
+    p_theta: 4
+    p_phi: 8
+    material: pm
+    pattern: {type: parallel_alternating, convention: centre}
+    mesh_size: 10
+  - {name: iron_shell, shape: spherical_segment, r_inner: 63, r_outer: 66, material: iron,
+     mesh_size: 10}
+boundary: {type: open, radius: 85, shell_ratio: 1.5}
+mesh: {size: 18, chord_tolerance: 0.3, gap_layers: 1, probe_size: 6}
+solver: {order: 2}
+probes:
+  - {name: r59, type: sphere, radius: 59, theta: [5, 85], phi: [5, 85], step: 10}
+)";
+  const auto path = test::write_temp_case("b32_bounded.yaml", text);
+  const auto fe = run_case_3d(read_case(path));
+  const auto imaging = run_case_analytic(read_case(path), {});
+  ASSERT_TRUE(fe->report.converged);
+  for (const auto& c : compare_probes(imaging->probes.at(0), fe->probes.at(0))) {
+    if (c.component != "Brho" && c.component != "Btheta" && c.component != "Bphi")
+      continue;
+    std::printf("bounded %s: rms %.4f T (imaging) %.4f T (FE), eq. 3.117 %+.3f %%, pointwise "
+                "%.3f %%\n",
+                c.component.c_str(), c.rms_reference, c.rms_test, 100 * c.discrepancy_3117,
+                100 * c.pointwise_rms);
+    EXPECT_LT(c.pointwise_rms, c.component == "Brho" ? 0.08 : 0.15) << c.component;
+    EXPECT_LT(std::abs(c.discrepancy_3117), 0.05) << c.component;
+  }
 }
 
 // The gravity compensator's topology (parallel hemisphere in a radially magnetized
