@@ -20,13 +20,9 @@ namespace {
 
 // Coarse: 16 mm air, 8 mm magnets, 5 mm elements on the probe patch (a sphere of radius
 // 62 mm, 7 mm outside the magnets, theta and phi 5..85 deg in 10 deg steps): 168k P2 unknowns.
-std::string benchmark32_case(const std::string& pattern) {
-  return R"(dimension: 3
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
-regions:
-  - name: m
+// The 32-magnet array (thesis Table 3.1) as a case-file region, elements of `mesh_size` mm.
+std::string benchmark32_region(const std::string& pattern, double mesh_size) {
+  return R"(  - name: m
     shape: segment_array
     r_inner: 40
     r_outer: 55
@@ -36,9 +32,17 @@ regions:
     p_phi: 8
     material: pm
     pattern: )" +
-         pattern + R"(
-    mesh_size: 8
-boundary: {type: open, radius: 75, shell_ratio: 1.5}
+         pattern + "\n    mesh_size: " + std::to_string(mesh_size) + "\n";
+}
+
+std::string benchmark32_case(const std::string& pattern) {
+  return R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
+regions:
+)" + benchmark32_region(pattern, 8) +
+         R"(boundary: {type: open, radius: 75, shell_ratio: 1.5}
 mesh: {size: 16, chord_tolerance: 0.3, probe_size: 5}
 solver: {order: 2}
 probes:
@@ -46,20 +50,31 @@ probes:
 )";
 }
 
+// FE against the analytic model on the case's first probe: the spherical components'
+// comparisons (printed).
+std::vector<ComponentComparison> fe_against_analytic(const std::string& name,
+                                                     const std::string& text) {
+  const auto path = test::write_temp_case(name + ".yaml", text);
+  const auto fe = run_case_3d(read_case(path));
+  const auto analytic = run_case_analytic(read_case(path), {});
+  EXPECT_TRUE(fe->report.converged);
+  std::vector<ComponentComparison> out;
+  for (const auto& c : compare_probes(analytic->probes.at(0), fe->probes.at(0))) {
+    if (c.component != "Brho" && c.component != "Btheta" && c.component != "Bphi")
+      continue;
+    std::printf("%s %s: rms %.4f T (analytic) %.4f T (FE), eq. 3.117 %+.3f %%, pointwise %.3f %%\n",
+                name.c_str(), c.component.c_str(), c.rms_reference, c.rms_test,
+                100 * c.discrepancy_3117, 100 * c.pointwise_rms);
+    out.push_back(c);
+  }
+  return out;
+}
+
 // Worst pointwise rms error rms(FE - charge) / rms(charge) and worst |eq. 3.117| over the
 // spherical components.
 std::pair<double, double> fe_against_charge(const std::string& name, const std::string& text) {
-  const auto path = test::write_temp_case(name + ".yaml", text);
-  const auto fe = run_case_3d(read_case(path));
-  const auto charge = run_case_analytic(read_case(path), {});
-  EXPECT_TRUE(fe->report.converged);
   double pointwise = 0, eq3117 = 0;
-  for (const auto& c : compare_probes(charge->probes.at(0), fe->probes.at(0))) {
-    if (c.component != "Brho" && c.component != "Btheta" && c.component != "Bphi")
-      continue;
-    std::printf("%s %s: rms %.4f T (charge) %.4f T (FE), eq. 3.117 %+.3f %%, pointwise %.3f %%\n",
-                name.c_str(), c.component.c_str(), c.rms_reference, c.rms_test,
-                100 * c.discrepancy_3117, 100 * c.pointwise_rms);
+  for (const auto& c : fe_against_analytic(name, text)) {
     pointwise = std::max(pointwise, c.pointwise_rms);
     eq3117 = std::max(eq3117, std::abs(c.discrepancy_3117));
   }
@@ -98,24 +113,15 @@ TEST(Benchmark32FE, RadialMagnetizationAgreesWithTheChargeModel) {
 // pointwise and 5 % in eq. 3.117: without the shell the model's field differs by 25-63 %
 // pointwise (B_rho -25 % in eq. 3.117), and mu_r 4000 against an ideal shell is 0.1 %.
 TEST(Benchmark32FE, IronShellAgreesWithSphericalImaging) {
-  const std::string text = R"(dimension: 3
+  const std::string text =
+      R"(dimension: 3
 unit: mm
 materials:
   pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
   iron: {kind: linear, mu_r: 4000}
 regions:
-  - name: m
-    shape: segment_array
-    r_inner: 40
-    r_outer: 55
-    theta: [0, 180]
-    phi: [0, 360]
-    p_theta: 4
-    p_phi: 8
-    material: pm
-    pattern: {type: parallel_alternating, convention: centre}
-    mesh_size: 10
-  - {name: iron_shell, shape: spherical_segment, r_inner: 63, r_outer: 66, material: iron,
+)" + benchmark32_region("{type: parallel_alternating, convention: centre}", 10) +
+      R"(  - {name: iron_shell, shape: spherical_segment, r_inner: 63, r_outer: 66, material: iron,
      mesh_size: 10}
 boundary: {type: open, radius: 85, shell_ratio: 1.5}
 mesh: {size: 18, chord_tolerance: 0.3, gap_layers: 1, probe_size: 6}
@@ -123,17 +129,7 @@ solver: {order: 2}
 probes:
   - {name: r59, type: sphere, radius: 59, theta: [5, 85], phi: [5, 85], step: 10}
 )";
-  const auto path = test::write_temp_case("b32_bounded.yaml", text);
-  const auto fe = run_case_3d(read_case(path));
-  const auto imaging = run_case_analytic(read_case(path), {});
-  ASSERT_TRUE(fe->report.converged);
-  for (const auto& c : compare_probes(imaging->probes.at(0), fe->probes.at(0))) {
-    if (c.component != "Brho" && c.component != "Btheta" && c.component != "Bphi")
-      continue;
-    std::printf("bounded %s: rms %.4f T (imaging) %.4f T (FE), eq. 3.117 %+.3f %%, pointwise "
-                "%.3f %%\n",
-                c.component.c_str(), c.rms_reference, c.rms_test, 100 * c.discrepancy_3117,
-                100 * c.pointwise_rms);
+  for (const auto& c : fe_against_analytic("bounded", text)) {
     EXPECT_LT(c.pointwise_rms, c.component == "Brho" ? 0.08 : 0.15) << c.component;
     EXPECT_LT(std::abs(c.discrepancy_3117), 0.05) << c.component;
   }

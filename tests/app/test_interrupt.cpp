@@ -39,12 +39,10 @@ std::string text_of(const fs::path& p) {
   return s.str();
 }
 
-// Starts `magfem sweep` of the voice-coil magnet over `positions` into `out`, stderr to a
-// file next to it; `mesh_scale` coarsens the meshes (seconds matter in the resume test).
-pid_t start_sweep(const std::string& positions, const fs::path& out, bool resume,
-                  const std::string& mesh_scale = "1") {
+// Starts magfem with `args` (after the binary), stdout to /dev/null and stderr to
+// `<out>.stderr`; returns the child's pid.
+pid_t spawn_magfem(const std::vector<std::string>& args, const fs::path& out) {
   const fs::path err = out.string() + ".stderr";
-  const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
   fs::remove(err);
   const pid_t pid = fork();
   if (pid == 0) {
@@ -52,28 +50,31 @@ pid_t start_sweep(const std::string& positions, const fs::path& out, bool resume
     dup2(fd, 2);
     const int null = ::open("/dev/null", O_WRONLY);
     dup2(null, 1);
-    std::vector<const char*> argv = {magfem::test::magfem_binary(),
-                                     "sweep",
-                                     case_file.c_str(),
-                                     "--move",
-                                     "coil",
-                                     "--axis",
-                                     "z",
-                                     "--positions",
-                                     positions.c_str(),
-                                     "--jobs",
-                                     "1",
-                                     "--out",
-                                     out.c_str(),
-                                     "--mesh-scale",
-                                     mesh_scale.c_str()};
-    if (resume)
-      argv.push_back("--resume");
+    std::vector<const char*> argv = {magfem::test::magfem_binary()};
+    for (const auto& a : args)
+      argv.push_back(a.c_str());
     argv.push_back(nullptr);
     execv(magfem::test::magfem_binary(), const_cast<char* const*>(argv.data()));
     _exit(127);
   }
   return pid;
+}
+
+// Starts `magfem sweep` of the voice-coil magnet over `positions` into `out`; `mesh_scale`
+// coarsens the meshes (seconds matter in the resume test).
+pid_t start_sweep(const std::string& positions, const fs::path& out, bool resume,
+                  const std::string& mesh_scale = "1") {
+  std::vector<std::string> args = {
+      "sweep",        magfem::test::example("axi/voice_coil_magnet.yaml"),
+      "--move",       "coil",
+      "--axis",       "z",
+      "--positions",  positions,
+      "--jobs",       "1",
+      "--out",        out.string(),
+      "--mesh-scale", mesh_scale};
+  if (resume)
+    args.push_back("--resume");
+  return spawn_magfem(args, out);
 }
 
 Outcome finish(pid_t pid, const fs::path& out) {
@@ -212,24 +213,8 @@ TEST(Interrupt, ResumedValidateWritesTheSameResultsAsAnUninterruptedRun) {
   ASSERT_EQ(run_validate(whole, false), 0) << text_of(whole.string() + ".stderr");
 
   const fs::path err = cut.string() + ".stderr";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, 2);
-    const int null = ::open("/dev/null", O_WRONLY);
-    dup2(null, 1);
-    const char* argv[] = {magfem::test::magfem_binary(),
-                          "validate",
-                          "--source",
-                          "002",
-                          "--jobs",
-                          "1",
-                          "--out",
-                          cut.c_str(),
-                          nullptr};
-    execv(magfem::test::magfem_binary(), const_cast<char* const*>(argv));
-    _exit(127);
-  }
+  const pid_t pid =
+      spawn_magfem({"validate", "--source", "002", "--jobs", "1", "--out", cut.string()}, cut);
   const fs::path checkpoint = cut / magfem::RunCheckpoint::file_name;
   auto lines = [&] {
     std::ifstream in(checkpoint);
