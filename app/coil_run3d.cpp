@@ -1,5 +1,6 @@
 #include "app/coil_run3d.hpp"
 
+#include <array>
 #include <cstdio>
 #include <stdexcept>
 
@@ -58,29 +59,48 @@ CaseCoils::CaseCoils(const std::vector<Coil3D>& coils, const CoilFieldOptions& o
 
 CaseCoils::~CaseCoils() = default;
 
-void CaseCoils::all_per_ampere(const Eigen::Vector3d& x, Eigen::Vector3d* out) const {
+void CaseCoils::H_per_ampere_all(const Eigen::Vector3d& x, Eigen::Vector3d* out) const {
   cache_.get(
-      x,
-      [this](const Eigen::Vector3d& p, Eigen::Vector3d* h) {
-        for (std::size_t k = 0; k < fields_.size(); ++k)
-          h[k] = fields_[k]->H_per_ampere(p);
-      },
+      x, [this](const Eigen::Vector3d& p, Eigen::Vector3d* h) { H_per_ampere_all_once(p, h); },
       out);
 }
 
-Eigen::Vector3d CaseCoils::H(const Eigen::Vector3d& x) const {
-  std::vector<Eigen::Vector3d> h(fields_.size());
-  all_per_ampere(x, h.data());
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+void CaseCoils::H_per_ampere_all_once(const Eigen::Vector3d& x, Eigen::Vector3d* out) const {
   for (std::size_t k = 0; k < fields_.size(); ++k)
-    sum += coils_[k].current * h[k];
-  return sum;
+    out[k] = fields_[k]->H_per_ampere(x);
+}
+
+namespace {
+
+// The per-point queries run at every quadrature point of several passes: a buffer on the
+// stack for the usual coil counts instead of a heap allocation per call.
+template <class Use>
+auto with_all_per_ampere(const CaseCoils& coils, const Eigen::Vector3d& x, const Use& use) {
+  constexpr int on_stack = 32;
+  const int nc = coils.n_coils();
+  if (nc <= on_stack) {
+    std::array<Eigen::Vector3d, on_stack> h;
+    coils.H_per_ampere_all(x, h.data());
+    return use(h.data());
+  }
+  std::vector<Eigen::Vector3d> h(nc);
+  coils.H_per_ampere_all(x, h.data());
+  return use(h.data());
+}
+
+} // namespace
+
+Eigen::Vector3d CaseCoils::H(const Eigen::Vector3d& x) const {
+  return with_all_per_ampere(*this, x, [this](const Eigen::Vector3d* h) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < fields_.size(); ++k)
+      sum += coils_[k].current * h[k];
+    return sum;
+  });
 }
 
 Eigen::Vector3d CaseCoils::H_per_ampere(int coil, const Eigen::Vector3d& x) const {
-  std::vector<Eigen::Vector3d> h(fields_.size());
-  all_per_ampere(x, h.data());
-  return h[coil];
+  return with_all_per_ampere(*this, x, [coil](const Eigen::Vector3d* h) { return h[coil]; });
 }
 
 Eigen::Vector3d CaseCoils::J(const Eigen::Vector3d& x) const {

@@ -40,13 +40,13 @@ public:
   double turns(int coil) const override { return coils_[coil].turns; }
   Eigen::Vector3d H(const Eigen::Vector3d& x) const override;
   Eigen::Vector3d H_per_ampere(int coil, const Eigen::Vector3d& x) const override;
+  void H_per_ampere_all(const Eigen::Vector3d& x, Eigen::Vector3d* out) const override;
+  void H_per_ampere_all_once(const Eigen::Vector3d& x, Eigen::Vector3d* out) const override;
   Eigen::Vector3d J(const Eigen::Vector3d& x) const override;
   const CoilField& field(int coil) const { return *fields_[coil]; }
   const Coil3D& coil(int k) const { return coils_[k]; }
 
 private:
-  void all_per_ampere(const Eigen::Vector3d& x, Eigen::Vector3d* out) const;
-
   std::vector<Coil3D> coils_;
   std::vector<std::unique_ptr<CoilField>> fields_;
   SourceFieldCache3D cache_; // H per ampere of every coil at the points already asked for

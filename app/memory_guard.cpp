@@ -7,7 +7,6 @@
 #include <limits>
 #include <string>
 
-#include "app/coil_run3d.hpp"
 #include "core/input_error.hpp"
 
 namespace magfem {
@@ -19,7 +18,7 @@ namespace {
 constexpr double base_mb = 50;
 constexpr double kb_per_tet_order1 = 0.36;
 constexpr double kb_per_tet_order2 = 2.2;
-constexpr double kb_per_tet_coil = 0.57;
+constexpr double kb_per_tet_coil = 0.25;
 
 double meminfo_available_mb() {
   std::ifstream in("/proc/meminfo");
@@ -59,11 +58,11 @@ std::string fixed(double v, int digits) {
 } // namespace
 
 double estimated_peak_memory_mb(double tetrahedra, int order, int n_coils) {
-  // The coils' source-field memo: measured 0.57 kB per tetrahedron and coil (order 2, 12 coils,
-  // 423k tetrahedra: 3.86 GB peak against 0.98 GB without coils), up to its budget. Order 1
-  // is given the same (fewer quadrature points: an overestimate, on the safe side).
-  const double coil_cache_mb =
-      std::min(coil_field_cache_limit_mb, tetrahedra * n_coils * kb_per_tet_coil / 1024);
+  // The coils: the source-field table at the rule and DOF points (0.18 kB per tetrahedron and
+  // coil, single precision), the source potentials and the memo of the other points; measured
+  // 0.25 kB in all (order 2, 12 coils, 423k tetrahedra: 2.23 GB peak against 0.99 GB without
+  // coils). Order 1 is given the same (the table has the same rule: the same size).
+  const double coil_cache_mb = tetrahedra * n_coils * kb_per_tet_coil / 1024;
   return base_mb + tetrahedra * kb_per_tet(order) / 1024 + coil_cache_mb;
 }
 

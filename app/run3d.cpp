@@ -23,6 +23,7 @@
 #include "postproc/vtu_export3d.hpp"
 #include "solver/assembler3d.hpp"
 #include "solver/p1_coarse_space.hpp"
+#include "solver/tet_quadrature.hpp"
 
 namespace magfem {
 namespace {
@@ -116,7 +117,11 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   if (!run->spec.geometry3d.coils.empty()) {
     run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
     check_coils_in_air(*run);
+    stage("coil source field: " + std::to_string(run->coils->n_coils()) + " coils at " +
+          std::to_string(run->mesh.n_tets() * tet_rule(SourceFieldTable3D::rule_degree).size()) +
+          " quadrature points");
     run->coil_source = make_coil_source_3d(run->problem, *run->dofs, *run->coils);
+    stage("assembly");
     run->problem.source = &run->coil_source;
   }
   Assembler3D assembler(run->problem, *run->dofs);

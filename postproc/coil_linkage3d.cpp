@@ -17,8 +17,8 @@ namespace {
 template <class Body>
 Eigen::MatrixXd sum_over_tets(std::size_t n_tets, Eigen::Index rows, Eigen::Index cols,
                               const Body& body) {
-  const int n_threads = static_cast<int>(std::min<std::size_t>(
-      available_threads(), 1 + n_tets / 5000));
+  const int n_threads =
+      static_cast<int>(std::min<std::size_t>(available_threads(), 1 + n_tets / 5000));
   std::vector<Eigen::MatrixXd> partial(n_threads, Eigen::MatrixXd::Zero(rows, cols));
   std::vector<std::thread> pool;
   for (int k = 0; k < n_threads; ++k)
@@ -52,26 +52,29 @@ std::vector<double> flux_linkages_3d(const Field3D& field) {
   const int nc = coils.n_coils();
   const auto& mesh = *problem.mesh;
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
-  const Eigen::MatrixXd sum = sum_over_tets(mesh.n_tets(), nc, 1, [&](std::size_t t,
-                                                                       Eigen::MatrixXd& acc) {
-    const bool in_shell = problem.is_shell(t);
-    for (const auto& q : tet_rule(5)) {
-      const double dv = q.weight * field.volume_density(t, q.bary);
-      Eigen::Vector3d x = field.point(t, q.bary);
-      Eigen::Vector3d b;
-      double jac = 1;
-      if (in_shell) {
-        const Eigen::Vector3d h = field.H(t, q.bary);
-        b = mu0 * (coils.H(shell.map(x)) + shell.inverse_jacobian(x) * h);
-        jac = shell.det_jacobian(x);
-        x = shell.map(x);
-      } else {
-        b = field.B(t, q.bary);
-      }
-      for (int k = 0; k < nc; ++k)
-        acc(k, 0) += dv * jac * b.dot(coils.H_per_ampere(k, x));
-    }
-  });
+  const Eigen::MatrixXd sum =
+      sum_over_tets(mesh.n_tets(), nc, 1, [&](std::size_t t, Eigen::MatrixXd& acc) {
+        const bool in_shell = problem.is_shell(t);
+        std::vector<Eigen::Vector3d> h(nc);
+        const auto& rule = tet_rule(SourceFieldTable3D::rule_degree);
+        for (int qi = 0; qi < static_cast<int>(rule.size()); ++qi) {
+          const TetQuadPoint& q = rule[qi];
+          const double dv = q.weight * field.volume_density(t, q.bary);
+          src->table.H_per_ampere(t, qi, h.data()); // at the mapped point in the shell
+          Eigen::Vector3d b;
+          double jac = 1;
+          if (in_shell) {
+            // Physical B at the mapped point: mu0 (H_s + J^-1 (-grad phi)), volume times |det J|.
+            const Eigen::Vector3d x = field.point(t, q.bary);
+            b = mu0 * (src->table.H(t, qi) + shell.inverse_jacobian(x) * field.H_at(t, qi));
+            jac = shell.det_jacobian(x);
+          } else {
+            b = field.B_at(t, qi);
+          }
+          for (int k = 0; k < nc; ++k)
+            acc(k, 0) += dv * jac * b.dot(h[k]);
+        }
+      });
   return {sum.col(0).data(), sum.col(0).data() + nc};
 }
 
@@ -84,38 +87,38 @@ Eigen::MatrixXd inductance_matrix_3d(const Field3D& field,
   const auto& mesh = *problem.mesh;
   const auto& dofs = field.dofs();
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
-  Eigen::MatrixXd l = sum_over_tets(mesh.n_tets(), nc, nc, [&](std::size_t t,
-                                                                Eigen::MatrixXd& acc) {
-    const bool in_shell = problem.is_shell(t);
-    const bool total = src.is_total(t);
-    const Material& mat = *problem.physics(mesh.tet_part[t]).material;
-    const int* dof = dofs.element_dofs(t);
-    std::array<Eigen::Vector3d, 10> grad;
-    std::vector<Eigen::Vector3d> h(nc);
-    for (const auto& q : tet_rule(5)) {
-      Eigen::Vector3d x;
-      const int n = field.shape_gradients(t, q.bary, grad, x);
-      const double dv = q.weight * field.volume_density(t, q.bary);
-      const Eigen::Vector3d xp = in_shell ? shell.map(x) : x;
-      const double jac = in_shell ? shell.det_jacobian(x) : 1.0;
-      for (int k = 0; k < nc; ++k)
-        h[k] = coils.H_per_ampere(k, xp);
-      const Eigen::Matrix3d d = in_shell ? Eigen::Matrix3d(mu0 * Eigen::Matrix3d::Identity())
-                                         : tangent(mat, field.H(t, q.bary));
-      for (int j = 0; j < nc; ++j) {
-        Eigen::Vector3d g = Eigen::Vector3d::Zero();
-        for (int i = 0; i < n; ++i)
-          g += (dphi_full[j][dof[i]] + (total ? src.offset_per_ampere[j][dof[i]] : 0.0)) *
-               grad[i];
-        Eigen::Vector3d dh = in_shell ? Eigen::Vector3d(h[j] - shell.inverse_jacobian(x) * g)
-                                      : Eigen::Vector3d(total ? Eigen::Vector3d(-g)
-                                                              : Eigen::Vector3d(h[j] - g));
-        const Eigen::Vector3d db = d * dh;
-        for (int i = 0; i < nc; ++i)
-          acc(i, j) += dv * jac * db.dot(h[i]);
-      }
-    }
-  });
+  Eigen::MatrixXd l =
+      sum_over_tets(mesh.n_tets(), nc, nc, [&](std::size_t t, Eigen::MatrixXd& acc) {
+        const bool in_shell = problem.is_shell(t);
+        const bool total = src.is_total(t);
+        const Material& mat = *problem.physics(mesh.tet_part[t]).material;
+        const int* dof = dofs.element_dofs(t);
+        std::array<Eigen::Vector3d, 10> grad;
+        std::vector<Eigen::Vector3d> h(nc);
+        const auto& rule = tet_rule(SourceFieldTable3D::rule_degree);
+        for (int qi = 0; qi < static_cast<int>(rule.size()); ++qi) {
+          const TetQuadPoint& q = rule[qi];
+          Eigen::Vector3d x;
+          const int n = field.shape_gradients(t, q.bary, grad, x);
+          const double dv = q.weight * field.volume_density(t, q.bary);
+          const double jac = in_shell ? shell.det_jacobian(x) : 1.0;
+          src.table.H_per_ampere(t, qi, h.data()); // at the mapped point in the shell
+          const Eigen::Matrix3d d = in_shell ? Eigen::Matrix3d(mu0 * Eigen::Matrix3d::Identity())
+                                             : tangent(mat, field.H_at(t, qi));
+          for (int j = 0; j < nc; ++j) {
+            Eigen::Vector3d g = Eigen::Vector3d::Zero();
+            for (int i = 0; i < n; ++i)
+              g += (dphi_full[j][dof[i]] + (total ? src.offset_per_ampere[j][dof[i]] : 0.0)) *
+                   grad[i];
+            Eigen::Vector3d dh =
+                in_shell ? Eigen::Vector3d(h[j] - shell.inverse_jacobian(x) * g)
+                         : Eigen::Vector3d(total ? Eigen::Vector3d(-g) : Eigen::Vector3d(h[j] - g));
+            const Eigen::Vector3d db = d * dh;
+            for (int i = 0; i < nc; ++i)
+              acc(i, j) += dv * jac * db.dot(h[i]);
+          }
+        }
+      });
   return l;
 }
 

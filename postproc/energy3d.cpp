@@ -47,17 +47,18 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
     const bool in_shell = problem.is_shell(t);
     const Material& mat = *problem.physics(mesh.tet_part[t]).material;
     // Curved (isoparametric) tets: the volume element varies over the tet.
-    for (const auto& q : tet_rule(5)) {
+    const auto& rule = tet_rule(SourceFieldTable3D::rule_degree);
+    for (int qi = 0; qi < static_cast<int>(rule.size()); ++qi) {
+      const TetQuadPoint& q = rule[qi];
       const double dv = q.weight * field.volume_density(t, q.bary);
-      const Eigen::Vector3d h = field.H(t, q.bary);
+      const Eigen::Vector3d h = field.H_at(t, qi);
       double w = 0;
       if (!in_shell) {
         w = energy_density(mat, h);
       } else if (problem.source && problem.source->active()) {
         // Physical H' = H_s(x') + J^-1 (-grad phi), energy density times |det J|.
         const Eigen::Vector3d x = field.point(t, q.bary);
-        const Eigen::Vector3d hp =
-            problem.source->field->H(shell.map(x)) + shell.inverse_jacobian(x) * h;
+        const Eigen::Vector3d hp = problem.source->table.H(t, qi) + shell.inverse_jacobian(x) * h;
         w = 0.5 * mu0 * hp.squaredNorm() * shell.det_jacobian(x);
       } else {
         w = 0.5 * mu0 * h.dot(shell.metric<3>(field.point(t, q.bary)) * h);
@@ -69,7 +70,7 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
       continue;
     const int n_nodes = field.dofs().dofs_per_element();
     for (int i = 0; i < n_nodes; ++i)
-      reg.peak_B_T = std::max(reg.peak_B_T, field.B(t, tet_dof_nodes[i]).norm());
+      reg.peak_B_T = std::max(reg.peak_B_T, field.B_at_node(t, i).norm());
   }
   for (const auto& r : out.regions)
     out.total_J += r.energy_J;

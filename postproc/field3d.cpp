@@ -8,6 +8,7 @@
 #include "core/thread_count.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
+#include "solver/tet_quadrature.hpp"
 
 namespace magfem {
 
@@ -56,7 +57,7 @@ double Field3D::potential(std::size_t t, const std::array<double, 4>& bary) cons
   return v;
 }
 
-Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) const {
+Eigen::Vector3d Field3D::grad_potential(std::size_t t, const std::array<double, 4>& bary) const {
   const auto& tet = problem_.mesh->tets[t];
   const auto& p = problem_.mesh->nodes;
   const auto g = TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]);
@@ -70,14 +71,42 @@ Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) con
   }
   const int* dof = dofs_.element_dofs(t);
   const CoilSource3D* src = problem_.source;
-  const bool coils = src && src->active();
-  const bool total = coils && src->is_total(t);
+  const bool total = src && src->active() && src->is_total(t);
   Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)
     grad_phi += (phi_[dof[i]] + (total ? src->offset[dof[i]] : 0.0)) * grad[i];
-  if (coils && !total && !problem_.is_shell(t))
-    return src->field->H(point(t, bary)) - grad_phi;
-  return -grad_phi;
+  return grad_phi;
+}
+
+bool Field3D::adds_source(std::size_t t) const {
+  const CoilSource3D* src = problem_.source;
+  return src && src->active() && !src->is_total(t) && !problem_.is_shell(t);
+}
+
+Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) const {
+  if (adds_source(t))
+    return problem_.source->field->H(point(t, bary)) - grad_potential(t, bary);
+  return -grad_potential(t, bary);
+}
+
+Eigen::Vector3d Field3D::H_at(std::size_t t, int q) const {
+  const auto& bary = tet_rule(SourceFieldTable3D::rule_degree)[q].bary;
+  if (adds_source(t))
+    return problem_.source->table.H(t, q) - grad_potential(t, bary);
+  return -grad_potential(t, bary);
+}
+
+Eigen::Vector3d Field3D::B_at_node(std::size_t t, int i) const {
+  const auto& bary = tet_dof_nodes[i];
+  Eigen::Vector3d h = -grad_potential(t, bary);
+  if (adds_source(t))
+    h += problem_.source->table.H_at_dof(dofs_.element_dofs(t)[i]);
+  return B_of_H(t, point(t, bary), h);
+}
+
+Eigen::Vector3d Field3D::B_at(std::size_t t, int q) const {
+  const auto& bary = tet_rule(SourceFieldTable3D::rule_degree)[q].bary;
+  return B_of_H(t, point(t, bary), H_at(t, q));
 }
 
 int Field3D::shape_gradients(std::size_t t, const std::array<double, 4>& bary,
@@ -135,7 +164,7 @@ std::vector<Eigen::Vector3d> Field3D::recovered_B(int threads) const {
                                            mesh.nodes[tet[2]], mesh.nodes[tet[3]])
                                .volume;
         for (int i = 0; i < n; ++i) {
-          const Eigen::Vector3d b = vol * B(t, tet_dof_nodes[i]);
+          const Eigen::Vector3d b = vol * B_at_node(t, i);
           out[4 * i] = b.x(), out[4 * i + 1] = b.y(), out[4 * i + 2] = b.z();
           out[4 * i + 3] = vol;
         }

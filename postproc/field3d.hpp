@@ -28,6 +28,12 @@ public:
   // gradient of the source potential in total ones (coil_source3d.hpp); zero without coils.
   // Shell tets: -grad phi in the mesh's (mapped) coordinates, without the source.
   Eigen::Vector3d H(std::size_t t, const std::array<double, 4>& bary) const;
+  // H and B at point q of tet_rule(SourceFieldTable3D::rule_degree), with the coils' field
+  // from the source table: what integrals over the whole mesh (energy, flux linkage) use.
+  Eigen::Vector3d H_at(std::size_t t, int q) const;
+  Eigen::Vector3d B_at(std::size_t t, int q) const;
+  // B at the element's DOF node i (tet_dof_nodes[i]), the coils' field from the source table.
+  Eigen::Vector3d B_at_node(std::size_t t, int i) const;
   // B = mu(|H|^2) H + B_r m_hat(x) in T, from the region's law.
   Eigen::Vector3d B(std::size_t t, const std::array<double, 4>& bary) const;
   Eigen::Vector3d B_of_H(std::size_t t, const Eigen::Vector3d& x, const Eigen::Vector3d& h) const;
@@ -53,6 +59,10 @@ public:
                               const std::array<double, 4>& bary) const;
 
 private:
+  // grad of the potential (u, plus the source potential in total regions) at bary.
+  Eigen::Vector3d grad_potential(std::size_t t, const std::array<double, 4>& bary) const;
+  bool adds_source(std::size_t t) const; // reduced tet outside the shell, with coils
+
   const Problem3D& problem_;
   const DofMap3D& dofs_;
   Eigen::VectorXd phi_;

@@ -27,8 +27,8 @@ VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& re
   if (coils) {
     // The coils' free-space field, and the reduced potential's meaning made visible.
     VtuArray hs{"H_s", 3, {}};
-    for (const auto& x : g.points) {
-      const Eigen::Vector3d h = src->field->H(x);
+    for (int d = 0; d < static_cast<int>(g.points.size()); ++d) {
+      const Eigen::Vector3d h = src->table.H_at_dof(d); // zero where only the shell has d
       hs.values.insert(hs.values.end(), {h.x(), h.y(), h.z()});
     }
     g.point_data.push_back(std::move(hs));

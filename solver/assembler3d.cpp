@@ -111,13 +111,18 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
   std::array<double, 10> value;
   for (int i = 0; i < n; ++i)
     value[i] = phi_full[dof[i]] + (total ? src->offset[dof[i]] : 0.0);
-  const int degree = (in_shell || mat.is_nonlinear() || radial || curved) ? 5 : 2 * (order - 1);
+  // (The coil source table is sampled on the same rule: reduced nonlinear elements read it.)
+  const int degree = (in_shell || mat.is_nonlinear() || radial || curved)
+                         ? SourceFieldTable3D::rule_degree
+                         : 2 * (order - 1);
 
   std::fill(re, re + n, 0.0);
   if (ke)
     std::fill(ke, ke + n * n, 0.0);
   std::array<Eigen::Vector3d, 10> grad, dgrad;
-  for (const auto& q : tet_rule(degree)) {
+  const auto& rule = tet_rule(degree);
+  for (std::size_t qi = 0; qi < rule.size(); ++qi) {
+    const TetQuadPoint& q = rule[qi];
     Eigen::Vector3d x;
     double w = 0;
     if (curved) {
@@ -139,8 +144,8 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
       flux = d * grad_phi;
     } else {
       Eigen::Vector3d h = -grad_phi;
-      if (source_inside)
-        h += src->field->H(x);
+      if (source_inside) // nonlinear: the degree of the source table's rule
+        h += src->table.H(t, static_cast<int>(qi));
       double mu = 0, dmu = 0;
       mat.permeability(h.squaredNorm(), mu, dmu);
       flux = -mu * h;
@@ -231,8 +236,11 @@ void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
   if (!in_shell)
     mat.permeability(0.0, mu, dmu);
   std::array<Eigen::Vector3d, 10> grad;
-  // H_s is not polynomial: the degree-5 rule, as for the other non-polynomial integrands.
-  for (const auto& q : tet_rule(5)) {
+  // H_s is not polynomial: the source table's degree-5 rule, as for the other
+  // non-polynomial integrands.
+  const auto& rule = tet_rule(SourceFieldTable3D::rule_degree);
+  for (std::size_t qi = 0; qi < rule.size(); ++qi) {
+    const TetQuadPoint& q = rule[qi];
     Eigen::Vector3d x;
     double w = 0;
     if (curved) {
@@ -243,14 +251,12 @@ void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
       x = q.bary[0] * nodes[tet[0]] + q.bary[1] * nodes[tet[1]] + q.bary[2] * nodes[tet[2]] +
           q.bary[3] * nodes[tet[3]];
     }
-    Eigen::Vector3d b;
-    if (in_shell) {
-      const Eigen::Vector3d xp = shell_.map(x);
-      const Eigen::Vector3d hs = coil < 0 ? src.field->H(xp) : src.field->H_per_ampere(coil, xp);
-      b = mu0 * (shell_.det_times_inverse_jacobian(x) * hs);
-    } else {
-      b = mu * (coil < 0 ? src.field->H(x) : src.field->H_per_ampere(coil, x));
-    }
+    // The table holds H_s at the mapped point shell_.map(x) in shell tets.
+    const int qn = static_cast<int>(qi);
+    const Eigen::Vector3d hs = coil < 0 ? src.table.H(t, qn) : src.table.H_per_ampere(t, qn, coil);
+    const Eigen::Vector3d b =
+        in_shell ? Eigen::Vector3d(mu0 * (shell_.det_times_inverse_jacobian(x) * hs))
+                 : Eigen::Vector3d(mu * hs);
     for (int i = 0; i < n; ++i)
       re[i] -= w * grad[i].dot(b);
   }

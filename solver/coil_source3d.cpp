@@ -9,7 +9,9 @@
 namespace magfem {
 namespace {
 
-bool is_soft(const Material& m) { return !m.is_magnet() && (m.is_nonlinear() || m.mu_r != 1.0); }
+bool is_soft(const Material& m) {
+  return !m.is_magnet() && (m.is_nonlinear() || m.mu_r != 1.0);
+}
 
 // -integral_a^b H_s . dl per ampere for every coil: the source potential difference
 // Phi_s(b) - Phi_s(a). Four Gauss points: H_s is smooth on the scale of an element edge in
@@ -19,10 +21,11 @@ void potential_step(const SourceField3D& field, const Eigen::Vector3d& a, const 
   const int nc = field.n_coils();
   std::fill(out.begin(), out.end(), 0.0);
   const Eigen::Vector3d d = b - a;
+  std::vector<Eigen::Vector3d> h(nc);
   for (std::size_t q = 0; q < rule.x.size(); ++q) {
-    const Eigen::Vector3d x = a + rule.x[q] * d;
+    field.H_per_ampere_all(a + rule.x[q] * d, h.data());
     for (int k = 0; k < nc; ++k)
-      out[k] -= rule.w[q] * field.H_per_ampere(k, x).dot(d);
+      out[k] -= rule.w[q] * h[k].dot(d);
   }
 }
 
@@ -109,8 +112,8 @@ CoilSource3D make_coil_source_3d(const Problem3D& problem, const DofMap3D& dofs,
     for (int a = 1; a < 4; ++a) {
       potential_step(field, x[ed[0]], x[ed[a]], rule, step);
       for (int q = 0; q < nc; ++q) {
-        const double e = src.offset_per_ampere[q][ed[a]] - src.offset_per_ampere[q][ed[0]] -
-                         step[q];
+        const double e =
+            src.offset_per_ampere[q][ed[a]] - src.offset_per_ampere[q][ed[0]] - step[q];
         auto& m = mismatch[component[ed[0]]];
         m = std::max(m, std::abs(e) / std::max(field.turns(q), 1e-300));
       }
@@ -131,6 +134,7 @@ CoilSource3D make_coil_source_3d(const Problem3D& problem, const DofMap3D& dofs,
   }
   for (int q = 0; q < nc; ++q)
     src.offset += field.current(q) * src.offset_per_ampere[q];
+  src.table = SourceFieldTable3D(problem, dofs, field);
   return src;
 }
 

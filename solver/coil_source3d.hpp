@@ -25,6 +25,7 @@
 #include "solver/dof_map3d.hpp"
 #include "solver/problem3d.hpp"
 #include "solver/source_field3d.hpp"
+#include "solver/source_field_table3d.hpp"
 
 namespace magfem {
 
@@ -33,6 +34,7 @@ struct CoilSource3D {
   std::vector<unsigned char> total;               // per tet: 1 = total-potential region
   std::vector<Eigen::VectorXd> offset_per_ampere; // per coil: Phi_s at every DOF (A per A)
   Eigen::VectorXd offset;                         // sum of current * offset_per_ampere
+  SourceFieldTable3D table;                       // H_s at the rule points of every tet
   std::vector<std::string> warnings;
 
   bool active() const { return field != nullptr && field->n_coils() > 0; }
