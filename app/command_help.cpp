@@ -63,7 +63,9 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  case's unit, angles in degrees.\n"
      "  Axisymmetric cases: --move translates GROUP along the axis by the positions (mm)\n"
      "  and writes sweep.csv (position_mm,Fz_N: the Lorentz force on the group).\n"
-     "  --jobs N   positions solved in parallel (default: one per core)\n"
+     "  --jobs N   positions solved in parallel (default: one per core); FE positions\n"
+     "             share the memory limit (--max-memory, else the memory available): fewer\n"
+     "             run at once if N do not fit (said on stderr, summary.json `jobs`)\n"
      "  --resume   continue a sweep that was interrupted (Ctrl-C, kill, crash): every\n"
      "             finished position is kept in DIR/.magfem-checkpoint.jsonl as it\n"
      "             finishes, and is not solved again; the outputs are those of an\n"
@@ -73,7 +75,7 @@ constexpr std::array<CommandHelp, 8> commands{{
      "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"
      "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
      "                    [--analytic|--fe] [--mesh-scale S] [--order 1|2] [--jobs N]\n"
-     "                    [--quiet] [--out DIR]",
+     "                    [--quiet] [--resume] [--out DIR]",
      "evaluate torque objectives over a grid of case-file parameters",
      "  Every combination of the --param values (the file's `parameters:`, in each one's\n"
      "  own unit) is read and swept as `magfem sweep` does (analytic by default: the\n"
@@ -82,7 +84,11 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  study.csv (one column per parameter, one per objective), study.png (a contour map\n"
      "  for two parameters, else lines), summary.json into DIR (default out/<case>_study).\n"
      "  --mesh-scale and --order set the --fe sweep's mesh as in `solve`. Exit 3 if a\n"
-     "  design failed (listed in summary.json; the others are written).\n"},
+     "  design failed (listed in summary.json; the others are written).\n"
+     "  --resume   continue a study that was interrupted (Ctrl-C, kill, crash): every\n"
+     "             finished design is kept in DIR/.magfem-checkpoint.jsonl as it\n"
+     "             finishes, and is not evaluated again; the outputs are those of an\n"
+     "             uninterrupted run. Refused if the case file or options changed.\n"},
     {"optimize",
      "magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ...]\n"
      "                    --maximize|--minimize peak_torque|torque_at:DEG\n"

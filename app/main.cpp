@@ -292,8 +292,9 @@ int run_sweep(const Args& args) {
   report_restored(checkpoint);
   o.checkpoint = &checkpoint;
 
+  magfem::SweepJobs jobs;
   const auto rows =
-      magfem::run_sweep(spec, o, args.quiet ? magfem::SweepProgress{} : show_progress);
+      magfem::run_sweep(spec, o, args.quiet ? magfem::SweepProgress{} : show_progress, &jobs);
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows));
   std::string why;
@@ -324,6 +325,10 @@ int run_sweep(const Args& args) {
     j["positions"].push_back(p);
   }
   j["failed_positions"] = failed;
+  j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
+  if (jobs.position_memory_mb > 0)
+    j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
+    j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();

@@ -72,15 +72,22 @@ double memory_limit_mb(double max_memory_gb) {
   return std::min(meminfo_available_mb(), cgroup_available_mb());
 }
 
-void check_memory(const MeshEstimate3D& estimate, int order, int n_coils, double max_memory_gb,
+double MemoryLimit::share_mb() const {
+  return (shared_mb > 0 ? shared_mb : memory_limit_mb(max_memory_gb)) / std::max(1, parallel_runs);
+}
+
+void check_memory(const MeshEstimate3D& estimate, int order, int n_coils, const MemoryLimit& memory,
                   double mesh_scale, const std::function<double(double)>& tets_at_factor) {
-  const double limit = memory_limit_mb(max_memory_gb);
+  const double limit = memory.share_mb();
   const double need = estimated_peak_memory_mb(estimate.tetrahedra, order, n_coils);
   if (need <= limit)
     return;
-  const std::string field = max_memory_gb > 0 ? "--max-memory" : "--mesh-scale";
-  const std::string source =
-      max_memory_gb > 0 ? "the --max-memory limit" : "the memory available now";
+  const bool given = memory.max_memory_gb > 0;
+  const std::string field = given ? "--max-memory" : "--mesh-scale";
+  std::string source = given ? "the --max-memory limit" : "the memory available now";
+  if (memory.parallel_runs > 1)
+    source = "its 1/" + std::to_string(memory.parallel_runs) + " share of " + source + " (" +
+             std::to_string(memory.parallel_runs) + " runs at once, --jobs)";
   std::string message = "the mesh would have about " + fixed(estimate.tetrahedra / 1e6, 2) +
                         " million tetrahedra and need about " + fixed(need / 1024, 2) +
                         " GB at order " + std::to_string(order) + ", more than " + source + " (" +

@@ -22,11 +22,22 @@ double estimated_peak_memory_mb(double tetrahedra, int order, int n_coils = 0);
 // the cgroup the process runs in, if it has a limit) has available now.
 double memory_limit_mb(double max_memory_gb);
 
-// Throws InputError (field --max-memory when the limit came from it, else --mesh-scale)
-// when the estimate exceeds the limit, naming the --mesh-scale that would fit (searched with
-// `tets_at_factor`, the estimate with every size multiplied by a factor), or saying that none
-// up to 8 times the present one does; `mesh_scale` is the one in force (1 if none given).
-void check_memory(const MeshEstimate3D& estimate, int order, int n_coils, double max_memory_gb,
+// The limit one run is checked against. Runs that go on at once (the FE positions of a sweep
+// with --jobs) share one limit: it is measured once for all of them (`shared_mb`, else at
+// the check) and each may use 1/parallel_runs of it.
+struct MemoryLimit {
+  double max_memory_gb = 0; // --max-memory; 0: the memory available now
+  double shared_mb = 0;     // the whole limit, fixed by the caller of parallel runs (MB)
+  int parallel_runs = 1;
+  double share_mb() const; // what this run may use, MB
+};
+
+// Throws InputError (field --max-memory when the limit came from it, else --mesh-scale;
+// --jobs named when the limit is shared) when the estimate exceeds the limit, naming the
+// --mesh-scale that would fit (searched with `tets_at_factor`, the estimate with every size
+// multiplied by a factor), or saying that none up to 8 times the present one does;
+// `mesh_scale` is the one in force (1 if none given).
+void check_memory(const MeshEstimate3D& estimate, int order, int n_coils, const MemoryLimit& limit,
                   double mesh_scale, const std::function<double(double)>& tets_at_factor);
 
 } // namespace magfem

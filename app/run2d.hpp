@@ -31,6 +31,10 @@ struct RunOverrides {
   double domain_radius = 0;     // metres; 0 = as in the case
   double max_memory_gb = 0;     // 3D memory guard limit; 0 = the memory available now
   Progress* progress = nullptr; // console progress (not owned); null = silent
+  // 3D memory guard, for runs that go on at once (sweep --jobs): their number and the limit
+  // they share, fixed once for all (MB; 0 = measured at the check). Each gets its share.
+  int parallel_runs = 1;
+  double shared_memory_mb = 0;
 };
 
 // An axisymmetric coil (region with turns and current): its flux linkage with the total field

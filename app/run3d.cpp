@@ -53,7 +53,8 @@ std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
 Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
   const auto guard = [&](const MeshEstimate3D& e, const std::function<double(double)>& at) {
     estimate = e;
-    check_memory(e, spec.order, static_cast<int>(spec.geometry3d.coils.size()), ov.max_memory_gb,
+    const MemoryLimit limit{ov.max_memory_gb, ov.shared_memory_mb, ov.parallel_runs};
+    check_memory(e, spec.order, static_cast<int>(spec.geometry3d.coils.size()), limit,
                  ov.mesh_scale > 0 ? ov.mesh_scale : 1.0, at);
   };
   try {
@@ -83,15 +84,30 @@ Problem3D build_problem(const CaseSpec& spec, const Mesh3D& mesh) {
 
 } // namespace
 
-std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
-  const auto t_start = Clock::now();
-  auto run = std::make_unique<Run3D>();
+namespace {
+
+void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
   if (ov.order)
     spec.order = ov.order;
   if (ov.mesh_scale > 0)
     spec.geometry3d.options.size_scale *= ov.mesh_scale;
   if (ov.domain_radius > 0)
     spec.geometry3d.outer.radius = ov.domain_radius;
+}
+
+} // namespace
+
+double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
+  apply_overrides(spec, ov);
+  const MeshEstimate3D e = estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec));
+  return estimated_peak_memory_mb(e.tetrahedra, spec.order,
+                                  static_cast<int>(spec.geometry3d.coils.size()));
+}
+
+std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
+  const auto t_start = Clock::now();
+  auto run = std::make_unique<Run3D>();
+  apply_overrides(spec, ov);
   run->spec = std::move(spec);
   run->spec.newton.linear.progress = ov.progress;
   auto stage = [&](const std::string& what) {

@@ -39,6 +39,9 @@ struct Run3D {
 };
 
 std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides = {});
+// The memory guard's estimate of the peak memory (MB) run_case_3d would need for this case,
+// from the size field alone (no mesh is made; seconds on large cases).
+double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& overrides = {});
 void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
 std::string describe_run_3d(const Run3D& run);
 

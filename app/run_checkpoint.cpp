@@ -39,7 +39,7 @@ RunCheckpoint::RunCheckpoint(const std::filesystem::path& out_dir, const std::st
     std::string line;
     if (!in || !std::getline(in, line)) {
       std::cerr << "magfem: note: --resume: no checkpoint in " << out_dir.string()
-                << ", starting from the first position\n";
+                << ", starting from the beginning\n";
     } else {
       const auto head = nlohmann::json::parse(line, nullptr, false);
       if (head.is_discarded() || head.value("identity", "") != identity)

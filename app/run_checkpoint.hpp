@@ -1,6 +1,7 @@
 #pragma once
-// The finished positions of a sweep, kept on disk as each one finishes, so that a run stopped
-// by Ctrl-C, kill or a crash can be continued with --resume instead of started again.
+// The finished positions of a sweep (entries of validate, designs of study), kept on disk as
+// each one finishes, so that a run stopped by Ctrl-C, kill or a crash can be continued with
+// --resume instead of started again.
 //
 // The file is <out>/.magfem-checkpoint.jsonl: a first line naming the run (the command, the
 // options that change results, a hash of the case file and the magfem commit), then one JSON

@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "app/build_info.hpp"
 #include "app/cli_number.hpp"
+#include "app/run_checkpoint.hpp"
 #include "app/study_plot.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
@@ -161,6 +163,8 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
       analytic = true;
     else if (arg == "--quiet")
       o.quiet = true;
+    else if (arg == "--resume")
+      o.resume = true;
     else if (arg == "--fe")
       fe = true;
     else if (arg == "--jobs") {
@@ -207,7 +211,72 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
   return o;
 }
 
-std::vector<StudyDesign> run_study(const StudyOptions& options) {
+namespace {
+
+// A design's checkpoint key: its parameter values, exactly.
+std::string design_key(const std::vector<double>& values) {
+  std::string key;
+  for (double v : values) {
+    if (!key.empty())
+      key += ',';
+    key += RunCheckpoint::key_of(v);
+  }
+  return key;
+}
+
+// What study.csv and summary.json need of a finished design (doubles exact: nlohmann::json
+// writes the shortest text that reads back as the same double).
+nlohmann::json design_to_json(const StudyDesign& d) {
+  return {{"parameters", d.parameters},
+          {"objectives", d.objectives},
+          {"method", d.method},
+          {"torque_accuracy", d.torque_accuracy},
+          {"seconds", d.seconds}};
+}
+
+// A recorded design, if its record has the shape this build writes (else it is evaluated
+// again, as a line cut short by the interrupt is).
+std::optional<StudyDesign> design_from_json(const nlohmann::json& j, std::size_t n_objectives) {
+  try {
+    StudyDesign d;
+    d.parameters = j.at("parameters").get<std::vector<double>>();
+    d.objectives = j.at("objectives").get<std::vector<double>>();
+    d.method = j.at("method").get<std::string>();
+    d.torque_accuracy = j.at("torque_accuracy").get<double>();
+    d.seconds = j.at("seconds").get<double>();
+    d.ok = true;
+    if (d.objectives.size() != n_objectives)
+      return std::nullopt;
+    return d;
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
+
+} // namespace
+
+std::string study_checkpoint_identity(const StudyOptions& o) {
+  const auto exact = [](double v) { return RunCheckpoint::key_of(v); };
+  std::string text;
+  for (const auto& p : o.parameters) {
+    text += "param " + p.name + "=";
+    for (double v : p.values)
+      text += exact(v) + ",";
+    text += " ";
+  }
+  for (const auto& obj : o.objectives)
+    text += "objective " + obj.name + "@" + exact(obj.angle_deg) + " ";
+  text += "rotate " + o.sweep.group + " axis " + exact(o.sweep.axis.x()) + "," +
+          exact(o.sweep.axis.y()) + "," + exact(o.sweep.axis.z()) + " angles ";
+  for (double a : o.sweep.angles_deg)
+    text += exact(a) + ",";
+  text += o.sweep.analytic ? " analytic tolerance " + exact(o.sweep.analytic_tolerance)
+                           : " fe order " + std::to_string(o.sweep.order) + " mesh-scale " +
+                                 exact(o.sweep.mesh_scale);
+  return checkpoint_identity("study", o.case_file, text);
+}
+
+std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* checkpoint) {
   // Fail early for names the file does not declare (read_case names them as --param); the
   // first design's own problems (crossing radii) are that design's, reported with it.
   try {
@@ -234,7 +303,18 @@ std::vector<StudyDesign> run_study(const StudyOptions& options) {
   // design takes minutes and gets its own line).
   auto last = std::chrono::steady_clock::now();
   for (const auto& values : grid) {
-    designs.push_back(evaluate_study_design(options, values));
+    const std::string key = design_key(values);
+    std::optional<StudyDesign> restored;
+    if (checkpoint)
+      if (const auto saved = checkpoint->find(key))
+        restored = design_from_json(*saved, options.objectives.size());
+    if (restored) {
+      designs.push_back(std::move(*restored));
+    } else {
+      designs.push_back(evaluate_study_design(options, values));
+      if (checkpoint && designs.back().ok) // failed designs are tried again on --resume
+        checkpoint->record(key, design_to_json(designs.back()));
+    }
     const auto now = std::chrono::steady_clock::now();
     if (!options.quiet && (now - last > std::chrono::seconds(2) || designs.size() == grid.size())) {
       std::fprintf(stderr, "study: design %zu/%zu done (%.1f s)%s\n", designs.size(), grid.size(),
@@ -268,7 +348,11 @@ std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign
 }
 
 int run_study_command(const StudyOptions& options) {
-  const auto designs = run_study(options);
+  RunCheckpoint checkpoint(options.out_dir, study_checkpoint_identity(options), options.resume);
+  if (checkpoint.n_restored())
+    std::fprintf(stderr, "magfem: --resume: %zu finished designs from the checkpoint\n",
+                 checkpoint.n_restored());
+  const auto designs = run_study(options, &checkpoint);
   std::filesystem::create_directories(options.out_dir);
   OutputStage stage(options.out_dir);
   stage.write_text("study.csv", study_csv(options, designs));
@@ -311,6 +395,7 @@ int run_study_command(const StudyOptions& options) {
     j["max_torque_error_Nm"] = accuracy;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
+  checkpoint.remove();
 
   for (const auto& p : options.parameters)
     std::printf("%14s", p.name.c_str());

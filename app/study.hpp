@@ -1,7 +1,8 @@
 #pragma once
 // `magfem study CASE.yaml --param NAME=START:STEP:END [--param ..] --objective Q [..]
 //  [--rotate GROUP --axis A --angles LIST] [--analytic|--fe] [--mesh-scale S] [--order 1|2]
-//  [--jobs N] [--out DIR]`: (--mesh-scale and --order are the FE sweep's, as in `solve`)
+//  [--jobs N] [--resume] [--out DIR]`: (--mesh-scale and --order are the FE sweep's, as in
+//  `solve`)
 // a grid over case-file parameters (casefile/case_parameters.hpp), each design evaluated by a
 // sweep (app/sweep.hpp: analytic by default, the harmonic form where it applies), writing
 // DIR/study.csv (one column per parameter, one per objective), study.png and summary.json.
@@ -9,6 +10,9 @@
 // Objectives (torque about the rotation axis, on the rotated group, N m):
 //   peak_torque      max over --angles of |T . axis|
 //   torque_at:DEG    T . axis at DEG (one position; --angles not needed)
+//
+// Every finished design is kept in DIR/.magfem-checkpoint.jsonl as it finishes
+// (app/run_checkpoint.hpp, the sweep's); --resume restores them and evaluates the rest.
 #include <string>
 #include <vector>
 
@@ -18,6 +22,8 @@
 #include "casefile/case_spec.hpp"
 
 namespace magfem {
+
+class RunCheckpoint;
 
 struct StudyParameter {
   std::string name;
@@ -37,7 +43,8 @@ struct StudyOptions {
   std::vector<StudyObjective> objectives;
   SweepOptions sweep; // group, axis, angles, analytic, jobs (angles: peak_torque only)
   std::string out_dir;
-  bool quiet = false; // no progress lines on stderr
+  bool quiet = false;  // no progress lines on stderr
+  bool resume = false; // continue from the checkpoint in out_dir
 };
 
 // Parses the arguments after `study`; throws InputError naming the option.
@@ -65,13 +72,21 @@ StudyDesign evaluate_study_design(const StudyOptions& options, const std::vector
 // Every design of the grid (the last parameter varies fastest). A design whose case cannot be
 // read (e.g. the radii cross) or whose sweep fails is recorded with its message; a bad option
 // or a case that fails for every design (unknown parameter, group) throws InputError.
-std::vector<StudyDesign> run_study(const StudyOptions& options);
+// With a checkpoint, a design it holds is restored instead of evaluated, and every design
+// that succeeds is recorded in it as it finishes (failed ones are evaluated again on resume).
+std::vector<StudyDesign> run_study(const StudyOptions& options,
+                                   RunCheckpoint* checkpoint = nullptr);
+
+// The identity line of a study's checkpoint: the case file's hash, the commit and every
+// option that changes a result (values with 17 significant digits; not --jobs, --quiet).
+std::string study_checkpoint_identity(const StudyOptions& options);
 
 // study.csv: the parameter names, then the objective names; successful designs only.
 std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs);
 
 // The command: runs, writes study.csv, study.png (if gnuplot is there) and summary.json
 // through one OutputStage, prints a table; returns the exit code (3 if any design failed).
+// Keeps the checkpoint while it runs (options.resume: continues from it), removes it after.
 int run_study_command(const StudyOptions& options);
 
 } // namespace magfem

@@ -12,6 +12,7 @@
 
 #include "app/analytic_scene.hpp"
 #include "app/force3d.hpp"
+#include "app/memory_guard.hpp"
 #include "app/run3d.hpp"
 #include "app/run_checkpoint.hpp"
 #include "core/constants.hpp"
@@ -163,8 +164,26 @@ std::optional<ExteriorFieldInteraction> exterior_position(const std::vector<Anal
   return std::nullopt;
 }
 
+// The FE overrides of every position (the memory guard's sharing is set by run_sweep).
+RunOverrides fe_overrides(const SweepOptions& o) {
+  RunOverrides ov;
+  ov.order = o.order;
+  ov.mesh_scale = o.mesh_scale;
+  ov.max_memory_gb = o.max_memory_gb;
+  return ov;
+}
+
+// What FE solves at one position: the rotated case with the stress sphere of `surface`, and
+// no probes or VTU (a sweep wants forces only).
+CaseSpec fe_position_case(CaseSpec spec, const StressSurface& surface) {
+  spec.probes.clear();
+  spec.write_vtu = false;
+  return with_stress_sphere(std::move(spec), surface.radius, "sweep");
+}
+
 // Force and torque (about the origin) on the rotated group at one position.
-SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angle_deg) {
+SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, const RunOverrides& fe,
+                        double angle_deg) {
   SweepRow row;
   row.angle_deg = angle_deg;
   const auto t0 = std::chrono::steady_clock::now();
@@ -209,14 +228,7 @@ SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angl
       }
     } else {
       const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
-      RunOverrides ov;
-      ov.order = o.order;
-      ov.mesh_scale = o.mesh_scale;
-      ov.max_memory_gb = o.max_memory_gb;
-      spec.probes.clear(); // a sweep wants forces only
-      spec.write_vtu = false;
-      const auto run =
-          run_case_3d(with_stress_sphere(std::move(spec), surface.radius, "sweep"), ov);
+      const auto run = run_case_3d(fe_position_case(std::move(spec), surface), fe);
       const ForceResult& inside = run->forces.back();
       // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
       // rest of the (isolated) system, torque about the same point included.
@@ -265,15 +277,55 @@ SweepRow row_from_json(const nlohmann::json& j) {
 }
 
 // A position from the checkpoint if an earlier run finished it, else solved (and recorded).
-SweepRow checkpointed_position(const CaseSpec& spec, const SweepOptions& o, double angle_deg) {
+SweepRow checkpointed_position(const CaseSpec& spec, const SweepOptions& o, const RunOverrides& fe,
+                               double angle_deg) {
   const std::string key = RunCheckpoint::key_of(angle_deg);
   if (o.checkpoint)
     if (const auto saved = o.checkpoint->find(key))
       return row_from_json(*saved);
-  SweepRow row = solve_position(spec, o, angle_deg);
+  SweepRow row = solve_position(spec, o, fe, angle_deg);
   if (o.checkpoint && row.ok) // failed positions are tried again on --resume
     o.checkpoint->record(key, row_to_json(row));
   return row;
+}
+
+// Every FE position needs its own memory while it runs: with W at once they share the memory
+// guard's limit. Rather than refuse a sweep whose positions fit one at a time but not W at
+// once, fewer run at once: as many as fit, each with a 1/W share of the limit it is checked
+// against (the first position's estimate stands for all; the others' meshes differ by a few
+// per cent, hence the margin). A first position that cannot be estimated (a bad part) is
+// left to fail as a position, with its message.
+constexpr double position_spread = 1.1;
+
+void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<double>& angles,
+               SweepJobs& jobs) {
+  if (o.analytic || jobs.requested < 2)
+    return;
+  try {
+    const CaseSpec first =
+        rotate_group(spec, o.group, o.axis, angles.front() * deg_to_rad, o.point);
+    jobs.position_memory_mb = estimated_memory_mb_3d(
+        fe_position_case(first, stress_surface(first, o.group, o.surface_radius)), fe_overrides(o));
+  } catch (const std::exception&) {
+    return;
+  }
+  jobs.memory_limit_mb = memory_limit_mb(o.max_memory_gb);
+  const double fit = std::floor(jobs.memory_limit_mb / (position_spread * jobs.position_memory_mb));
+  jobs.used = static_cast<int>(std::clamp(fit, 1.0, static_cast<double>(jobs.requested)));
+  if (jobs.used >= jobs.requested)
+    return;
+  char what[96];
+  if (o.jobs > 0)
+    std::snprintf(what, sizeof what, "--jobs %d reduced to %d", o.jobs, jobs.used);
+  else
+    std::snprintf(what, sizeof what, "%d positions at once instead of %d (one per core)", jobs.used,
+                  jobs.requested);
+  std::fprintf(stderr,
+               "magfem: note: %s: %d FE positions at once would need more than %s (%.2f GB; "
+               "one needs about %.2f GB, estimated)\n",
+               what, jobs.requested,
+               o.max_memory_gb > 0 ? "the --max-memory limit" : "the memory available now",
+               jobs.memory_limit_mb / 1024, jobs.position_memory_mb / 1024);
 }
 
 } // namespace
@@ -392,7 +444,7 @@ Eigen::Vector3d parse_axis(const std::string& text) {
 }
 
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
-                                const SweepProgress& progress) {
+                                const SweepProgress& progress, SweepJobs* jobs_used) {
   // Fail early, on the main thread, for mistakes that every position would repeat.
   (void)rotate_group(spec, options.group, options.axis, 0.0, options.point);
   if (!options.analytic)
@@ -403,14 +455,22 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   const int total = static_cast<int>(options.angles_deg.size());
   std::vector<SweepRow> rows(total);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const int workers =
-      std::clamp(options.jobs > 0 ? options.jobs : static_cast<int>(cores), 1, total);
+  SweepJobs jobs;
+  jobs.requested = std::clamp(options.jobs > 0 ? options.jobs : static_cast<int>(cores), 1, total);
+  jobs.used = jobs.requested;
+  plan_jobs(spec, options, options.angles_deg, jobs);
+  if (jobs_used)
+    *jobs_used = jobs;
+  const int workers = jobs.used;
+  RunOverrides fe = fe_overrides(options);
+  if (workers > 1 && jobs.memory_limit_mb > 0)
+    fe.parallel_runs = workers, fe.shared_memory_mb = jobs.memory_limit_mb;
   std::atomic<int> next{0};
   int done = 0;
   std::mutex mutex;
   auto work = [&] {
     for (int i; (i = next++) < total;) {
-      rows[i] = checkpointed_position(spec, options, options.angles_deg[i]);
+      rows[i] = checkpointed_position(spec, options, fe, options.angles_deg[i]);
       const std::lock_guard<std::mutex> lock(mutex);
       ++done;
       if (progress)

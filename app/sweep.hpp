@@ -80,9 +80,20 @@ Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text
 // Parses x|y|z or "ax,ay,az"; throws InputError.
 Eigen::Vector3d parse_axis(const std::string& text);
 
+// How many positions ran at once. FE positions each need their own memory: no more run at
+// once than fit together in the memory guard's limit (--max-memory, else the memory available
+// at the start), estimated from the first position's mesh with a 10 % margin for the others,
+// and each is checked against its share of the limit.
+struct SweepJobs {
+  int requested = 1;             // --jobs, or one per core; at most one per position
+  int used = 1;                  // fewer when the memory holds fewer FE positions at once
+  double position_memory_mb = 0; // estimated peak of one FE position (0: not estimated)
+  double memory_limit_mb = 0;    // the limit they share (0: not estimated)
+};
+
 using SweepProgress = std::function<void(int done, int total)>;
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
-                                const SweepProgress& progress = {});
+                                const SweepProgress& progress = {}, SweepJobs* jobs = nullptr);
 
 // The method of the rows ("mixed" if they differ; failed rows do not count; if none
 // succeeded, the one the options ask for), and a line for the terminal on what it was

@@ -487,4 +487,13 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   return collect_mesh(geo, dec, surf, out);
 }
 
+MeshEstimate3D estimate_geometry_mesh_3d(const Geometry3D& geo,
+                                         const std::vector<ProbeSurface>& refine) {
+  const GridDecomposition3D dec = decompose_geometry_3d(geo);
+  const SizeRules rules(geo);
+  const FaceSizing fs = face_sizing(dec, rules);
+  const FaceSoup3D soup(dec, fs.soup_spacing);
+  return estimate_mesh_size(geo, rules, build_size_field(dec, rules, fs, soup, refine));
+}
+
 } // namespace magfem

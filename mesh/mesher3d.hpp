@@ -46,4 +46,9 @@ using MeshSizeCheck =
 Mesh3D build_mesh_3d(const Geometry3D& geometry, const std::vector<ProbeSurface>& refine = {},
                      const MeshSizeCheck& check = {});
 
+// The estimate build_mesh_3d passes to its check, without meshing (the size field only): for a
+// caller that must know the size of several meshes before it runs them at once.
+MeshEstimate3D estimate_geometry_mesh_3d(const Geometry3D& geometry,
+                                         const std::vector<ProbeSurface>& refine = {});
+
 } // namespace magfem
