@@ -50,24 +50,32 @@ std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
   return out;
 }
 
-Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
-  const auto guard = [&](const MeshEstimate3D& e, const std::function<double(double)>& at) {
+// The memory guard as the mesher calls it (estimate first, then the check).
+MeshSizeCheck memory_guard(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
+  return [&spec, &ov, &estimate](const MeshEstimate3D& e, const std::function<double(double)>& at) {
     estimate = e;
     const MemoryLimit limit{ov.max_memory_gb, ov.shared_memory_mb, ov.parallel_runs};
     check_memory(e, spec.order, static_cast<int>(spec.geometry3d.coils.size()), limit,
                  ov.mesh_scale > 0 ? ov.mesh_scale : 1.0, at);
   };
+}
+
+// A mesher error as an input error at the line of the part it names (else the boundary's).
+InputError input_error_of(const CaseSpec& spec, const MeshError& e) {
+  for (std::size_t i = 0; i < spec.regions.size(); ++i)
+    if (const auto& r = spec.regions[i]; r.name == e.part)
+      return InputError(
+          spec.file, r.line,
+          "regions[" + std::to_string(i) + "]" + (e.field.empty() ? "" : "." + e.field), e.what());
+  return InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
+                    e.what());
+}
+
+Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
   try {
-    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), guard);
+    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), memory_guard(spec, ov, estimate));
   } catch (const MeshError& e) {
-    for (std::size_t i = 0; i < spec.regions.size(); ++i)
-      if (const auto& r = spec.regions[i]; r.name == e.part)
-        throw InputError(spec.file, r.line,
-                         "regions[" + std::to_string(i) + "]" +
-                             (e.field.empty() ? "" : "." + e.field),
-                         e.what());
-    throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
-                     e.what());
+    throw input_error_of(spec, e);
   }
 }
 
@@ -96,6 +104,13 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
 }
 
 } // namespace
+
+void check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
+  apply_overrides(spec, ov);
+  MeshEstimate3D estimate;
+  estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
+                            memory_guard(spec, ov, estimate));
+}
 
 double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
   apply_overrides(spec, ov);

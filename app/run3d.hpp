@@ -42,6 +42,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides 
 // The memory guard's estimate of the peak memory (MB) run_case_3d would need for this case,
 // from the size field alone (no mesh is made; seconds on large cases).
 double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& overrides = {});
+// The memory guard of run_case_3d without meshing: InputError (exit 2) naming the
+// --mesh-scale that would fit when the case cannot be solved within the limit. A geometry
+// the mesher rejects throws its MeshError (run_case_3d would name the part).
+void check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
 void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
 std::string describe_run_3d(const Run3D& run);
 

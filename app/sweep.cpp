@@ -17,6 +17,7 @@
 #include "app/run_checkpoint.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "mesh/mesh_error.hpp"
 #include "validation/axisymmetric_interaction.hpp"
 #include "validation/exterior_field_interaction.hpp"
 #include "validation/pair_interaction.hpp"
@@ -451,6 +452,20 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     (void)stress_surface(spec, options.group, options.surface_radius);
   else
     (void)analytic_scene(spec);
+
+  // A position that alone needs more memory than the limit: every position would fail the
+  // guard, so the sweep is bad input (exit 2, naming the --mesh-scale that fits), as for solve.
+  // A first position the mesher rejects is left to fail as a position, with its message.
+  if (!options.analytic && !options.angles_deg.empty()) {
+    const CaseSpec first = rotate_group(spec, options.group, options.axis,
+                                        options.angles_deg.front() * deg_to_rad, options.point);
+    try {
+      check_memory_3d(
+          fe_position_case(first, stress_surface(first, options.group, options.surface_radius)),
+          fe_overrides(options));
+    } catch (const MeshError&) {
+    }
+  }
 
   const int total = static_cast<int>(options.angles_deg.size());
   std::vector<SweepRow> rows(total);

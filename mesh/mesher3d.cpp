@@ -488,12 +488,17 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
 }
 
 MeshEstimate3D estimate_geometry_mesh_3d(const Geometry3D& geo,
-                                         const std::vector<ProbeSurface>& refine) {
+                                         const std::vector<ProbeSurface>& refine,
+                                         const MeshSizeCheck& check) {
   const GridDecomposition3D dec = decompose_geometry_3d(geo);
   const SizeRules rules(geo);
   const FaceSizing fs = face_sizing(dec, rules);
   const FaceSoup3D soup(dec, fs.soup_spacing);
-  return estimate_mesh_size(geo, rules, build_size_field(dec, rules, fs, soup, refine));
+  const MeshEstimate3D e =
+      estimate_mesh_size(geo, rules, build_size_field(dec, rules, fs, soup, refine));
+  if (check)
+    check(e, [&](double factor) { return estimate_scaled(geo, refine, factor).tetrahedra; });
+  return e;
 }
 
 } // namespace magfem

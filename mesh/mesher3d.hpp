@@ -48,7 +48,9 @@ Mesh3D build_mesh_3d(const Geometry3D& geometry, const std::vector<ProbeSurface>
 
 // The estimate build_mesh_3d passes to its check, without meshing (the size field only): for a
 // caller that must know the size of several meshes before it runs them at once.
+// `check`, if given, is called with it as build_mesh_3d calls its own.
 MeshEstimate3D estimate_geometry_mesh_3d(const Geometry3D& geometry,
-                                         const std::vector<ProbeSurface>& refine = {});
+                                         const std::vector<ProbeSurface>& refine = {},
+                                         const MeshSizeCheck& check = {});
 
 } // namespace magfem

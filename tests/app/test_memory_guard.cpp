@@ -100,19 +100,9 @@ std::vector<std::vector<double>> csv_numbers(const fs::path& csv) {
   return rows;
 }
 
-} // namespace
-
-// sweep --jobs against the guard (issue 15): FE positions that run at once each hold their own
-// mesh and matrix, so W of them need W times the memory one position was checked for. A
-// limit that holds one position but not two (1.7 x the estimate of one: above the 1.1 the
-// sweep asks per position, its margin for the other positions' meshes, below 2 x 1.1) runs
-// the positions one at a time instead, and says so; the results are those of the parallel
-// run under a wide limit and the measured peak stays within the limit (two at once measured
-// 180 MB against 146 MB allowed, one at a time 112 MB). Without the reduction both positions
-// would run at once (jobs.used 2), each passing its own check against the whole limit.
-TEST(MemoryGuard, ASweepRunsOnlyAsManyFePositionsAtOnceAsTheLimitHolds) {
-  const std::string case_file =
-      magfem::test::write_temp_case("guard_two_spheres.yaml", R"(title: two spheres, coarse
+// Two magnet spheres, the smaller one in group `arm`, meshed coarsely at order 1.
+std::string two_spheres_case() {
+  return magfem::test::write_temp_case("guard_two_spheres.yaml", R"(title: two spheres, coarse
 dimension: 3
 unit: mm
 materials:
@@ -127,6 +117,20 @@ boundary: {type: open, radius: 40}
 mesh: {size: 8, chord_tolerance: 0.2, probe_size: 2}
 solver: {order: 1}
 )");
+}
+
+} // namespace
+
+// sweep --jobs against the guard (issue 15): FE positions that run at once each hold their own
+// mesh and matrix, so W of them need W times the memory one position was checked for. A
+// limit that holds one position but not two (1.7 x the estimate of one: above the 1.1 the
+// sweep asks per position, its margin for the other positions' meshes, below 2 x 1.1) runs
+// the positions one at a time instead, and says so; the results are those of the parallel
+// run under a wide limit and the measured peak stays within the limit (two at once measured
+// 180 MB against 146 MB allowed, one at a time 112 MB). Without the reduction both positions
+// would run at once (jobs.used 2), each passing its own check against the whole limit.
+TEST(MemoryGuard, ASweepRunsOnlyAsManyFePositionsAtOnceAsTheLimitHolds) {
+  const std::string case_file = two_spheres_case();
   const fs::path wide_out = fs::temp_directory_path() / "magfem_tests" / "guard_sweep_wide";
   const fs::path held_out = fs::temp_directory_path() / "magfem_tests" / "guard_sweep_held";
   fs::remove_all(wide_out);
@@ -162,4 +166,22 @@ solver: {order: 1}
     for (std::size_t k = 0; k < a[i].size(); ++k)
       EXPECT_NEAR(b[i][k], a[i][k], 1e-9 * (std::abs(a[i][k]) + 1e-6))
           << "row " << i << ", column " << k;
+}
+
+// A sweep whose every position needs more than the limit (one position alone does not fit) is
+// bad input, exit 2 before any position runs, naming --max-memory and the --mesh-scale that
+// fits, as solve does; it used to run every position into the guard and exit 3.
+TEST(MemoryGuard, ASweepWhosePositionsCannotFitIsRefusedBeforeItRuns) {
+  const fs::path out = fs::temp_directory_path() / "magfem_tests" / "guard_sweep_refused";
+  fs::remove_all(out);
+  const auto r = run_cli("sweep " + two_spheres_case() +
+                         " --rotate arm --axis y --angles 0,90 --jobs 2 --quiet --max-memory "
+                         "0.02 --out " +
+                         out.string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("--max-memory"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--mesh-scale"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("position"), std::string::npos) << "no position ran: " << r.out;
+  EXPECT_FALSE(fs::exists(out / "sweep.csv")) << "nothing is written";
+  EXPECT_FALSE(fs::exists(out / ".magfem-checkpoint.jsonl")) << "no checkpoint is left";
 }
