@@ -1,6 +1,7 @@
 #include "postproc/coil_linkage3d.hpp"
 
-#include <mutex>
+#include <algorithm>
+#include <atomic>
 #include <thread>
 
 #include "core/constants.hpp"
@@ -12,20 +13,27 @@
 namespace magfem {
 namespace {
 
-// Sum over tets (threaded, one partial sum per thread, added in thread order so the result
-// does not depend on scheduling for a given thread count) of body(t, partial).
+// Sum over tets of body(t, partial), threaded. The tets are summed in fixed blocks, each into
+// its own partial, and the partials added in block order: the result is the same bit for bit
+// whatever the thread count or schedule (one partial per thread made it depend on the count).
 template <class Body>
 Eigen::MatrixXd sum_over_tets(std::size_t n_tets, Eigen::Index rows, Eigen::Index cols,
                               const Body& body) {
+  constexpr std::size_t block = 2048;
+  const std::size_t n_blocks = (n_tets + block - 1) / block;
   const int n_threads =
       static_cast<int>(std::min<std::size_t>(available_threads(), 1 + n_tets / 5000));
-  std::vector<Eigen::MatrixXd> partial(n_threads, Eigen::MatrixXd::Zero(rows, cols));
+  std::vector<Eigen::MatrixXd> partial(n_blocks, Eigen::MatrixXd::Zero(rows, cols));
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t b; (b = next++) < n_blocks;)
+      for (std::size_t t = b * block; t < std::min(n_tets, (b + 1) * block); ++t)
+        body(t, partial[b]);
+  };
   std::vector<std::thread> pool;
-  for (int k = 0; k < n_threads; ++k)
-    pool.emplace_back([&, k] {
-      for (std::size_t t = n_tets * k / n_threads; t < n_tets * (k + 1) / n_threads; ++t)
-        body(t, partial[k]);
-    });
+  for (int k = 1; k < n_threads; ++k)
+    pool.emplace_back(work);
+  work();
   for (auto& th : pool)
     th.join();
   Eigen::MatrixXd total = Eigen::MatrixXd::Zero(rows, cols);

@@ -6,8 +6,7 @@
 // a race, an uninitialized value or an unordered container iterated into the results would
 // break it. Across thread counts (MAGFEM_THREADS and OPENBLAS_NUM_THREADS 1 against 2): the
 // assembly and B recovery are bitwise thread-count independent by construction, but OpenBLAS
-// may split its kernels by thread count (and the 3D coil linkage, not in this case, sums
-// per-thread partial integrals); such sums differ in their last bits, a relative 1e-16 per
+// may split its kernels by thread count; such sums differ in their last bits, a relative 1e-16 per
 // operation. Stated tolerance: 1e-12 relative to the largest value of the same quantity
 // (10^4 ulps of headroom); measured: see the README.
 #include <gtest/gtest.h>
@@ -39,12 +38,15 @@ namespace {
 const std::set<std::string> not_results = {
     "timings_s", "peak_memory_MB", "magfem_version", "magfem_commit", "case", "seconds", "threads"};
 
-int solve(const std::string& case_file, const fs::path& out, int threads) {
+// threads: magfem's own (MAGFEM_THREADS); blas_threads: OpenBLAS's (0: the same).
+int solve(const std::string& case_file, const fs::path& out, int threads, int blas_threads = 0,
+          const std::string& options = "") {
   fs::remove_all(out);
-  const std::string cmd = "MAGFEM_THREADS=" + std::to_string(threads) +
-                          " OPENBLAS_NUM_THREADS=" + std::to_string(threads) + " " +
-                          magfem::test::magfem_binary() + " solve " + case_file +
-                          " --quiet --out " + out.string() + " > " + out.string() + ".log 2>&1";
+  const std::string cmd =
+      "MAGFEM_THREADS=" + std::to_string(threads) +
+      " OPENBLAS_NUM_THREADS=" + std::to_string(blas_threads > 0 ? blas_threads : threads) + " " +
+      magfem::test::magfem_binary() + " solve " + case_file + " " + options + " --quiet --out " +
+      out.string() + " > " + out.string() + ".log 2>&1";
   const int raw = std::system(cmd.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
@@ -190,4 +192,24 @@ forces:
               threads.probes);
   EXPECT_LE(threads.summary, 1e-12);
   EXPECT_LE(threads.probes, 1e-12);
+}
+
+// magfem's own threads alone (OpenBLAS on one thread in both runs): a coil, a magnet, the
+// coil's source-field table, its flux linkage and inductance, the Lorentz force. Every loop of
+// magfem sums in an order fixed by the mesh (elements, or blocks of them), so 1 and 2 threads
+// give the same bits. The linkage used to sum one partial per thread (last bits depending on
+// the count); ~14k tetrahedra, so it runs on two threads. ~3 s a run.
+TEST(Determinism, MagfemThreadCountDoesNotChangeOneBitOfACoilCase) {
+  const std::string coil_case =
+      std::string(magfem::test::source_dir()) + "/examples/3d/coil_and_magnet.yaml";
+  const fs::path one = dir("coil_one"), two = dir("coil_two");
+  const std::string options = "--order 1 --mesh-scale 2";
+  ASSERT_EQ(solve(coil_case, one, 1, 1, options), 0) << text_of(one.string() + ".log");
+  ASSERT_EQ(solve(coil_case, two, 2, 1, options), 0) << text_of(two.string() + ".log");
+  const nlohmann::json summary = nlohmann::json::parse(text_of(two / "summary.json"));
+  ASSERT_GT(summary["elements"].get<double>(), 10000) << "the linkage must run on two threads";
+  ASSERT_TRUE(summary.contains("coils"));
+  const Comparison threads = compare_runs(one, two);
+  EXPECT_EQ(threads.summary, 0.0) << "summary.json numbers differ between 1 and 2 threads";
+  EXPECT_EQ(threads.probes, 0.0) << "probe CSVs differ between 1 and 2 threads";
 }
