@@ -298,6 +298,10 @@ void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& s
   for (std::size_t i = 0; i < vh.size(); ++i)
     cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
   Mesher mesher(cdt, SurfaceCriteria(chart, size));
+  // CGAL 5.5's Delaunay_mesher_no_edge_refinement_2 leaves its seeds_mark flag uninitialized
+  // and refine_mesh() reads it (UBSan: "load of value 174 ... for type 'bool'"); with no seeds
+  // it does not change the result, but the read is undefined. clear_seeds() sets it.
+  mesher.clear_seeds();
   mesher.refine_mesh();
   // Re-mark the domain: only faces inside the boundary loop are output.
   Mesher::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());

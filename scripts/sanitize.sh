@@ -14,7 +14,9 @@ if [[ ${1:-} == --parsers ]]; then
   shift
 fi
 supp=$PWD/tests/sanitize
-export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:abort_on_error=0:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=1
+# fast_unwind_on_malloc=0: full allocation stacks through libraries built without frame
+# pointers (Open MPI), so that tests/sanitize/lsan.supp can name the function that leaks.
+export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:fast_unwind_on_malloc=0:abort_on_error=0:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=$supp/ubsan.supp
 export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 # -O1 keeps the run fast enough and the stack traces exact; asserts (no NDEBUG) stay on.

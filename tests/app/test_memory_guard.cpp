@@ -28,6 +28,15 @@ namespace fs = std::filesystem;
 namespace {
 
 using magfem::test::run_cli;
+
+// Under AddressSanitizer (scripts/sanitize.sh) a run's resident memory includes the shadow
+// memory and the quarantine of freed blocks, several times the model's figures: the limits
+// on the measured peak are checked in normal builds only; everything else is checked in both.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool peak_memory_is_the_runs_own = false;
+#else
+constexpr bool peak_memory_is_the_runs_own = true;
+#endif
 } // namespace
 
 TEST(MemoryGuard, ATinyLimitStopsBeforeMeshingAndTheProposedMeshScaleFits) {
@@ -62,8 +71,10 @@ solver: {order: 1}
   text << std::ifstream(out / "summary.json").rdbuf();
   const auto summary = nlohmann::json::parse(text.str());
   const double limit_mb = 1024 * std::stod(MEMORY_GUARD_LIMIT_GB);
-  EXPECT_LE(summary["peak_memory_MB"].get<double>(), limit_mb)
-      << "the scale the guard proposed did not fit";
+  if (peak_memory_is_the_runs_own) {
+    EXPECT_LE(summary["peak_memory_MB"].get<double>(), limit_mb)
+        << "the scale the guard proposed did not fit";
+  }
   // The element estimate is the guard's basis: within the 30 % the issue asks of it.
   const double est = summary["memory_guard"]["estimated_tetrahedra"].get<double>();
   const double actual = summary["elements"].get<double>();
@@ -154,8 +165,10 @@ TEST(MemoryGuard, ASweepRunsOnlyAsManyFePositionsAtOnceAsTheLimitHolds) {
   const auto held_summary = summary_of(held_out);
   EXPECT_EQ(held_summary["jobs"]["requested"], 2);
   EXPECT_EQ(held_summary["jobs"]["used"], 1);
-  EXPECT_LE(held_summary["peak_memory_MB"].get<double>(), 1024 * limit_gb)
-      << "one position at a time stays within the limit";
+  if (peak_memory_is_the_runs_own) {
+    EXPECT_LE(held_summary["peak_memory_MB"].get<double>(), 1024 * limit_gb)
+        << "one position at a time stays within the limit";
+  }
 
   // The same positions, solved one at a time: the same forces and torques (each position's
   // mesh and solve do not depend on what runs beside it; 1e-9 for the assembly's thread count).
