@@ -1,10 +1,9 @@
 #include "postproc/coil_linkage3d.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 #include "core/constants.hpp"
+#include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/shell_transform.hpp"
@@ -20,22 +19,14 @@ template <class Body>
 Eigen::MatrixXd sum_over_tets(std::size_t n_tets, Eigen::Index rows, Eigen::Index cols,
                               const Body& body) {
   constexpr std::size_t block = 2048;
-  const std::size_t n_blocks = (n_tets + block - 1) / block;
   const int n_threads =
       static_cast<int>(std::min<std::size_t>(available_threads(), 1 + n_tets / 5000));
-  std::vector<Eigen::MatrixXd> partial(n_blocks, Eigen::MatrixXd::Zero(rows, cols));
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t b; (b = next++) < n_blocks;)
-      for (std::size_t t = b * block; t < std::min(n_tets, (b + 1) * block); ++t)
-        body(t, partial[b]);
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < n_threads; ++k)
-    pool.emplace_back(work);
-  work();
-  for (auto& th : pool)
-    th.join();
+  std::vector<Eigen::MatrixXd> partial(block_count(n_tets, block),
+                                       Eigen::MatrixXd::Zero(rows, cols));
+  parallel_blocks(n_tets, block, n_threads, [&](std::size_t b, std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      body(t, partial[b]);
+  });
   Eigen::MatrixXd total = Eigen::MatrixXd::Zero(rows, cols);
   for (const auto& p : partial)
     total += p;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <thread>
 
+#include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/tet_lagrange.hpp"
@@ -34,19 +34,8 @@ void rule_points(const Mesh3D& mesh, const DofMap3D& dofs, std::size_t t,
   }
 }
 
-// body(begin, end) over [0, n) in interleaved blocks on n_threads threads: the coils' near
-// field is dearer than their far field, and the tets of one region are numbered together.
-template <class Body> void in_blocks(std::size_t n, int n_threads, const Body& body) {
-  constexpr std::size_t block = 256;
-  std::vector<std::thread> pool;
-  for (int w = 0; w < n_threads; ++w)
-    pool.emplace_back([&, w] {
-      for (std::size_t b = w * block; b < n; b += n_threads * block)
-        body(b, std::min(n, b + block));
-    });
-  for (auto& th : pool)
-    th.join();
-}
+// Tets (or DOF points) per block handed to a thread.
+constexpr std::size_t block = 256;
 
 } // namespace
 
@@ -74,7 +63,8 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
       }
     }
   };
-  in_blocks(n_tets, n_threads, fill);
+  parallel_blocks(n_tets, block, n_threads,
+                  [&](std::size_t, std::size_t begin, std::size_t end) { fill(begin, end); });
 
   // DOF points of the tets outside the shell: B adds H_s at those of reduced tets, and the
   // VTU shows H_s at all of them.
@@ -90,17 +80,18 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
         points.push_back(d);
   }
   at_dofs_.assign(static_cast<std::size_t>(dofs.n_dofs()) * n_coils_ * 3, 0.0f);
-  in_blocks(points.size(), n_threads, [&](std::size_t begin, std::size_t end) {
-    std::vector<Eigen::Vector3d> h(n_coils_);
-    for (std::size_t i = begin; i < end; ++i) {
-      const int d = points[i];
-      field.H_per_ampere_all_once(dofs.dof_points()[d], h.data());
-      float* out = &at_dofs_[static_cast<std::size_t>(d) * n_coils_ * 3];
-      for (int k = 0; k < n_coils_; ++k)
-        for (int c = 0; c < 3; ++c)
-          *out++ = static_cast<float>(h[k][c]);
-    }
-  });
+  parallel_blocks(points.size(), block, n_threads,
+                  [&](std::size_t, std::size_t begin, std::size_t end) {
+                    std::vector<Eigen::Vector3d> h(n_coils_);
+                    for (std::size_t i = begin; i < end; ++i) {
+                      const int d = points[i];
+                      field.H_per_ampere_all_once(dofs.dof_points()[d], h.data());
+                      float* out = &at_dofs_[static_cast<std::size_t>(d) * n_coils_ * 3];
+                      for (int k = 0; k < n_coils_; ++k)
+                        for (int c = 0; c < 3; ++c)
+                          *out++ = static_cast<float>(h[k][c]);
+                    }
+                  });
 }
 
 Eigen::Vector3d SourceFieldTable3D::H_at_dof(int d) const {
