@@ -203,7 +203,7 @@ Vec3 CoilField::magnetic_moment_per_ampere() const {
   return coil_.turns * mean_area * (coil_.placement.rotation * Vec3::UnitZ());
 }
 
-std::vector<CoilQuadraturePoint> CoilField::volume_quadrature(int order) const {
+std::vector<CoilQuadraturePoint> CoilField::volume_quadrature(int order, int n_azimuth) const {
   if (order < 1) {
     throw std::invalid_argument("CoilField::volume_quadrature: order must be >= 1");
   }
@@ -217,7 +217,7 @@ std::vector<CoilQuadraturePoint> CoilField::volume_quadrature(int order) const {
   // so that r^2 dr dcos(alpha) is polynomial and the volume exact), equally spaced azimuths
   // (exact for trigonometric polynomials of degree < 2 order; their directions sum to zero).
   if (axisymmetric_) {
-    const int n_phi = std::max(4, 2 * order);
+    const int n_phi = std::max(4, n_azimuth > 0 ? n_azimuth : 2 * order);
     const auto* c = std::get_if<SphericalCoil>(&coil_.shape);
     const auto* s = std::get_if<Solenoid>(&coil_.shape);
     const QuadratureRule gu = c ? gauss_legendre(order, c->r_inner, c->r_outer)

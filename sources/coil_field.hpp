@@ -59,10 +59,10 @@ public:
   // this dipole.
   Vec3 magnetic_moment_per_ampere() const;
 
-  // Tensor rule over the conductor with `order` points per direction (2 order in the azimuth of
-  // axisymmetric coils, equally spaced): exact for the volume (sum of weights) and for
-  // sum w j = 0 (to round-off), and of high order for smooth integrands.
-  std::vector<CoilQuadraturePoint> volume_quadrature(int order) const;
+  // Tensor rule over the conductor with `order` points per direction (`n_azimuth`, default
+  // 2 order, equally spaced azimuths for axisymmetric coils): exact for the volume (sum of
+  // weights) and for sum w j = 0 (to round-off), and of high order for smooth integrands.
+  std::vector<CoilQuadraturePoint> volume_quadrature(int order, int n_azimuth = 0) const;
 
 private:
   bool contains_local(const Vec3& xl) const;
