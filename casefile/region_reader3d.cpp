@@ -95,6 +95,8 @@ struct Reader3D {
       part.max_size = r.at("mesh_size").as_positive() * s;
     if (r.has("group"))
       part.group = r.at("group").as_string();
+    part.air =
+        spec.material && spec.material->kind == MaterialKind::linear && spec.material->mu_r == 1.0;
     c.geometry3d.parts.push_back(std::move(part));
     c.regions.push_back(std::move(spec));
   }

@@ -39,6 +39,9 @@ struct Part3D {
   Placement placement;
   double max_size = 0; // metres; 0 = MeshOptions3D::default_size
   std::string group;   // rigid group for sweeps ("" = none)
+  // Air (mu_r 1, no magnetization): a refinement region. The field is smooth across a layer of
+  // air between it and another part, so such a layer is not a gap the mesh must resolve.
+  bool air = false;
 };
 
 enum class OuterKind3D { open, dirichlet, neumann };
@@ -52,12 +55,12 @@ struct OuterBoundary3D {
 };
 
 struct MeshOptions3D {
-  double default_size = 0;       // metres, background air
-  double chord_tolerance = 0;    // metres: max distance between a curved surface and its facets
+  double default_size = 0;        // metres, background air
+  double chord_tolerance = 0;     // metres: max distance between a curved surface and its facets
   double radius_edge_ratio = 1.6; // TetGen quality bound (-q)
-  int gap_layers = 3;            // minimum element layers across thin air gaps
-  double size_scale = 1.0;       // multiplies every size (refinement studies)
-  double probe_size = 0;         // metres: size near probe surfaces (0 = no refinement)
+  int gap_layers = 3;             // minimum element layers across thin air gaps
+  double size_scale = 1.0;        // multiplies every size (refinement studies)
+  double probe_size = 0;          // metres: size near probe surfaces (0 = no refinement)
 };
 
 struct Geometry3D {
