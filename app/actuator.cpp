@@ -27,6 +27,7 @@
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
+#include "core/progress.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "validation/charge_model.hpp"
 
@@ -135,6 +136,18 @@ std::vector<TorqueConstants> analytic_gamma(const CaseSpec& spec, const std::str
                                    rule);
 }
 
+std::string number(double v) {
+  if (!std::isfinite(v))
+    return "inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string angles(const Orientation& o) {
+  return number(o.rx_deg) + "," + number(o.ry_deg) + "," + number(o.rz_deg);
+}
+
 std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOptions& options,
                                       const std::vector<Orientation>& orientations,
                                       const std::vector<CoilField>& coils,
@@ -143,6 +156,7 @@ std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOption
   RunOverrides ov;
   ov.mesh_scale = options.mesh_scale;
   ov.order = options.order;
+  ov.progress = options.progress;
   const CoilRule& q = options.coil_rule;
   if (rotor_rigid_field(spec, options.rotor)) {
     notes.push_back("the field turns rigidly with the rotor: one FE solve in the rotor's frame "
@@ -155,23 +169,14 @@ std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOption
                   "per orientation");
   std::vector<TorqueConstants> out;
   for (const auto& o : orientations) {
+    if (options.progress)
+      options.progress->note("orientation " + std::to_string(out.size() + 1) + " of " +
+                             std::to_string(orientations.size()) + " (" + angles(o) + " deg)");
     const auto run = run_case_3d(magnets_and_iron(turned(spec, options.rotor, o)), ov);
     ++n_solves;
     out.push_back(torque_constants(coils, fe_field(*run), q));
   }
   return out;
-}
-
-std::string number(double v) {
-  if (!std::isfinite(v))
-    return "inf";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-std::string angles(const Orientation& o) {
-  return number(o.rx_deg) + "," + number(o.ry_deg) + "," + number(o.rz_deg);
 }
 
 struct PowerStats {
@@ -343,6 +348,8 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
       o.analytic = true;
     else if (arg == "--verify")
       o.verify = true;
+    else if (arg == "--quiet")
+      o.quiet = true;
     else if (arg == "--coil-quadrature") {
       const std::string t = value();
       const auto parts = split(t, ',');
@@ -457,12 +464,16 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
   RunOverrides ov;
   ov.mesh_scale = options.mesh_scale;
   ov.order = options.order;
+  ov.progress = options.progress;
   std::vector<Verification> out;
   for (const auto& d : r.demands)
     for (const std::size_t i : at) {
       Verification v{d.name, r.orientations[i], d.torque_Nm, Eigen::Vector3d::Zero(), false};
       const Commutation& c = d.commutations[i];
       if (c.ok) {
+        if (options.progress)
+          options.progress->note("verify " + d.name + " at (" + angles(v.orientation) +
+                                 " deg): FE with the commutated currents");
         CaseSpec s = turned(spec, options.rotor, v.orientation);
         for (std::size_t k = 0; k < s.geometry3d.coils.size(); ++k)
           s.geometry3d.coils[k].current = c.currents(static_cast<Eigen::Index>(k));
@@ -516,9 +527,12 @@ std::string torque_constants_csv(const ActuatorResult& r) {
   return s;
 }
 
-int run_actuator_command(const ActuatorOptions& options) {
+int run_actuator_command(ActuatorOptions options) {
   if (!options.coil_pitch.empty())
     return run_coil_pitch_command(options);
+  Progress progress;
+  if (!options.quiet && !options.analytic)
+    options.progress = &progress;
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Orientation> orientations = parse_orientations(options.orientations);
   const CaseSpec spec = read_case(options.case_file, options.parameters);

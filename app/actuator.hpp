@@ -36,6 +36,10 @@
 #include "casefile/case_spec.hpp"
 
 namespace magfem {
+class Progress;
+}
+
+namespace magfem {
 
 struct Orientation {
   double rx_deg = 0, ry_deg = 0, rz_deg = 0;
@@ -65,6 +69,8 @@ struct ActuatorOptions {
   std::string coil_pitch; // --coil-pitch START:STEP:END (deg): the study of
                           // app/actuator_coil_pitch.hpp instead of the case's coils
   std::string out_dir;
+  bool quiet = false;           // --quiet: no progress lines
+  Progress* progress = nullptr; // FE runs' console progress (not owned); null = silent
 };
 
 // Parses the arguments after `actuator`; throws InputError naming the option.
@@ -140,6 +146,6 @@ std::string torque_constants_csv(const ActuatorResult& result);
 // The command: reads, checks (before anything is written), runs and writes commutation.csv
 // (or commutation_x/y/z.csv without --torque), torque_constants.csv, power_map.png and
 // summary.json through one OutputStage. Returns the exit code.
-int run_actuator_command(const ActuatorOptions& options);
+int run_actuator_command(ActuatorOptions options);
 
 } // namespace magfem

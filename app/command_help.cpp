@@ -105,7 +105,8 @@ constexpr std::array<CommandHelp, 8> commands{{
     {"actuator",
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
-     "                    [--mesh-scale S] [--coil-quadrature R,A,P,Z] [--verify] [--out DIR]",
+     "                    [--mesh-scale S] [--coil-quadrature R,A,P,Z] [--verify] [--quiet]\n"
+     "                    [--out DIR]",
      "torque constants, commutated currents and copper loss of a multi-coil actuator",
      "  For every rotor orientation: the torque constants Gamma (3 x coils, N m/A: the\n"
      "  Lorentz torque about the origin of each coil at 1 A in the field of the magnets\n"
@@ -124,7 +125,9 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  --coil-quadrature R,A,P,Z: per coil R Gauss radii, P panels of A Gauss points\n"
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
-     "  orientation; summary.json `verification` lists demanded and produced torque.\n"},
+     "  orientation; summary.json `verification` lists demanded and produced torque.\n"
+     "  FE runs show the orientation, stage and solver residual on stderr; --quiet\n"
+     "  turns that off.\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--resume]\n"
      "                [--out DIR]",

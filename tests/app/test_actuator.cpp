@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -27,6 +28,7 @@
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "run_cli.hpp"
 #include "tests/test_paths.hpp"
 
 using namespace magfem;
@@ -222,4 +224,111 @@ TEST(Actuator, DISABLED_FeTorqueConstantsMatchTheChargeModel) {
   std::printf("Gamma: largest |FE - charge model| = %.3g of the largest constant %.4g N m/A\n", err,
               scale);
   EXPECT_LT(err, fe_tolerance);
+}
+
+namespace {
+
+// A small actuator the suite can solve by FE in seconds: a 2 x 4 segment array (7..10 mm) on
+// the rotor inside six ring coils on the sphere (11..14 mm), three above and three below the
+// equator, no iron; the refined air over the coils starts at mid-gap, apart from the turning
+// rotor. Coarse on purpose (68k tetrahedra at order 2, a few seconds).
+const char* small_actuator = R"(title: small spherical actuator (test)
+dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
+regions:
+  - {name: m, shape: segment_array, r_inner: 7, r_outer: 10, theta: [0, 180], phi: [0, 360],
+     p_theta: 2, p_phi: 4, material: pm, pattern: {type: parallel_alternating, convention: centre},
+     group: rotor, mesh_size: 3}
+  - {name: coil_space, shape: spherical_segment, r_inner: 10.5, r_outer: 15, mesh_size: 2.5}
+coils:
+  - {name: a1, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 0], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: a2, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 120], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: a3, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 240], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: b1, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 60], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: b2, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 180], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: b3, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 300], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+boundary: {type: open, radius: 25, shell_ratio: 1.5}
+mesh: {size: 6, chord_tolerance: 0.3}
+solver: {order: 2}
+)";
+
+std::vector<double> numbers_after(const std::string& text, const std::string& key) {
+  std::vector<double> v;
+  auto at = text.find("\"" + key + "\"");
+  if (at == std::string::npos)
+    return v;
+  at = text.find('[', at);
+  const auto end = text.find(']', at);
+  std::string list = text.substr(at + 1, end - at - 1);
+  std::replace(list.begin(), list.end(), ',', ' ');
+  std::istringstream in(list);
+  for (double x; in >> x;)
+    v.push_back(x);
+  return v;
+}
+
+} // namespace
+
+// The FE path end to end (the only run of it in the default suite): `actuator --verify` on the
+// small actuator turned by ry = 20 deg. The demand is the torque coil a1 makes at 1 A by the
+// charge model, so the least-norm currents stay near (1, 0, ...) A and no cancellation between
+// large currents magnifies the constants' errors.
+// - FE torque constants against the charge model (exact for these magnets in air): within
+//   1 % of the largest constant, the issue's accuracy target for FE constants. Measured
+//   0.21 % at this mesh (1.1 % with the air over the coils at 3 mm instead of 2.5 mm: the FE
+//   error of B over the coils). A sign, a factor or a rotation applied the wrong way fails by
+//   tens of percent.
+// - The FE solve with the commutated currents in the coils (coils turned with nothing, rotor
+//   turned by the verification) produces the demand within 2 % of |T_d| (the issue's figure
+//   for --verify): forgetting the currents, the rotor's turn or a coil's order fails it.
+// - The run shows its stages on stderr (a long FE run is never silent).
+TEST(Actuator, FeTorqueConstantsAndVerificationOnASmallActuator) {
+  const std::string file = test::write_temp_case("small_actuator.yaml", small_actuator);
+  const CaseSpec spec = read_case(file);
+  ActuatorOptions a;
+  a.case_file = file;
+  a.rotor = "rotor";
+  a.analytic = true;
+  const Orientation at{0, 20, 0};
+  const auto charge = run_actuator(spec, a, {at});
+  const TorqueConstants& g = charge.gamma[0];
+  const Eigen::Vector3d demand = g.col(0);
+  ASSERT_GT(demand.norm(), 1e-4); // N m at 1 A: not trivially zero
+
+  const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "actuator_fe";
+  std::filesystem::remove_all(out);
+  char torque[128];
+  std::snprintf(torque, sizeof torque, "%.10g,%.10g,%.10g", demand.x(), demand.y(), demand.z());
+  const auto run = test::run_cli("actuator " + file + " --rotor rotor --orientations rx=0,ry=20 " +
+                                 "--torque " + torque + " --verify --out " + out.string());
+  ASSERT_EQ(run.status, 0) << run.out;
+  EXPECT_NE(run.out.find("solve: CG"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("verify T_d at (0,20,0 deg)"), std::string::npos) << run.out;
+
+  std::ifstream k(out / "torque_constants.csv");
+  std::string line;
+  std::getline(k, line);
+  TorqueConstants fe(3, 6);
+  for (int c = 0; c < 6 && std::getline(k, line); ++c) {
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream in(line);
+    double rx, ry, rz;
+    std::string name;
+    in >> rx >> ry >> rz >> name >> fe(0, c) >> fe(1, c) >> fe(2, c);
+  }
+  const double scale = max_abs(g);
+  const double err = max_abs(fe - g) / scale;
+  std::printf("FE torque constants: largest |FE - charge model| = %.3g of %.4g N m/A\n", err,
+              scale);
+  EXPECT_LT(err, 0.01) << "charge model:\n" << g << "\nFE:\n" << fe;
+
+  const std::string summary = slurp(out / "summary.json");
+  const auto produced = numbers_after(summary, "produced_Nm");
+  ASSERT_EQ(produced.size(), 3u) << summary;
+  const Eigen::Vector3d p(produced[0], produced[1], produced[2]);
+  std::printf("verify: demanded (%.4g, %.4g, %.4g), produced (%.4g, %.4g, %.4g) N m\n", demand.x(),
+              demand.y(), demand.z(), p.x(), p.y(), p.z());
+  EXPECT_LT((p - demand).norm(), 0.02 * demand.norm());
 }
