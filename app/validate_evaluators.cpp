@@ -119,6 +119,7 @@ const std::map<std::string, Evaluator>& evaluator_registry() {
     register_thesis_ch3(r);
     register_thesis_ch4(r);
     register_thesis_ch5(r);
+    register_thesis_ch6(r);
     register_harwin(r);
     register_voicecoil(r);
     register_dmp(r);

@@ -93,6 +93,7 @@ const std::map<std::string, Evaluator>& evaluator_registry();
 void register_thesis_ch3(std::map<std::string, Evaluator>& r);
 void register_thesis_ch4(std::map<std::string, Evaluator>& r);
 void register_thesis_ch5(std::map<std::string, Evaluator>& r);
+void register_thesis_ch6(std::map<std::string, Evaluator>& r);
 void register_harwin(std::map<std::string, Evaluator>& r);
 void register_voicecoil(std::map<std::string, Evaluator>& r);
 void register_dmp(std::map<std::string, Evaluator>& r);
