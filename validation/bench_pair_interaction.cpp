@@ -1,6 +1,7 @@
 // Old (field quadrature, validation/analytic_force.hpp) against new (face-pair cubature,
 // validation/pair_interaction.hpp) charge interaction: time and error against a converged
-// reference (the face-pair cubature at 1e-11 with up to 14 points per direction; the old
+// reference (the face-pair cubature at 1e-11 with up to 14 points per direction and its
+// bounding-sphere orders only, validation/surface_patch_order.hpp; the old
 // method agrees with it to its own error, see the rows). Errors are relative to |F| and |T|;
 // "printed" is the new methods' accuracy figure (relative). Times include that estimate (a
 // second run at 100 x the tolerance). Prints figures; not a test.
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
     PairInteractionOptions ro;
     ro.tolerance = 1e-11;
     ro.max_order = 14;
+    ro.patch_orders = false; // the bounding-sphere rule alone: independent of the new orders
     const ForceTorque ref = pair_interaction(c.on, c.by, Eigen::Vector3d::Zero(), ro).on_A;
     std::printf("%s: F = (%.6g, %.6g, %.6g) N, T = (%.6g, %.6g, %.6g) N m\n", c.name, ref.force.x(),
                 ref.force.y(), ref.force.z(), ref.torque.x(), ref.torque.y(), ref.torque.z());

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "core/constants.hpp"
 #include "validation/charge_source.hpp"
 #include "validation/gauss_error.hpp"
+#include "validation/surface_patch_order.hpp"
 
 namespace magfem {
 
@@ -23,6 +25,8 @@ constexpr double radius_margin = 1.1;
 constexpr double min_radius_fraction = 1e-4;
 constexpr int min_order = 2;
 constexpr double coarse_factor = 100; // tolerance of the run that estimates the error
+// r^2 floor (m^2) of coincident nodes: far below any node spacing, and q / r^3 stays finite.
+constexpr double coincident_r2 = 1e-200;
 
 struct PairBox {
   const ChargeDomain* domain;
@@ -30,23 +34,36 @@ struct PairBox {
   Vec3 centre;
   double radius;
   int axis;
-  double min_radius; // of its face
-  double half_angle; // largest half-width of its angular parameters (radians)
+  double min_radius;  // of its face
+  double half_angle;  // largest half-width of its angular parameters (radians)
+  SurfacePatch patch; // affine model (surfaces, when patch orders are on; else invalid)
 };
 
-PairBox make_box(const ChargeDomain* d, const ParamBox& b, double min_radius) {
-  const BoxExtent e = box_extent(*d, b);
+PairBox make_box(const ChargeDomain* d, const ParamBox& b, double min_radius, bool patch) {
+  // The surface patch model reuses the extent's samples (their sines and cosines dominate the
+  // cost of a box).
+  std::array<Vec3, 9> grid;
+  patch = patch && d->dim == 2;
+  const BoxExtent e = box_extent(*d, b, patch ? &grid : nullptr);
   const std::array<bool, 3> angular = angular_parameters(*d);
   double h = 0;
   for (int a = 0; a < 3; ++a)
     if (angular[a])
       h = std::max(h, 0.5 * (b.hi[a] - b.lo[a]));
-  return {d, b, e.centre, radius_margin * e.radius, e.longest_axis, min_radius, h};
+  return {d,
+          b,
+          e.centre,
+          radius_margin * e.radius,
+          e.longest_axis,
+          min_radius,
+          h,
+          patch ? surface_patch(grid) : SurfacePatch{}};
 }
 
 struct Context {
   double tolerance;
   int max_order;
+  bool patch_orders;
   Vec3 torque_point;
   std::vector<GaussRule> rules; // index = order
 };
@@ -80,30 +97,36 @@ struct SideCache {
 
 struct Scratch {
   SideCache a, b;
+  Eigen::ArrayXd kernel; // q_B / r^3 per node of B
 };
 
 void integrate_pair(const Context& c, const PairBox& a, int na, const PairBox& b, int nb,
                     Scratch& w, Tally& t) {
+  using Array = Eigen::ArrayXd;
+  using Map = Eigen::Map<const Array>;
   w.a.fill(a, na, c.rules[na]);
   w.b.fill(b, nb, c.rules[nb]);
   const SideCache& sa = w.a;
   const SideCache& sb = w.b;
+  const Eigen::Index m = static_cast<Eigen::Index>(sb.q.size());
+  const Map bx(sb.x.data(), m), by(sb.y.data(), m), bz(sb.z.data(), m), bq(sb.q.data(), m);
+  // Whole-array expressions over B's nodes: Eigen vectorizes them (sqrt, division and the
+  // sums), where a scalar loop is not (one floating-point sum cannot be reordered, and
+  // std::sqrt keeps errno). The summation order is fixed, so results do not depend on threads.
+  w.kernel.resize(m);
   Vec3 f_sum = Vec3::Zero(), t_sum = Vec3::Zero();
-  const std::size_t m = sb.q.size();
-  const double *bx = sb.x.data(), *by = sb.y.data(), *bz = sb.z.data(), *bq = sb.q.data();
   for (std::size_t i = 0; i < sa.q.size(); ++i) {
     if (sa.q[i] == 0)
       continue;
     const double px = sa.x[i], py = sa.y[i], pz = sa.z[i];
-    double fx = 0, fy = 0, fz = 0;
-    for (std::size_t j = 0; j < m; ++j) {
-      const double dx = px - bx[j], dy = py - by[j], dz = pz - bz[j];
-      const double r2 = dx * dx + dy * dy + dz * dz;
-      // Coincident nodes (touching faces) carry no resolvable force: dropped.
-      const double k = r2 > 0 ? bq[j] / (r2 * std::sqrt(r2)) : 0.0;
-      fx += k * dx, fy += k * dy, fz += k * dz;
-    }
-    const Vec3 f = sa.q[i] * Vec3(fx, fy, fz);
+    // Coincident nodes (touching faces) carry no resolvable force: their r^2 is raised to a
+    // floor whose finite kernel then multiplies an offset of exactly 0 (a select would not
+    // vectorize).
+    const auto r2 =
+        ((px - bx).square() + (py - by).square() + (pz - bz).square()).max(coincident_r2);
+    w.kernel = bq / (r2 * r2.sqrt());
+    const Vec3 f = sa.q[i] * Vec3((w.kernel * (px - bx)).sum(), (w.kernel * (py - by)).sum(),
+                                  (w.kernel * (pz - bz)).sum());
     f_sum += f;
     t_sum += (Vec3(px, py, pz) - c.torque_point).cross(f);
   }
@@ -114,18 +137,36 @@ void integrate_pair(const Context& c, const PairBox& a, int na, const PairBox& b
   t.kernels += static_cast<long>(sa.q.size() * sb.q.size());
 }
 
-std::array<PairBox, 2> halves(const PairBox& x) {
+std::array<PairBox, 2> halves(const Context& c, const PairBox& x) {
   const auto h = split_box(x.box, x.axis);
-  return {make_box(x.domain, h[0], x.min_radius), make_box(x.domain, h[1], x.min_radius)};
+  return {make_box(x.domain, h[0], x.min_radius, c.patch_orders),
+          make_box(x.domain, h[1], x.min_radius, c.patch_orders)};
+}
+
+// Orders of the two sides: the bounding-sphere rule, or where both boxes are surfaces whose
+// affine models are trusted, the singularity's complex offset (surface_patch_order.hpp),
+// whichever is lower (both are a priori bounds of the same error). Both sides take the same
+// rule: the bounding-sphere order of one side grows with the other's radius, so mixing the
+// rules would split the small side where the large one should be.
+std::array<int, 2> pair_orders(const Context& c, const PairBox& a, const PairBox& b) {
+  const double d = (a.centre - b.centre).norm();
+  const double rho_a = (d - b.radius) / a.radius, rho_b = (d - a.radius) / b.radius;
+  const int na = gauss_order(c.tolerance, rho_a, a.half_angle, min_order, c.max_order);
+  const int nb = gauss_order(c.tolerance, rho_b, b.half_angle, min_order, c.max_order);
+  if (!c.patch_orders || (na == min_order && nb == min_order))
+    return {na, nb};
+  const std::optional<double> pa = patch_pair_rho(a.patch, b.patch);
+  const std::optional<double> pb = pa ? patch_pair_rho(b.patch, a.patch) : std::nullopt;
+  if (!pb)
+    return {na, nb};
+  return {std::min(na, gauss_order(c.tolerance, *pa, a.half_angle, min_order, c.max_order)),
+          std::min(nb, gauss_order(c.tolerance, *pb, b.half_angle, min_order, c.max_order))};
 }
 
 // Dual-tree recursion: integrate the pair when both orders fit, otherwise split the side that
 // needs the higher order (the larger box when both need the same; both when tied).
 void interact(const Context& c, const PairBox& a, const PairBox& b, Scratch& w, Tally& t) {
-  const double d = (a.centre - b.centre).norm();
-  const double rho_a = (d - b.radius) / a.radius, rho_b = (d - a.radius) / b.radius;
-  const int na = gauss_order(c.tolerance, rho_a, a.half_angle, min_order, c.max_order);
-  const int nb = gauss_order(c.tolerance, rho_b, b.half_angle, min_order, c.max_order);
+  const auto [na, nb] = pair_orders(c, a, b);
   if (na <= c.max_order && nb <= c.max_order) {
     integrate_pair(c, a, na, b, nb, w, t);
     return;
@@ -146,14 +187,14 @@ void interact(const Context& c, const PairBox& a, const PairBox& b, Scratch& w, 
   if (!split_a && !split_b)
     (a_splits ? split_a : split_b) = true;
   if (split_a && split_b) {
-    for (const PairBox& ha : halves(a))
-      for (const PairBox& hb : halves(b))
+    for (const PairBox& ha : halves(c, a))
+      for (const PairBox& hb : halves(c, b))
         interact(c, ha, hb, w, t);
   } else if (split_a) {
-    for (const PairBox& h : halves(a))
+    for (const PairBox& h : halves(c, a))
       interact(c, h, b, w, t);
   } else {
-    for (const PairBox& h : halves(b))
+    for (const PairBox& h : halves(c, b))
       interact(c, a, h, w, t);
   }
 }
@@ -166,12 +207,12 @@ std::vector<ChargeDomain> domains_of(const std::vector<AnalyticMagnet>& magnets)
   return out;
 }
 
-std::vector<PairBox> roots_of(const std::vector<ChargeDomain>& domains) {
+std::vector<PairBox> roots_of(const std::vector<ChargeDomain>& domains, bool patch) {
   std::vector<PairBox> out;
   for (const ChargeDomain& d : domains) {
     const double min_r = min_radius_fraction * box_extent(d, d.box).radius;
     for (const ParamBox& b : root_boxes(d, pi / 4))
-      out.push_back(make_box(&d, b, min_r));
+      out.push_back(make_box(&d, b, min_r, patch));
   }
   return out;
 }
@@ -220,11 +261,16 @@ PairInteraction pair_interaction(const std::vector<AnalyticMagnet>& on,
   if (!(options.tolerance > 0 && options.tolerance < 1))
     throw std::invalid_argument("pair_interaction: tolerance must lie in (0, 1)");
   const std::vector<ChargeDomain> da = domains_of(on), db = domains_of(by);
-  const std::vector<PairBox> ra = roots_of(da), rb = roots_of(db);
+  const std::vector<PairBox> ra = roots_of(da, options.patch_orders),
+                             rb = roots_of(db, options.patch_orders);
   const int n_threads = options.n_threads > 0
                             ? options.n_threads
                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  Context c{options.tolerance, std::max(min_order, options.max_order), torque_point, {}};
+  Context c{options.tolerance,
+            std::max(min_order, options.max_order),
+            options.patch_orders,
+            torque_point,
+            {}};
   for (int n = 0; n <= c.max_order; ++n)
     c.rules.emplace_back(std::max(1, n));
   const Tally t = run(ra, rb, c, n_threads);

@@ -35,6 +35,10 @@ struct PairInteractionOptions {
   double tolerance = 1e-6; // relative quadrature error per box pair (a priori)
   int max_order = 8;       // Gauss points per direction per box, at most
   int n_threads = 0;       // 0 = std::thread::hardware_concurrency()
+  // Orders of surface box pairs also from the singularity's complex offset (lower across
+  // narrow gaps between parallel faces, surface_patch_order.hpp); false = bounding spheres
+  // only (the earlier, slower rule: an independent reference).
+  bool patch_orders = true;
 };
 
 struct PairInteraction {
