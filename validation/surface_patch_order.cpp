@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 
 namespace magfem {
 
@@ -21,6 +20,12 @@ constexpr double max_margin_fraction = 0.25;
 // Distance between the intervals [lo, hi] and [-h, h].
 double interval_gap(double lo, double hi, double h) {
   return std::max({0.0, lo - h, -h - hi});
+}
+
+// Semi-major axis (rho + 1/rho) / 2 of the ellipse with foci -1, 1 through x + i y: half the
+// sum of the distances to the foci.
+double ellipse_semi_major(double x, double y) {
+  return 0.5 * (std::sqrt((x - 1) * (x - 1) + y * y) + std::sqrt((x + 1) * (x + 1) + y * y));
 }
 
 } // namespace
@@ -56,11 +61,8 @@ SurfacePatch surface_patch(const std::array<Vec3, 9>& grid) {
 }
 
 double bernstein_parameter(double x, double y) {
-  // z + sqrt(z - 1) sqrt(z + 1) is the branch that maps the plane cut along [-1, 1] outside
-  // the unit circle; the max guards the cut itself.
-  const std::complex<double> z(x, y);
-  const double r = std::abs(z + std::sqrt(z - 1.0) * std::sqrt(z + 1.0));
-  return std::max(r, 1 / r);
+  const double a = ellipse_semi_major(x, y);
+  return a + std::sqrt(std::max(0.0, a * a - 1));
 }
 
 std::optional<double> patch_pair_rho(const SurfacePatch& a, const SurfacePatch& b) {
@@ -76,19 +78,20 @@ std::optional<double> patch_pair_rho(const SurfacePatch& a, const SurfacePatch& 
   }
   const double margin = own_sag_factor * a.sag + b.sag;
   const double normal_gap = interval_gap(lo[2], hi[2], 0);
-  double rho = 1e300;
+  double semi_major = 1e300; // of the Bernstein ellipse: the cosh(ln rho) that is returned
   for (int k = 0; k < 2; ++k) {
     const int j = 1 - k;
     const double offset = interval_gap(lo[k], hi[k], 0);
-    const double across = std::hypot(normal_gap, interval_gap(lo[j], hi[j], a.half[j]));
-    const double distance = std::hypot(offset, across);
+    const double side = interval_gap(lo[j], hi[j], a.half[j]);
+    const double across = std::sqrt(normal_gap * normal_gap + side * side);
+    const double distance = std::sqrt(offset * offset + across * across);
     if (margin > max_margin_fraction * distance)
       return std::nullopt;
     const double x = std::max(0.0, offset - margin) / a.half[k];
     const double y = std::max(0.0, across - margin) / a.half[k];
-    rho = std::min(rho, bernstein_parameter(x, y));
+    semi_major = std::min(semi_major, ellipse_semi_major(x, y));
   }
-  return 0.5 * (rho + 1 / rho);
+  return semi_major;
 }
 
 } // namespace magfem
