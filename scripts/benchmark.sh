@@ -154,7 +154,8 @@ $magfem study examples/3d/compensator_study.yaml --param R_in=25:0.5:34.5 --para
 awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "    400 designs, wall %.1f s\n", b - a }'
 echo
 echo "== non-axisymmetric analytic interaction (issue 14 target: >= 20x faster than the field-quadrature"
-echo "   charge interaction at the same accuracy; errors against a 1e-11 face-pair reference)"
+echo "   charge interaction at the same accuracy; errors against a 1e-11 face-pair reference with"
+echo "   bounding-sphere orders and no mirror symmetry)"
 build/validation/magfem_bench_pair | sed 's/^/    /'
 start=$(date +%s.%N)
 $magfem study examples/3d/compensator_prototype_height_study.yaml --param height=5,7.5,10,12.5,15,20,25,30,40,50,60 \

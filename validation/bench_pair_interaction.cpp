@@ -1,9 +1,12 @@
 // Old (field quadrature, validation/analytic_force.hpp) against new (face-pair cubature,
 // validation/pair_interaction.hpp) charge interaction: time and error against a converged
-// reference (the face-pair cubature at 1e-11 with up to 14 points per direction; the old
-// method agrees with it to its own error, see the rows). Errors are relative to |F| and |T|;
-// "printed" is the new methods' accuracy figure (relative). Times include that estimate (a
-// second run at 100 x the tolerance). Prints figures; not a test.
+// reference (the face-pair cubature at 1e-11 with up to 14 points per direction, its
+// bounding-sphere orders only and no mirror symmetry: independent of surface_patch_order.hpp
+// and mirror_symmetry.hpp; the old method agrees with it to its own error, see the rows).
+// Errors are relative to |F| and |T|; "printed" is the new methods' accuracy figure
+// (relative). Times include that estimate (a second run at 100 x the tolerance). The face
+// pairs are timed with and without the mirror symmetry, which only some arrangements have.
+// Prints figures; not a test.
 //   magfem_bench_pair [--skip-old]
 #include <chrono>
 #include <cstdio>
@@ -53,6 +56,8 @@ int main(int argc, char** argv) {
     PairInteractionOptions ro;
     ro.tolerance = 1e-11;
     ro.max_order = 14;
+    ro.patch_orders = false;    // the bounding-sphere rule alone: independent of the new orders
+    ro.mirror_symmetry = false; // ... and of the mirror symmetry
     const ForceTorque ref = pair_interaction(c.on, c.by, Eigen::Vector3d::Zero(), ro).on_A;
     std::printf("%s: F = (%.6g, %.6g, %.6g) N, T = (%.6g, %.6g, %.6g) N m\n", c.name, ref.force.x(),
                 ref.force.y(), ref.force.z(), ref.torque.x(), ref.torque.y(), ref.torque.z());
@@ -79,12 +84,22 @@ int main(int argc, char** argv) {
       }
     }
     for (double tol : {1e-6, 1e-7}) {
-      const auto t0 = std::chrono::steady_clock::now();
-      PairInteractionOptions o;
-      o.tolerance = tol;
-      const PairInteraction p = pair_interaction(c.on, c.by, Eigen::Vector3d::Zero(), o);
-      report_new("face pairs", tol, p.on_A, p.force_error, p.torque_error,
-                 std::to_string(p.box_pairs) + " box pairs", ref, seconds_since(t0), t_old);
+      bool mirrored = false;
+      for (bool mirror : {true, false}) {
+        const auto t0 = std::chrono::steady_clock::now();
+        PairInteractionOptions o;
+        o.tolerance = tol;
+        o.mirror_symmetry = mirror;
+        const PairInteraction p = pair_interaction(c.on, c.by, Eigen::Vector3d::Zero(), o);
+        const double s = seconds_since(t0);
+        mirrored = mirrored || p.mirrored;
+        if (!mirror && !mirrored)
+          continue; // no symmetry found: the row above is this one
+        report_new(mirror ? "face pairs" : "face pairs w/o mirror", tol, p.on_A, p.force_error,
+                   p.torque_error,
+                   std::to_string(p.box_pairs) + " box pairs" + (p.mirrored ? ", mirrored" : ""),
+                   ref, s, t_old);
+      }
     }
   }
   return 0;

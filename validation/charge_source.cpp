@@ -313,7 +313,7 @@ std::vector<ChargeDomain> current_domains(const AnalyticMagnet& magnet) {
   return kept;
 }
 
-BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub) {
+BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub, std::array<Vec3, 9>* grid) {
   // Sample the box on the 3^dim grid {lo, mid, hi}, in local coordinates (the placement is
   // rigid), with the sines and cosines computed once per axis value: this runs for every
   // box built on the fly in the near field.
@@ -329,6 +329,10 @@ BoxExtent box_extent(const ChargeDomain& d, const ParamBox& sub) {
       for (int k = 0; k < m; ++k)
         pts[i][j][k] =
             local_geometry(d, nodes[0][i], nodes[1][j], nodes[2][d.dim == 2 ? 1 : k], sf, cf).p;
+  if (grid && d.dim == 2)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        (*grid)[3 * i + j] = d.placement.to_global(pts[i][j][0]);
   BoxExtent e;
   const Vec3& centre = pts[1][1][d.dim == 2 ? 0 : 1];
   e.centre = d.placement.to_global(centre);

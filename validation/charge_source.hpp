@@ -92,7 +92,10 @@ struct BoxExtent {
   double radius = 0;
   int longest_axis = 0;
 };
-BoxExtent box_extent(const ChargeDomain& domain, const ParamBox& sub);
+// For surfaces, `grid` (if given) receives the global images of the 3 x 3 parameter grid
+// {lo, mid, hi}^2 that the extent samples, index 3 i + j.
+BoxExtent box_extent(const ChargeDomain& domain, const ParamBox& sub,
+                     std::array<Eigen::Vector3d, 9>* grid = nullptr);
 
 // Which parameters of the domain are angles (the others are lengths).
 std::array<bool, 3> angular_parameters(const ChargeDomain& domain);

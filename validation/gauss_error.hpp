@@ -11,16 +11,30 @@
 //    h' = 3 h: the density (M.n), the Jacobian and the position each bring one trigonometric
 //    factor of the angle, so the product's derivatives grow like 3^k.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace magfem {
 
+// ln c_n, tabulated: the cubature asks for it once or more per box pair.
+inline double gauss_log_c(int n) {
+  constexpr int n_table = 64;
+  auto log_c = [](int m) {
+    return 4 * std::lgamma(m + 1.0) - std::log(2.0 * m + 1) - 3 * std::lgamma(2.0 * m + 1);
+  };
+  static const std::array<double, n_table> table = [&] {
+    std::array<double, n_table> t{};
+    for (int m = 0; m < n_table; ++m)
+      t[m] = log_c(m);
+    return t;
+  }();
+  return n >= 0 && n < n_table ? table[n] : log_c(n);
+}
+
 inline double gauss_angle_error(double half_angle, int n) {
   if (half_angle == 0)
     return 0;
-  const double log_c =
-      4 * std::lgamma(n + 1.0) - std::log(2.0 * n + 1) - 3 * std::lgamma(2.0 * n + 1);
-  return std::exp(log_c + 2.0 * n * std::log(6 * half_angle));
+  return std::exp(gauss_log_c(n) + 2.0 * n * std::log(6 * half_angle));
 }
 
 // Smallest order in [min_order, max_order] whose two errors are below tolerance, or
