@@ -37,7 +37,7 @@ struct RunOverrides {
   int parallel_runs = 1;
   double shared_memory_mb = 0;
   // The processes of an mpirun solving this case together (3D linear cases only; run3d.hpp).
-  MpiWorld world;
+  MpiWorld world{};
 };
 
 // An axisymmetric coil (region with turns and current): its flux linkage with the total field
