@@ -20,11 +20,10 @@ namespace magfem {
 // The tetrahedra [first, last) process `rank` of `size` assembles: contiguous ranges of the
 // mesh's element order with sizes that differ by at most one. The element loop is the work
 // being shared and its cost per element is nearly uniform (one order, one quadrature rule
-// apart from shell and curved elements), so equal counts balance it, and a range costs no
-// partitioner. The price is locality: an element's rows may belong to another process
-// (rows are owned in contiguous equation blocks), and those entries travel once, at
-// assembly. TetGen's element order is spatially coherent enough that this is a fraction of
-// the entries, not all of them.
+// apart from shell and curved elements), so equal counts balance it, and a range needs no
+// partitioner. The price is locality: rows are owned in contiguous equation blocks, which
+// need not match an element range, and the entries of rows another process owns travel to
+// it once, at assembly (a graph partition of the elements would cut that traffic).
 struct ElementRange {
   std::size_t first = 0, last = 0;
 };

@@ -2,7 +2,7 @@
 // (examples/3d/magnet_and_ball_small.yaml): both succeed, summary.json says 1 and 2 ranks, the
 // energy and every probe value agree to the solver tolerance, and the distributed run wrote
 // one set of outputs and printed one report. Cases the distributed mode refuses end quickly
-// with exit 2 on every process instead of hanging.
+// with exit 2 on every process instead of hanging; a Krylov failure with exit 3.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 
@@ -165,6 +166,26 @@ TEST_F(Mpi, RefusedCasesEndWithExitTwo) {
   EXPECT_NE(planar.out.find("without mpirun"), std::string::npos) << planar.out;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
   fs::remove_all(out.parent_path());
+}
+
+// A CG that stops on its iteration limit is a solver failure on every process alike: exit 3,
+// no outputs, no process left waiting.
+TEST_F(Mpi, KrylovFailureIsExitThreeWithoutOutputs) {
+  std::ifstream in(magfem::test::example("3d/magnet_and_ball_small.yaml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string tol = "  linear_tolerance: 1e-12";
+  ASSERT_NE(text.find(tol), std::string::npos);
+  text.replace(text.find(tol), tol.size(), "  linear_max_iterations: 3\n" + tol);
+  const fs::path dir = fresh_dir("krylov_failure");
+  fs::create_directories(dir);
+  const fs::path case_file = dir / "three_iterations.yaml";
+  std::ofstream(case_file) << text;
+  const CliOutcome o =
+      run_mpi(2, "solve " + case_file.string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(o.status, 3) << o.out;
+  EXPECT_NE(o.out.find("did not converge"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
+  fs::remove_all(dir.parent_path());
 }
 
 } // namespace
