@@ -26,7 +26,9 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  --max-memory GB   3D: refuse (exit 2) a mesh whose estimated peak memory exceeds GB\n"
      "                    (default: the memory available now) and say which --mesh-scale\n"
      "                    would fit; the estimate is made before meshing\n"
-     "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"},
+     "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"
+     "  Linear 3D cases also run distributed: mpirun -n N magfem solve CASE.yaml --out DIR\n"
+     "  (each process meshes, assembles 1/N of the elements; rank 0 writes; README).\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
      "[--n-max N]",

@@ -32,6 +32,7 @@
 #include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
 #include "postproc/probe_compare.hpp"
+#include "solver/mpi_context.hpp"
 
 namespace {
 
@@ -123,6 +124,10 @@ Args parse_args(int argc, char** argv) {
 
 int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
   auto run = magfem::run_case_3d(std::move(spec), overrides);
+  if (!overrides.world.is_root()) { // rank 0 reports and writes, once
+    magfem::idle_barrier();
+    return 0;
+  }
   std::cout << magfem::describe_run_3d(*run);
   magfem::write_outputs_3d(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";
@@ -131,15 +136,29 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
   if (run->spec.write_vtu)
     std::cout << ", solution.vtu";
   std::cout << "\n";
+  std::cout.flush();
+  magfem::idle_barrier();
   return 0;
 }
 
 int run_solve(const Args& args) {
+  // Under mpirun: MPI starts here, before anything can fail on one process only.
+  const magfem::MpiWorld world = magfem::join_mpi_world();
   auto spec = magfem::read_case(args.case_file);
   magfem::Progress progress;
   magfem::RunOverrides overrides = args.overrides;
-  if (!args.quiet)
+  if (!args.quiet && world.is_root())
     overrides.progress = &progress;
+  if (world.distributed()) {
+    if (spec.dimension != 3)
+      throw magfem::InputError(spec.file, 0, "dimension",
+                               "2D and axisymmetric cases are solved on one process (CHOLMOD); "
+                               "run this case without mpirun");
+    overrides.world = world;
+    // The memory guard: every process holds the whole mesh, and those on one machine share
+    // its memory.
+    overrides.parallel_runs = world.size_on_node;
+  }
   if (spec.dimension == 3)
     return run_solve_3d(args, std::move(spec), overrides);
   auto run = magfem::run_case_2d(std::move(spec), overrides);
@@ -401,6 +420,31 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
                            "unknown command '" + command + "'\n" + magfem::usage_overview());
 }
 
+// Only `solve` runs distributed; any other command under mpirun with several processes would
+// run once per process, each writing the same outputs.
+void refuse_other_commands_under_mpirun(int argc, char** argv) {
+  if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
+    return;
+  if (magfem::join_mpi_world().distributed())
+    throw magfem::InputError("<command line>", 0, "",
+                             std::string("only `magfem solve` runs distributed; run `magfem ") +
+                                 argv[1] + "` without mpirun");
+}
+
+// The error line on stderr and the exit code. Under mpirun with several processes every
+// process that fails says which it is and ends them all: the others may be waiting for it in
+// a collective call and would otherwise hang.
+int fail(int code, const std::string& line) {
+  const magfem::MpiWorld world = magfem::started_mpi_world();
+  std::string text = "magfem: ";
+  if (world.distributed()) // one write per line: the processes share the terminal
+    text += "rank " + std::to_string(world.rank) + " of " + std::to_string(world.size) + ": ";
+  std::cerr << text + line + "\n" << std::flush;
+  if (world.distributed())
+    magfem::abort_mpi_world(code);
+  return code;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -421,6 +465,7 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
       return magfem::run_study_command(
           magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
+    refuse_other_commands_under_mpirun(argc, argv);
     const Args args = parse_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);
@@ -433,13 +478,10 @@ int main(int argc, char** argv) {
     throw magfem::InputError("<command line>", 0, "",
                              "unknown command '" + args.command + "'\n" + magfem::usage_overview());
   } catch (const magfem::InputError& e) {
-    std::cerr << "magfem: error: " << e.what() << "\n";
-    return 2;
+    return fail(2, std::string("error: ") + e.what());
   } catch (const magfem::SolveError& e) {
-    std::cerr << "magfem: solver failed: " << e.what() << "\n";
-    return 3;
+    return fail(3, std::string("solver failed: ") + e.what());
   } catch (const std::exception& e) {
-    std::cerr << "magfem: internal error: " << e.what() << "\n";
-    return 1;
+    return fail(1, std::string("internal error: ") + e.what());
   }
 }

@@ -15,6 +15,7 @@
 #include "postproc/field2d.hpp"
 #include "postproc/probe_table.hpp"
 #include "solver/dof_map2d.hpp"
+#include "solver/mpi_context.hpp"
 #include "solver/newton.hpp"
 #include "solver/problem2d.hpp"
 
@@ -35,6 +36,8 @@ struct RunOverrides {
   // they share, fixed once for all (MB; 0 = measured at the check). Each gets its share.
   int parallel_runs = 1;
   double shared_memory_mb = 0;
+  // The processes of an mpirun solving this case together (3D linear cases only; run3d.hpp).
+  MpiWorld world{};
 };
 
 // An axisymmetric coil (region with turns and current): its flux linkage with the total field

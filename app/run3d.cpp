@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -17,11 +18,14 @@
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/mesh_fingerprint3d.hpp"
 #include "mesh/mesher3d.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
 #include "postproc/vtu_export3d.hpp"
 #include "solver/assembler3d.hpp"
+#include "solver/distributed_solve3d.hpp"
+#include "solver/mpi_context.hpp"
 #include "solver/p1_coarse_space.hpp"
 #include "solver/tet_quadrature.hpp"
 
@@ -90,6 +94,30 @@ Problem3D build_problem(const CaseSpec& spec, const Mesh3D& mesh) {
   return p;
 }
 
+// Why a case cannot be solved by several processes ("" if it can), found before meshing.
+// Newton would need every residual evaluation of its line search distributed, and the coils'
+// inductance solves reuse the serial linear solver: both stay on one process for now.
+std::string distributed_refusal(const CaseSpec& spec) {
+  for (const auto& r : spec.regions)
+    if (r.material->is_nonlinear())
+      return "region '" + r.name + "' is nonlinear (material '" + r.material->name +
+             "'): Newton iterations are not distributed; run this case without mpirun";
+  if (!spec.geometry3d.coils.empty())
+    return "coils are not distributed (their inductance solves run on one process); run this "
+           "case without mpirun";
+  return "";
+}
+
+// Every process meshed the case on its own; the element shares only make sense if the
+// meshes are the same. TetGen is deterministic for the same input, so a difference means
+// different inputs or builds: an internal error, never a silently wrong assembly.
+void check_same_mesh_everywhere(const Mesh3D& mesh) {
+  if (!same_on_every_rank(mesh_fingerprint(mesh)))
+    throw std::runtime_error("the processes of this mpirun meshed the case differently (mesh "
+                             "fingerprints differ); run the same magfem build and case on "
+                             "every process");
+}
+
 } // namespace
 
 namespace {
@@ -129,11 +157,19 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     if (ov.progress)
       ov.progress->stage(what);
   };
+  const MpiWorld& world = ov.world;
+  run->ranks = world.size;
+  if (world.distributed())
+    if (const std::string why = distributed_refusal(run->spec); !why.empty())
+      throw InputError(run->spec.file, 0, "",
+                       why + " (" + std::to_string(world.size) + " processes asked for)");
 
   auto t0 = Clock::now();
   stage("meshing");
   run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
   run->timings.mesh = since(t0);
+  if (world.distributed())
+    check_same_mesh_everywhere(run->mesh);
   check_stress_surfaces_3d(run->spec, run->mesh); // before the solve: fail fast
 
   run->problem = build_problem(run->spec, run->mesh);
@@ -155,22 +191,31 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     stage("assembly");
     run->problem.source = &run->coil_source;
   }
-  Assembler3D assembler(run->problem, *run->dofs);
+  // Distributed: one thread per process (the processes share the cores).
+  Assembler3D assembler(run->problem, *run->dofs, AssemblyOptions3D{world.distributed() ? 1 : 0});
   run->threads = assembler.threads();
   // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
-  // preconditioner (O(unknowns) to build, unused by the other solvers).
-  if (run->spec.order == 2)
+  // preconditioner (O(unknowns) to build, unused by the other solvers and not distributed).
+  if (run->spec.order == 2 && !world.distributed())
     run->spec.newton.linear.coarse_prolongation =
         std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
             p1_prolongation(*run->dofs, assembler.dof_to_equation()));
   const double setup = since(t0);
 
   Eigen::VectorXd u;
-  run->report = solve_nonlinear(assembler, u, run->spec.newton);
+  if (world.distributed())
+    run->report = solve_linear_distributed(assembler, *run->dofs, run->mesh.n_tets(), world.rank,
+                                           world.size, run->spec.newton.linear, u);
+  else
+    run->report = solve_nonlinear(assembler, u, run->spec.newton);
   run->timings.assemble = setup + run->report.assemble_s;
   run->timings.solve = run->report.solve_s;
   if (!run->report.converged)
     throw SolveError("the solver did not converge: " + run->report.message);
+  if (!world.is_root()) { // rank 0 holds the solution and alone post-processes
+    run->timings.total = since(t_start);
+    return run;
+  }
 
   check_finite(u, "solution");
 
@@ -232,7 +277,7 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
   j["residual_history"] = run.report.residual_history;
-  add_solver_summary(j, run.report, run.threads);
+  add_solver_summary(j, run.report, run.threads, run.ranks);
   j["timings_s"] = {{"mesh", run.timings.mesh},
                     {"assemble", run.timings.assemble},
                     {"solve", run.timings.solve},

@@ -36,8 +36,15 @@ struct Run3D {
   std::vector<std::string> warnings; // app/result_checks.hpp
   Timings timings;
   int threads = 1; // element-loop threads of the assembly
+  int ranks = 1;   // processes that solved it (MPI_COMM_WORLD under mpirun)
 };
 
+// Under mpirun (overrides.world.distributed()) every process calls this: each meshes the
+// case (the meshes must agree bit for bit, else an internal error on all), assembles its
+// share of the elements and takes part in the solve (solver/distributed_solve3d.hpp); rank 0
+// alone gets the solution and post-processes; the others return a Run3D without field and
+// results, to be neither described nor written. Nonlinear materials and coils are refused
+// (InputError) before meshing.
 std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides = {});
 // The memory guard's estimate of the peak memory (MB) run_case_3d would need for this case,
 // from the size field alone (no mesh is made; seconds on large cases).

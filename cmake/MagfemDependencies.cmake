@@ -23,8 +23,9 @@ magfem_require(NLopt_FOUND libnlopt-cxx-dev)
 
 find_package(Threads REQUIRED)
 
-# PETSc (with hypre's BoomerAMG and Open MPI) for algebraic multigrid in 3D; only
-# solver/petsc_solver.cpp includes it.
+# PETSc (with hypre's BoomerAMG and Open MPI) for algebraic multigrid in 3D and the
+# distributed solve under mpirun; only solver/petsc_solver.cpp includes it (and
+# solver/mpi_context.cpp MPI).
 find_package(PkgConfig QUIET)
 if(PkgConfig_FOUND)
   pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)

@@ -115,6 +115,23 @@ for pre in ichol pmg amg; do
   done
   rm -f "$copy"
 done
+# Distributed solve (mpirun -n 2) against one process, same case and solver (CG + BoomerAMG):
+# wall time end to end (meshing is replicated, post-processing on rank 0) and the speed-up.
+if command -v mpirun > /dev/null; then
+  mpirun_2=(mpirun -n 2)
+  if [[ $EUID -eq 0 ]]; then # Open MPI as root: the option and the variables
+    mpirun_2+=(--allow-run-as-root)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  fi
+  wall() { local t0; t0=$(date +%s.%N); "$@" > /dev/null; awk "BEGIN { print $(date +%s.%N) - $t0 }"; }
+  case=examples/3d/magnetized_sphere_amg.yaml
+  t1=$(wall $magfem solve $case --quiet --mesh-scale 2.5 --out "$out/sph_1rank")
+  t2=$(wall "${mpirun_2[@]}" $magfem solve $case --quiet --mesh-scale 2.5 --out "$out/sph_2ranks")
+  solver_report "magnetized sphere amg, mesh-scale 2.5, 1 rank" "$out/sph_1rank"
+  solver_report "magnetized sphere amg, mesh-scale 2.5, 2 ranks" "$out/sph_2ranks"
+  printf "mpirun -n 2 speed-up over 1 rank (wall, end to end): %.2f s / %.2f s = %.2fx\n" \
+    "$t1" "$t2" "$(awk "BEGIN { print $t1 / $t2 }")"
+fi
 
 echo
 echo "== analytic models (thesis: charge model 0.36 s per point, harmonics overflow past n 149)"

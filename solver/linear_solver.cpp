@@ -100,14 +100,13 @@ KrylovOutcome pcg(const Eigen::SparseMatrix<double>& lower, const IncompleteChol
   return out;
 }
 
-// The recursively updated residual drifts from the true one by about machine precision
-// times the condition number, which for iron at mu_r 1e4 meshed finely reaches 1e-7. A true
-// residual above this bound is no such drift: the iteration stopped on something else.
+} // namespace
+
 double true_residual_limit(double tol) {
   return std::max(1e4 * tol, 1e-6);
 }
 
-std::string describe(const KrylovOutcome& o, const std::string& method, double tol) {
+std::string describe_krylov_stop(const KrylovOutcome& o, const std::string& method, double tol) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "%s did not converge: stopped after %d iterations (%s) at relative residual "
@@ -115,8 +114,6 @@ std::string describe(const KrylovOutcome& o, const std::string& method, double t
                 method.c_str(), o.iterations, o.reason.c_str(), o.relative_residual, tol);
   return buf;
 }
-
-} // namespace
 
 std::string petsc_options_problem(const LinearSolverOptions& options) {
   PetscSolverOptions petsc;
@@ -254,7 +251,7 @@ Eigen::VectorXd LinearSolver::solve_krylov(const Eigen::VectorXd& rhs) {
   const double tol = options_.cg_tolerance;
   auto failure = [&](const KrylovOutcome& o, const Eigen::VectorXd& x, const std::string& method) {
     if (!o.converged)
-      return describe(o, method, tol);
+      return describe_krylov_stop(o, method, tol);
     const double b_norm = rhs.norm();
     if (b_norm == 0)
       return std::string();
@@ -263,7 +260,7 @@ Eigen::VectorXd LinearSolver::solve_krylov(const Eigen::VectorXd& rhs) {
       return std::string();
     char buf[200];
     std::snprintf(buf, sizeof buf, "; the true residual |b - A x| / |b| is %.3e", true_residual);
-    return describe(o, method, tol) + buf;
+    return describe_krylov_stop(o, method, tol) + buf;
   };
   Eigen::VectorXd x;
   int iterations = 0;

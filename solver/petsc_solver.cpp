@@ -121,12 +121,18 @@ void use_options(KSP ksp, PetscOptions db) {
 
 } // namespace
 
+void start_petsc() {
+  const std::lock_guard lock(petsc_mutex());
+  ensure_petsc();
+}
+
 struct PetscSolver::Impl {
   PetscSolverOptions options;
   PetscOptions db = nullptr;
   KSP ksp = nullptr;
   Mat a = nullptr;
-  Mat p = nullptr; // pmg's interpolation
+  Mat p = nullptr;   // pmg's interpolation
+  Vec rhs = nullptr; // distributed mode: the assembled right-hand side
   std::vector<PetscInt> row_start, column, p_row_start, p_column;
   std::vector<PetscScalar> value, p_value;
   double rhs_norm = 1;
@@ -143,8 +149,12 @@ struct PetscSolver::Impl {
       MatDestroy(&a);
     if (p)
       MatDestroy(&p);
+    if (rhs)
+      VecDestroy(&rhs);
   }
   void to_full_csr(const Eigen::SparseMatrix<double>& lower);
+  void set_up_ksp(MPI_Comm comm);
+  KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
   static PetscErrorCode monitor(KSP, PetscInt it, PetscReal rnorm, void* self);
 };
@@ -276,6 +286,34 @@ PetscSolver::~PetscSolver() {
   impl_.reset();
 }
 
+// CG with our tolerance and the preconditioner on `a`, then the user's options.
+void PetscSolver::Impl::set_up_ksp(MPI_Comm comm) {
+  check(KSPCreate(comm, &ksp), "KSPCreate");
+  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(ksp), db), "options");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(pc), db), "options");
+  check(KSPSetOperators(ksp, a, a), "KSPSetOperators");
+  check(KSPSetType(ksp, KSPCG), "KSPSetType");
+  // The unpreconditioned residual: the same test as the incomplete-Cholesky CG, so the
+  // tolerance means the same whichever preconditioner ran.
+  check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  check(
+      KSPSetTolerances(ksp, options.relative_tolerance, 0.0, PETSC_DEFAULT, options.max_iterations),
+      "KSPSetTolerances");
+  if (options.preconditioner == "pmg") {
+    set_up_pmg(pc);
+  } else if (options.preconditioner == "gamg") {
+    check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
+  } else {
+    check(PCSetType(pc, PCHYPRE), "PCSetType(hypre)");
+    check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  }
+  check(KSPSetFromOptions(ksp), "applying petsc_options");
+  check(KSPMonitorSet(ksp, &Impl::monitor, this, nullptr), "KSPMonitorSet");
+  check(KSPSetUp(ksp), "preconditioner set-up");
+}
+
 void PetscSolver::setup(const Eigen::SparseMatrix<double>& lower) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
@@ -285,30 +323,7 @@ void PetscSolver::setup(const Eigen::SparseMatrix<double>& lower) {
   check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, m.row_start.data(), m.column.data(),
                                   m.value.data(), &m.a),
         "MatCreateSeqAIJWithArrays");
-  check(KSPCreate(PETSC_COMM_SELF, &m.ksp), "KSPCreate");
-  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(m.ksp), m.db), "options");
-  PC pc = nullptr;
-  check(KSPGetPC(m.ksp, &pc), "KSPGetPC");
-  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(pc), m.db), "options");
-  check(KSPSetOperators(m.ksp, m.a, m.a), "KSPSetOperators");
-  check(KSPSetType(m.ksp, KSPCG), "KSPSetType");
-  // The unpreconditioned residual: the same test as the incomplete-Cholesky CG, so the
-  // tolerance means the same whichever preconditioner ran.
-  check(KSPSetNormType(m.ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-  check(KSPSetTolerances(m.ksp, m.options.relative_tolerance, 0.0, PETSC_DEFAULT,
-                         m.options.max_iterations),
-        "KSPSetTolerances");
-  if (m.options.preconditioner == "pmg") {
-    m.set_up_pmg(pc);
-  } else if (m.options.preconditioner == "gamg") {
-    check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
-  } else {
-    check(PCSetType(pc, PCHYPRE), "PCSetType(hypre)");
-    check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
-  }
-  check(KSPSetFromOptions(m.ksp), "applying petsc_options");
-  check(KSPMonitorSet(m.ksp, &Impl::monitor, &m, nullptr), "KSPMonitorSet");
-  check(KSPSetUp(m.ksp), "preconditioner set-up");
+  m.set_up_ksp(PETSC_COMM_SELF);
 }
 
 KrylovOutcome PetscSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
@@ -331,17 +346,23 @@ KrylovOutcome PetscSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x)
   VecDestroy(&vb);
   VecDestroy(&vx);
   check(code, "KSPSolve");
+  return m.outcome(m.rhs_norm);
+}
+
+// How the last KSPSolve ended.
+KrylovOutcome PetscSolver::Impl::outcome(double b_norm) const {
+  KrylovOutcome out;
   KSPConvergedReason reason;
   PetscInt iterations = 0;
   PetscReal rnorm = 0;
-  KSPGetConvergedReason(m.ksp, &reason);
-  KSPGetIterationNumber(m.ksp, &iterations);
-  KSPGetResidualNorm(m.ksp, &rnorm);
+  KSPGetConvergedReason(ksp, &reason);
+  KSPGetIterationNumber(ksp, &iterations);
+  KSPGetResidualNorm(ksp, &rnorm);
   out.iterations = static_cast<int>(iterations);
-  out.relative_residual = rnorm / m.rhs_norm;
+  out.relative_residual = rnorm / b_norm;
   out.reason = KSPConvergedReasons[reason];
   KSPType type = nullptr;
-  KSPGetType(m.ksp, &type);
+  KSPGetType(ksp, &type);
   const bool preonly = type && std::string(type) == KSPPREONLY;
   // Only a stop on the tolerance is a solution (a direct solve through -ksp_type preonly
   // stops on its one iteration; the caller's residual check judges it).
@@ -350,6 +371,106 @@ KrylovOutcome PetscSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x)
                   reason == KSP_CONVERGED_HAPPY_BREAKDOWN ||
                   (preonly && reason == KSP_CONVERGED_ITS);
   return out;
+}
+
+void PetscSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  if (m.options.preconditioner == "pmg")
+    throw SolveError("internal: p-multigrid is not available distributed");
+  m.release();
+  PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
+  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
+  MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  const PetscInt begin = end - local;
+  // Exact preallocation: per owned row, its columns inside the owned block (the "diagonal"
+  // part) and outside it. Without it every MatSetValues that opens a new entry reallocates.
+  std::vector<PetscInt> in_block(local, 0), off_block(local, 0);
+  auto count = [&](PetscInt row, PetscInt col) {
+    if (row >= begin && row < end)
+      ++(col >= begin && col < end ? in_block : off_block)[row - begin];
+  };
+  for (PetscInt j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
+      const auto i = static_cast<PetscInt>(it.row());
+      count(i, j);
+      if (i != j)
+        count(j, i);
+    }
+  check(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, in_block.data(), 0, off_block.data(),
+                     &m.a),
+        "MatCreateAIJ");
+  check(VecCreateMPI(PETSC_COMM_WORLD, local, n, &m.rhs), "VecCreateMPI");
+  check(VecSetOption(m.rhs, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE), "VecSetOption");
+  check(VecSet(m.rhs, 0.0), "VecSet");
+}
+
+void PetscSolver::add_element(int n, const int* eq, const double* ke, const double* fe) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  std::vector<PetscInt> rows(eq, eq + n); // negative (constrained): skipped by PETSc
+  check(MatSetValues(m.a, n, rows.data(), n, rows.data(), ke, ADD_VALUES), "MatSetValues");
+  check(VecSetValues(m.rhs, n, rows.data(), fe, ADD_VALUES), "VecSetValues");
+}
+
+void PetscSolver::setup_distributed() {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  check(MatAssemblyBegin(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(VecAssemblyBegin(m.rhs), "VecAssemblyBegin");
+  check(VecAssemblyEnd(m.rhs), "VecAssemblyEnd");
+  m.set_up_ksp(PETSC_COMM_WORLD);
+}
+
+KrylovOutcome PetscSolver::solve_distributed(Eigen::VectorXd& x) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  PetscReal b_norm = 0;
+  check(VecNorm(m.rhs, NORM_2, &b_norm), "VecNorm");
+  m.rhs_norm = b_norm;
+  Vec vx = nullptr, r = nullptr, root = nullptr;
+  VecScatter to_root = nullptr;
+  auto destroy = [&] {
+    VecDestroy(&vx);
+    VecDestroy(&r);
+    VecDestroy(&root);
+    VecScatterDestroy(&to_root);
+  };
+  try {
+    check(VecDuplicate(m.rhs, &vx), "VecDuplicate");
+    check(VecSet(vx, 0.0), "VecSet");
+    KrylovOutcome out;
+    if (b_norm == 0) {
+      out.converged = true;
+      out.reason = "zero right-hand side";
+      out.true_relative_residual = 0;
+    } else {
+      check(KSPSolve(m.ksp, m.rhs, vx), "KSPSolve");
+      out = m.outcome(b_norm);
+      // r = b - A x, by PETSc over the distributed matrix.
+      check(VecDuplicate(m.rhs, &r), "VecDuplicate");
+      check(MatMult(m.a, vx, r), "MatMult");
+      check(VecAYPX(r, -1.0, m.rhs), "VecAYPX");
+      PetscReal r_norm = 0;
+      check(VecNorm(r, NORM_2, &r_norm), "VecNorm");
+      out.true_relative_residual = r_norm / b_norm;
+    }
+    check(VecScatterCreateToZero(vx, &to_root, &root), "VecScatterCreateToZero");
+    check(VecScatterBegin(to_root, vx, root, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(to_root, vx, root, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    PetscInt n_root = 0;
+    check(VecGetLocalSize(root, &n_root), "VecGetLocalSize");
+    const PetscScalar* values = nullptr;
+    check(VecGetArrayRead(root, &values), "VecGetArrayRead");
+    x = Eigen::Map<const Eigen::VectorXd>(values, n_root); // n on rank 0, 0 elsewhere
+    VecRestoreArrayRead(root, &values);
+    destroy();
+    return out;
+  } catch (...) {
+    destroy();
+    throw;
+  }
 }
 
 std::string PetscSolver::preconditioner_name() const {

@@ -3,8 +3,14 @@
 // or by two-level p-multigrid (pmg: a symmetric Gauss-Seidel smoother on the system, BoomerAMG on
 // the Galerkin coarse operator P^T A P of a given coarse space), through PETSc. This header keeps
 // PETSc out of every other translation unit: its types live behind Impl in petsc_solver.cpp, the
-// only file that includes PETSc. PETSc (and MPI) start on the first use in a process and stop at
+// only file that includes PETSc (mpi_context.cpp includes MPI alone). PETSc (and MPI) start on
+// the first use in a process, or at the start of a run under mpirun (start_petsc), and stop at
 // its exit.
+//
+// Two ways to give it the system: setup() copies a whole matrix held by this process into a
+// sequential PETSc matrix; the distributed mode (begin_distributed, add_element,
+// setup_distributed, solve_distributed) builds one PETSc MPIAIJ matrix over MPI_COMM_WORLD
+// from the element contributions each process adds for its share of the elements.
 #include <memory>
 #include <string>
 
@@ -31,7 +37,13 @@ struct KrylovOutcome {
   int iterations = 0;
   double relative_residual = 0; // as the Krylov method last saw it
   std::string reason;           // PETSc's name for the stop (e.g. CONVERGED_RTOL, DIVERGED_ITS)
+  // |b - A x| / |b| computed by PETSc after the solve (distributed solves, where no process
+  // holds A to check it); -1 when not computed.
+  double true_relative_residual = -1;
 };
+
+// Starts PETSc and MPI for the rest of the process (no-op once started).
+void start_petsc();
 
 class PetscSolver {
 public:
@@ -44,6 +56,23 @@ public:
   // the preconditioner. Throws SolveError when PETSc refuses (bad options, set-up failure).
   void setup(const Eigen::SparseMatrix<double>& lower);
   KrylovOutcome solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
+
+  // Distributed mode; every process of MPI_COMM_WORLD calls these collective steps in this
+  // order (add_element is local). Rows are owned in contiguous blocks, PETSc's default split
+  // (the first n % size processes own one row more). `lower_pattern`: the lower triangle of
+  // the whole system's sparsity (values unused), the same on every process; it gives the exact
+  // preallocation of this process's rows. Not for pmg (its coarse space is not distributed).
+  void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern);
+  // Adds an element's full symmetric matrix `ke` (n x n, row major) and right-hand side `fe`
+  // (n) at the equations `eq` (n; negative = constrained, skipped). Rows of other processes
+  // are stashed and sent to them by setup_distributed().
+  void add_element(int n, const int* eq, const double* ke, const double* fe);
+  // Collective: completes the assembly (off-process entries travel here) and sets up CG and
+  // the preconditioner. Throws SolveError as setup() does.
+  void setup_distributed();
+  // Collective: CG on the assembled system from x = 0; fills true_relative_residual. `x`
+  // receives the whole solution on rank 0 and is left empty on the others.
+  KrylovOutcome solve_distributed(Eigen::VectorXd& x);
   // The preconditioner actually in use (the options may have changed it): boomeramg, gamg,
   // or PETSc's name for another one.
   std::string preconditioner_name() const;
