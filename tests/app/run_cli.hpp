@@ -14,8 +14,9 @@ struct CliOutcome {
   std::string out; // stdout and stderr
 };
 
-inline CliOutcome run_cli(const std::string& args) {
-  const std::string cmd = std::string(magfem::test::magfem_binary()) + " " + args + " 2>&1";
+// Runs a whole shell command line, stdout and stderr together.
+inline CliOutcome run_command(const std::string& command) {
+  const std::string cmd = command + " 2>&1";
   CliOutcome o;
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
@@ -24,6 +25,10 @@ inline CliOutcome run_cli(const std::string& args) {
   const int raw = pipe ? pclose(pipe) : -1;
   o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return o;
+}
+
+inline CliOutcome run_cli(const std::string& args) {
+  return run_command(std::string(magfem::test::magfem_binary()) + " " + args);
 }
 
 } // namespace magfem::test

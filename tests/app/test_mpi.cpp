@@ -62,15 +62,7 @@ CliOutcome run_mpi(int n, const std::string& args) {
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   }
-  cmd += std::string(magfem::test::magfem_binary()) + " " + args + " 2>&1";
-  CliOutcome o;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (pipe && fgets(buf.data(), buf.size(), pipe))
-    o.out += buf.data();
-  const int raw = pipe ? pclose(pipe) : -1;
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return o;
+  return magfem::test::run_command(cmd + magfem::test::magfem_binary() + " " + args);
 }
 
 nlohmann::json read_json(const fs::path& p) {
