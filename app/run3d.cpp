@@ -272,7 +272,9 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   j["unknowns"] = run.dofs->n_dofs();
   j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
                        {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
-                       {"max_radius_edge", run.mesh.quality.max_radius_edge}};
+                       {"max_radius_edge", run.mesh.quality.max_radius_edge},
+                       {"curved_tets", run.dofs->n_curved()},
+                       {"straightened_edge_nodes", run.dofs->n_straightened()}};
   j["energy_J"] = run.energy.total_J;
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
@@ -344,6 +346,10 @@ std::string describe_run_3d(const Run3D& run) {
                 describe_solver(run.report).c_str(), run.report.residual_history.back(),
                 run.energy.total_J);
   std::string s = buf;
+  if (run.dofs->n_straightened() > 0)
+    s += "note     " + std::to_string(run.dofs->n_straightened()) +
+         " edge nodes on spheres kept straight: curving them would fold their tets (a finer "
+         "mesh there curves them)\n";
   for (const auto& note : run.report.notes)
     s += "note     " + note + "\n";
   for (const auto& r : run.energy.regions)

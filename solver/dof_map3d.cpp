@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <variant>
 
 #include "solver/tet_lagrange.hpp"
+#include "solver/tet_quadrature.hpp"
 
 namespace magfem {
 namespace {
@@ -121,12 +123,60 @@ void DofMap3D::curve_to_spheres(const Mesh3D& mesh, const std::vector<SphereSurf
       break;
     }
   }
+  mark_curved(mesh, moved);
+  // Straighten the curved tets whose map folds or nearly does, until none is left: reverting
+  // an edge node only takes its other tets back towards their straight (valid) shape, but
+  // one of them may still be folded by another edge, hence the loop.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+      if (!curved_[t] || min_jacobian_ratio(t) >= min_curved_jacobian_ratio)
+        continue;
+      for (int e = 4; e < 10; ++e) {
+        const int d = element_dofs_[t * 10 + e];
+        if (!moved[d])
+          continue;
+        const auto [a, b] = edge_ends(d);
+        points_[d] = 0.5 * (points_[a] + points_[b]);
+        moved[d] = 0;
+        ++n_straightened_;
+      }
+      changed = true;
+    }
+    mark_curved(mesh, moved);
+  }
+}
+
+void DofMap3D::mark_curved(const Mesh3D& mesh, const std::vector<char>& moved) {
   const int per = dofs_per_element();
   curved_.assign(mesh.n_tets(), 0);
   for (std::size_t t = 0; t < mesh.n_tets(); ++t)
     for (int e = 4; e < per; ++e)
       if (moved[element_dofs_[t * per + e]])
         curved_[t] = 1;
+}
+
+// det J of the isoparametric map over the straight tet's, least over the vertices, the edge
+// nodes and the points of the degree-5 rule the assembler integrates with. det J is a cubic,
+// so sampled points are not a proof of positivity: the margin covers what lies between them.
+double DofMap3D::min_jacobian_ratio(std::size_t t) const {
+  const int* dof = element_dofs(t);
+  std::array<Eigen::Vector3d, 10> x;
+  for (int i = 0; i < 10; ++i)
+    x[i] = points_[dof[i]];
+  std::array<Eigen::Vector3d, 10> straight = x;
+  for (int e = 0; e < 6; ++e)
+    straight[4 + e] = 0.5 * (x[tet_edges[e][0]] + x[tet_edges[e][1]]);
+  std::array<Eigen::Vector3d, 10> grad;
+  Eigen::Vector3d point;
+  const double volume = tet_iso_gradients(straight, {0.25, 0.25, 0.25, 0.25}, grad.data(), point);
+  std::vector<std::array<double, 4>> samples(tet_dof_nodes.begin(), tet_dof_nodes.end());
+  for (const TetQuadPoint& q : tet_rule(5))
+    samples.push_back(q.bary);
+  double least = std::numeric_limits<double>::infinity();
+  for (const auto& l : samples)
+    least = std::min(least, tet_iso_gradients(x, l, grad.data(), point) / volume);
+  return least;
 }
 
 std::size_t DofMap3D::n_curved() const {

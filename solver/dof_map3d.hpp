@@ -44,14 +44,22 @@ public:
   // vertices must already lie on the spheres (TetGen keeps them there). Order 1: no effect.
   void curve_to_spheres(const Mesh3D& mesh, const std::vector<SphereSurface>& spheres);
   // True if tet t has a moved edge node (use tet_iso_gradients for it).
+  // Edge nodes whose move would fold a tet, or nearly (det J below min_curved_jacobian_ratio
+  // of the straight tet's anywhere): coarse tets thin across a sphere, whose edge node moves
+  // out by the sagitta. They stay at the midpoint (that face stays flat); unchecked, such a
+  // tet made the stiffness matrix indefinite and CG stopped (DIVERGED_INDEFINITE).
+  static constexpr double min_curved_jacobian_ratio = 0.1;
   bool is_curved(std::size_t t) const { return !curved_.empty() && curved_[t] != 0; }
   std::size_t n_curved() const;
+  std::size_t n_straightened() const { return n_straightened_; } // edge nodes kept straight
 
   // DOFs on the given mesh faces (vertices and, order 2, edge midpoints), sorted, unique.
   std::vector<int> dofs_on_faces(const std::vector<std::array<int, 3>>& faces) const;
 
 private:
   int edge_dof(int a, int b) const;
+  void mark_curved(const Mesh3D& mesh, const std::vector<char>& moved);
+  double min_jacobian_ratio(std::size_t t) const; // order 2
 
   int order_;
   int n_dofs_ = 0;
@@ -60,6 +68,7 @@ private:
   std::vector<long long> edge_keys_; // sorted; edge k has DOF n_vertices + k
   int n_vertices_ = 0;
   std::vector<char> curved_; // per tet (empty until curve_to_spheres)
+  std::size_t n_straightened_ = 0;
 };
 
 } // namespace magfem

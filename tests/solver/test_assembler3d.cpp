@@ -189,5 +189,62 @@ TEST(Assembler3D, LinearSolveMatchesDenseReferenceAndCg) {
   }
 }
 
+// One tet outside the unit sphere with a face on it (a 60 deg triangle) and its fourth vertex
+// at height `height` above the face's centre along the outward normal. Curving moves the
+// face's edge nodes out by the sagitta (~0.13 here) towards the fourth vertex.
+Mesh3D tet_on_unit_sphere(double height) {
+  const double s = std::sqrt(3.0) / 2;
+  Mesh3D mesh;
+  mesh.nodes = {{1, 0, 0}, {0.5, s, 0}, {0.5, s / 3, std::sqrt(2.0 / 3) * 1.0}};
+  for (auto& p : mesh.nodes)
+    p.normalize();
+  const Eigen::Vector3d a = mesh.nodes[0], b = mesh.nodes[1], c = mesh.nodes[2];
+  Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
+  const Eigen::Vector3d centre = (a + b + c) / 3;
+  if (normal.dot(centre) < 0)
+    normal = -normal;
+  mesh.nodes.push_back(centre + height * normal);
+  mesh.tets = {{0, 1, 2, 3}};
+  if (TetGeometry::of(mesh.nodes[0], mesh.nodes[1], mesh.nodes[2], mesh.nodes[3]).volume < 0)
+    mesh.tets = {{1, 0, 2, 3}};
+  mesh.tet_part = {0};
+  return mesh;
+}
+
+// A coarse tet thin across a sphere folds when its edge nodes go onto the sphere (a sagitta
+// larger than its height): det J < 0 at its face, an indefinite stiffness matrix and CG stopped
+// with DIVERGED_INDEFINITE (seen on the actuator at --mesh-scale 2). Such edge nodes stay at
+// their midpoints; a tet with room for the sagitta is curved as before.
+TEST(CurvedTets, EdgeNodesThatWouldFoldTheirTetStayStraight) {
+  const std::vector<SphereSurface> unit = {{Eigen::Vector3d::Zero(), 1.0}};
+  {
+    const Mesh3D thick = tet_on_unit_sphere(1.0);
+    DofMap3D dofs(thick, 2);
+    dofs.curve_to_spheres(thick, unit);
+    EXPECT_TRUE(dofs.is_curved(0));
+    EXPECT_EQ(dofs.n_straightened(), 0u);
+    for (int d = 4; d < 10; ++d) { // the face's three edge nodes on the sphere, the rest not
+      const double r = dofs.dof_points()[d].norm();
+      const auto [a, b] = dofs.edge_ends(d);
+      const bool on_face = a != 3 && b != 3;
+      if (on_face)
+        EXPECT_NEAR(r, 1.0, 1e-14);
+      else
+        EXPECT_GT(std::abs(r - 1.0), 1e-3);
+    }
+  }
+  {
+    const Mesh3D thin = tet_on_unit_sphere(0.05);
+    DofMap3D dofs(thin, 2);
+    dofs.curve_to_spheres(thin, unit);
+    EXPECT_FALSE(dofs.is_curved(0));
+    EXPECT_EQ(dofs.n_straightened(), 3u);
+    for (int d = 4; d < 10; ++d) {
+      const auto [a, b] = dofs.edge_ends(d);
+      EXPECT_LT((dofs.dof_points()[d] - 0.5 * (thin.nodes[a] + thin.nodes[b])).norm(), 1e-15);
+    }
+  }
+}
+
 } // namespace
 } // namespace magfem
