@@ -129,6 +129,7 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
     spec.geometry3d.options.size_scale *= ov.mesh_scale;
   if (ov.domain_radius > 0)
     spec.geometry3d.outer.radius = ov.domain_radius;
+  spec.geometry3d.options.spheres_curved = spec.order == 2; // DofMap3D::curve_to_spheres
 }
 
 } // namespace

@@ -18,6 +18,7 @@ public:
 
   // Radius of curvature for the chord tolerance at a global point (infinity on planes).
   double curvature_radius(const Vec3& x_global) const;
+  bool is_sphere() const { return type_ == Type::stereo_north || type_ == Type::stereo_south; }
 
 private:
   enum class Type { plane, stereo_north, stereo_south, cone, cylinder };

@@ -60,19 +60,25 @@ struct SizeRules {
     return scale * default_size;
   }
   // Sagitta of a triangle of edge h on a surface of curvature radius R is about h^2 / (6 R).
-  double chord(double radius) const {
+  // A coarser --mesh-scale keeps the chord limit of surfaces whose facets stay flat (their
+  // geometry would coarsen with the mesh) and lets that of spheres grow with it when the
+  // solver curves the elements onto them (order 2, MeshOptions3D::spheres_curved). Without
+  // that the spherical actuator meshed to about a million tetrahedra at every scale above 1.5.
+  double chord(double radius, bool curved_by_solver) const {
     if (tol <= 0 || !std::isfinite(radius))
       return std::numeric_limits<double>::infinity();
-    return chord_margin * std::sqrt(6 * radius * tol) * std::min(scale, 1.0);
+    return chord_margin * std::sqrt(6 * radius * tol) *
+           (curved_by_solver ? scale : std::min(scale, 1.0));
   }
   double face(const GridFace3D& f) const {
     return std::min(region(f.label_low), region(f.label_high));
   }
   // The chord tolerance is a property of the parts' surfaces; the outer spheres only need
   // their nodes on the sphere, which they have exactly.
-  double face_chord(const GridFace3D& f, double radius) const {
-    return (f.label_low >= 0 || f.label_high >= 0) ? chord(radius)
-                                                   : std::numeric_limits<double>::infinity();
+  double face_chord(const GridFace3D& f, const FaceChart3D& chart, double radius) const {
+    return (f.label_low >= 0 || f.label_high >= 0)
+               ? chord(radius, geo.options.spheres_curved && chart.is_sphere())
+               : std::numeric_limits<double>::infinity();
   }
 };
 
@@ -104,7 +110,7 @@ FaceSizing face_sizing(const GridDecomposition3D& dec, const SizeRules& rules) {
     const double floor = curvature_floor(chart, corners);
     double h = rules.face(face);
     for (const Vec3& x : corners.points)
-      h = std::min(h, rules.face_chord(face, std::max(chart.curvature_radius(x), floor)));
+      h = std::min(h, rules.face_chord(face, chart, std::max(chart.curvature_radius(x), floor)));
     fs.spacing.push_back(sample_fraction * h);
     fs.floor.push_back(floor);
     double extent = 0;
@@ -180,8 +186,9 @@ void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
     const GridFrame3D& fr = dec.frames[face.frame];
     const FaceChart3D chart(fr, face);
     auto intrinsic = [&](const Vec3& x) {
-      return std::min(rules.face(face),
-                      rules.face_chord(face, std::max(chart.curvature_radius(x), fs.floor[f])));
+      return std::min(
+          rules.face(face),
+          rules.face_chord(face, chart, std::max(chart.curvature_radius(x), fs.floor[f])));
     };
     for (const Vec3& x : sample_face(fr, face, fs.spacing[f]).points)
       field.add_source(x, intrinsic(x));
