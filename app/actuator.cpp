@@ -363,13 +363,9 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
                          "least 4 azimuths), got '" +
                              t + "'");
       o.coil_rule = {n[0], n[1], n[2], n[3]};
-    } else if (arg == "--param") {
-      const std::string p = value();
-      const auto eq = p.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw InputError(cli, 0, arg, "expected NAME=VALUE, got '" + p + "'");
-      o.parameters[p.substr(0, eq)] = parse_cli_number(arg, p.substr(eq + 1));
-    } else if (arg == "--mesh-scale")
+    } else if (arg == "--param")
+      parse_cli_parameter(value(), o.parameters);
+    else if (arg == "--mesh-scale")
       o.mesh_scale = parse_cli_mesh_scale(value());
     else if (arg == "--order")
       o.order = parse_cli_order(value());

@@ -33,4 +33,11 @@ int parse_cli_order(const std::string& text) {
   return static_cast<int>(order);
 }
 
+void parse_cli_parameter(const std::string& text, ParameterOverrides& parameters) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("<command line>", 0, "--param", "expected NAME=VALUE, got '" + text + "'");
+  parameters[text.substr(0, eq)] = parse_cli_number("--param", text.substr(eq + 1));
+}
+
 } // namespace magfem

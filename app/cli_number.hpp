@@ -3,6 +3,8 @@
 // naming the option (the command line has no file or line).
 #include <string>
 
+#include "casefile/case_parameter.hpp"
+
 namespace magfem {
 
 double parse_cli_number(const std::string& option, const std::string& text);
@@ -11,5 +13,9 @@ double parse_cli_number(const std::string& option, const std::string& text);
 // --order (exactly 1 or 2).
 double parse_cli_mesh_scale(const std::string& text);
 int parse_cli_order(const std::string& text);
+
+// --param NAME=VALUE: sets parameters[NAME] (the case file's `parameters:`; read_case checks
+// that the file declares NAME).
+void parse_cli_parameter(const std::string& text, ParameterOverrides& parameters);
 
 } // namespace magfem

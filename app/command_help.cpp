@@ -16,7 +16,7 @@ struct CommandHelp {
 constexpr std::array<CommandHelp, 8> commands{{
     {"solve",
      "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--max-memory GB]\n"
-     "                    [--quiet]",
+     "                    [--param NAME=VALUE ...] [--quiet]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
      "  mesh and solver figures, magfem_version and commit), one CSV per probe, forces.csv\n"
@@ -27,11 +27,13 @@ constexpr std::array<CommandHelp, 8> commands{{
      "                    (default: the memory available now) and say which --mesh-scale\n"
      "                    would fit; the estimate is made before meshing\n"
      "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"
+     "  --param NAME=VALUE  set one of the case file's `parameters:` (repeatable)\n"
      "  Linear 3D cases also run distributed: mpirun -n N magfem solve CASE.yaml --out DIR\n"
      "  (each process meshes, assembles 1/N of the elements; rank 0 writes; README).\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
-     "[--n-max N]",
+     "[--n-max N]\n"
+     "                    [--param NAME=VALUE ...]",
      "the same probes from the analytic models",
      "  3D magnets in air or with permeable spheres (spherical imaging) and coils\n"
      "  (Biot-Savart): the charge model, or the spherical-harmonic model; with coils also\n"
@@ -40,7 +42,8 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  Iron is refused (exit 2, naming the region).\n"
      "  --model charge|harmonic   (default charge)\n"
      "  --tolerance T             relative cubature tolerance of the charge model\n"
-     "  --n-max N                 harmonic degree of the harmonic model\n"},
+     "  --n-max N                 harmonic degree of the harmonic model\n"
+     "  --param NAME=VALUE        set one of the case file's `parameters:` (repeatable)\n"},
     {"compare", "magfem compare REFERENCE.csv TEST.csv", "compare two probe CSVs",
      "  Per field component: the rms discrepancy of thesis eq. 3.117 and the pointwise rms\n"
      "  error, in % of the reference.\n"},

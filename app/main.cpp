@@ -43,6 +43,7 @@ struct Args {
   std::vector<std::string> positional;
   magfem::RunOverrides overrides;
   magfem::AnalyticOptions analytic;
+  magfem::ParameterOverrides parameters; // --param NAME=VALUE (solve, analytic)
   std::string rotate, axis, angles, point, surface_radius, move, positions;
   bool analytic_sweep = false;
   bool resume = false; // sweep: continue from the checkpoint in --out
@@ -74,7 +75,9 @@ Args parse_args(int argc, char** argv) {
       a.overrides.max_memory_gb = magfem::parse_cli_number(arg, value());
       if (!(a.overrides.max_memory_gb > 0))
         throw magfem::InputError("<command line>", 0, arg, "must be positive (GB)");
-    } else if (arg == "--model")
+    } else if (arg == "--param" && (a.command == "solve" || a.command == "analytic"))
+      magfem::parse_cli_parameter(value(), a.parameters);
+    else if (arg == "--model")
       a.analytic.model = value();
     else if (arg == "--tolerance")
       a.analytic.tolerance = magfem::parse_cli_number(arg, value());
@@ -144,7 +147,7 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
 int run_solve(const Args& args) {
   // Under mpirun: MPI starts here, before anything can fail on one process only.
   const magfem::MpiWorld world = magfem::join_mpi_world();
-  auto spec = magfem::read_case(args.case_file);
+  auto spec = magfem::read_case(args.case_file, args.parameters);
   magfem::Progress progress;
   magfem::RunOverrides overrides = args.overrides;
   if (!args.quiet && world.is_root())
@@ -178,7 +181,8 @@ int run_solve(const Args& args) {
 }
 
 int run_analytic(const Args& args) {
-  auto run = magfem::run_case_analytic(magfem::read_case(args.case_file), args.analytic);
+  auto run =
+      magfem::run_case_analytic(magfem::read_case(args.case_file, args.parameters), args.analytic);
   std::cout << magfem::describe_analytic(*run);
   magfem::write_outputs_analytic(*run, args.out_dir);
   std::cout << "wrote    " << args.out_dir << "/summary.json";

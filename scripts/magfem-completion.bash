@@ -27,8 +27,8 @@ _magfem() {
   esac
   local options
   case "$command" in
-    solve) options="--out --order --mesh-scale --max-memory --quiet --help" ;;
-    analytic) options="--out --model --tolerance --n-max --help" ;;
+    solve) options="--out --order --mesh-scale --max-memory --param --quiet --help" ;;
+    analytic) options="--out --model --tolerance --n-max --param --help" ;;
     compare) options="--help" ;;
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --help" ;;
     validate) options="--tier --only --source --jobs --resume --out --help" ;;
