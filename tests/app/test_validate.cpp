@@ -196,7 +196,7 @@ TEST(Validate, QuickSubsetPassesWithTheContractColumns) {
                                "harwin.t1.paper.max_over_mean_2,harwin.t1.real_magnet.max_ratio_8,"
                                "thesis.c4.t42.zero_force_angle,thesis.c4.bonded_both.torque_90,"
                                "thesis.b32.harmonic_vs_charge.B_rho,thesis.b32.cost.unbounded,"
-                               "thesis.c5.saturation",
+                               "thesis.c5.backiron_field.fe_segmented",
                            "quick");
   EXPECT_EQ(r.code, 0) << r.err;
   const std::string csv = read_text(out / "results.csv");
