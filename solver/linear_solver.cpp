@@ -200,9 +200,10 @@ void LinearSolver::set_up_krylov(const Eigen::SparseMatrix<double>& lower) {
                                std::to_string(lower.rows()) + " unknowns");
     try {
       if (!impl_->amg)
-        impl_->amg = std::make_unique<PetscSolver>(PetscSolverOptions{
-            impl_->amg_name, options_.petsc_options, options_.cg_tolerance,
-            options_.cg_max_iterations, options_.progress, options_.coarse_prolongation.get()});
+        impl_->amg = std::make_unique<PetscSolver>(
+            PetscSolverOptions{impl_->amg_name, options_.petsc_options, options_.cg_tolerance,
+                               options_.cg_max_iterations, options_.progress,
+                               options_.coarse_prolongation.get(), options_.smoother_block.get()});
       impl_->amg->setup(lower);
       return;
     } catch (const SolveError& e) {

@@ -50,6 +50,8 @@ struct LinearSolverOptions {
   // tetrahedra the P1 functions on the same mesh, solver/p1_coarse_space.hpp). Without one
   // (P1, 2D) there is no coarser order and pmg is BoomerAMG on the system itself.
   std::shared_ptr<const Eigen::SparseMatrix<double, Eigen::RowMajor>> coarse_prolongation;
+  // pmg: equations its smoother solves together (the open-boundary shell's), sorted.
+  std::shared_ptr<const std::vector<int>> smoother_block;
   Progress* progress = nullptr; // not owned; null = silent
 };
 
