@@ -138,6 +138,38 @@ TEST(P1CoarseSpace, PmgWithASmootherBlockSolvesToTheDirectSolution) {
   EXPECT_LT(pmg.last_iterations(), 30) << "of " << a.n_unknowns() << " unknowns";
 }
 
+// CG's automatic preconditioner is pmg when a coarse space is given; a pmg that fails (here
+// its set-up: a smoother block naming an equation that does not exist) falls back to
+// incomplete Cholesky, which solves, with the reason in a note.
+TEST(P1CoarseSpace, AutomaticIsPmgAndFallsBackToIncompleteCholeskyWithANote) {
+  const Box box(4, 2, OuterKind3D::dirichlet);
+  const DofMap3D dofs(box.mesh, 2);
+  const Assembler3D a(box.problem, dofs);
+  const auto [r, lower] = residual_and_tangent_at_zero(a);
+  LinearSolverOptions o;
+  o.kind = LinearSolverKind::cg;
+  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+      p1_prolongation(dofs, a.dof_to_equation()));
+  {
+    LinearSolver s(o);
+    s.factorize(lower);
+    const Eigen::VectorXd x = s.solve(-r);
+    EXPECT_EQ(s.preconditioner(), "pmg");
+    EXPECT_TRUE(s.notes().empty());
+    EXPECT_LT((-r - lower.selfadjointView<Eigen::Lower>() * x).norm(), 1e-10 * r.norm());
+  }
+  o.smoother_block = std::make_shared<const std::vector<int>>(std::vector<int>{a.n_unknowns()});
+  LinearSolver s(o);
+  s.factorize(lower);
+  const Eigen::VectorXd x = s.solve(-r);
+  EXPECT_LT((-r - lower.selfadjointView<Eigen::Lower>() * x).norm(), 1e-10 * r.norm());
+  EXPECT_EQ(s.preconditioner(), "ichol");
+  ASSERT_EQ(s.notes().size(), 1u);
+  EXPECT_NE(s.notes()[0].find("falling back to incomplete Cholesky"), std::string::npos)
+      << s.notes()[0];
+  EXPECT_NE(s.notes()[0].find("out of range"), std::string::npos) << s.notes()[0];
+}
+
 // Without a coarse space (P1 elements, 2D) pmg is BoomerAMG on the system, with a note.
 TEST(P1CoarseSpace, PmgWithoutACoarseSpaceIsBoomerAmgWithANote) {
   const Box box(4, 1, OuterKind3D::dirichlet);
