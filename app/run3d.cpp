@@ -201,6 +201,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     run->spec.newton.linear.coarse_prolongation =
         std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
             p1_prolongation(*run->dofs, assembler.dof_to_equation()));
+  if (run->spec.order == 2 && !world.distributed() && run->problem.boundary == OuterKind3D::open)
+    run->spec.newton.linear.smoother_block = std::make_shared<const std::vector<int>>(
+        element_equations(*run->dofs, assembler.dof_to_equation(), run->mesh.n_tets(),
+                          [&](std::size_t t) { return run->problem.is_shell(t); }));
   const double setup = since(t0);
 
   Eigen::VectorXd u;

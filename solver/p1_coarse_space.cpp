@@ -1,5 +1,7 @@
 #include "solver/p1_coarse_space.hpp"
 
+#include <algorithm>
+
 namespace magfem {
 
 Eigen::SparseMatrix<double, Eigen::RowMajor> p1_prolongation(const DofMap3D& dofs,
@@ -30,6 +32,23 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> p1_prolongation(const DofMap3D& dof
   p.resize(n_eqs, n_coarse);
   p.setFromTriplets(entries.begin(), entries.end());
   return p;
+}
+
+std::vector<int> element_equations(const DofMap3D& dofs, const std::vector<int>& dof_to_eq,
+                                   std::size_t n_tets,
+                                   const std::function<bool(std::size_t)>& in_block) {
+  std::vector<char> taken(dof_to_eq.size(), 0);
+  const int k = dofs.dofs_per_element();
+  for (std::size_t t = 0; t < n_tets; ++t)
+    if (in_block(t))
+      for (int i = 0; i < k; ++i)
+        taken[static_cast<std::size_t>(dofs.element_dofs(t)[i])] = 1;
+  std::vector<int> equations;
+  for (std::size_t d = 0; d < taken.size(); ++d)
+    if (taken[d] && dof_to_eq[d] >= 0)
+      equations.push_back(dof_to_eq[d]);
+  std::sort(equations.begin(), equations.end());
+  return equations;
 }
 
 } // namespace magfem

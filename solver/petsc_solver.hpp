@@ -13,6 +13,7 @@
 // from the element contributions each process adds for its share of the elements.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/SparseCore>
 
@@ -29,6 +30,9 @@ struct PetscSolverOptions {
   // pmg: interpolation from the coarse space (rows: the system's unknowns, columns: coarse
   // unknowns). Copied by setup(); required for pmg.
   const Eigen::SparseMatrix<double, Eigen::RowMajor>* prolongation = nullptr;
+  // pmg: equations (sorted) that the fine-level smoother solves together by a sparse
+  // Cholesky factorization (the open-boundary shell); empty = none.
+  const std::vector<int>* smoother_block = nullptr;
 };
 
 // How a Krylov solve ended. `converged` only when it stopped on the tolerance.

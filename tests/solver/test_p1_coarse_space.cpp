@@ -106,6 +106,70 @@ TEST(P1CoarseSpace, PmgSolvesToTheDirectSolution) {
   std::printf("pmg: %d CG iterations for %d unknowns\n", pmg.last_iterations(), a.n_unknowns());
 }
 
+// The block smoother (some equations solved together by CHOLMOD, Gauss-Seidel on the others,
+// forward before the coarse correction and backward after it): the V-cycle must stay one
+// symmetric positive definite operator, else CG stalls or breaks down. Here the block is the
+// equations of the iron half of the box; same solution as CHOLMOD's, in few iterations.
+TEST(P1CoarseSpace, PmgWithASmootherBlockSolvesToTheDirectSolution) {
+  const Box box(6, 2, OuterKind3D::dirichlet);
+  const DofMap3D dofs(box.mesh, 2);
+  const Assembler3D a(box.problem, dofs);
+  const auto [r, lower] = residual_and_tangent_at_zero(a);
+  LinearSolverOptions o;
+  o.kind = LinearSolverKind::cg;
+  o.preconditioner = PreconditionerKind::pmg;
+  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+      p1_prolongation(dofs, a.dof_to_equation()));
+  o.smoother_block = std::make_shared<const std::vector<int>>(
+      element_equations(dofs, a.dof_to_equation(), box.mesh.n_tets(),
+                        [&](std::size_t t) { return box.mesh.tet_part[t] == 1; }));
+  ASSERT_GT(o.smoother_block->size(), 0u);
+  ASSERT_LT(o.smoother_block->size(), static_cast<std::size_t>(a.n_unknowns()));
+  LinearSolver pmg(o);
+  pmg.factorize(lower);
+  const Eigen::VectorXd x = pmg.solve(-r);
+  EXPECT_EQ(pmg.preconditioner(), "pmg");
+  LinearSolverOptions direct_options;
+  direct_options.kind = LinearSolverKind::cholmod;
+  LinearSolver direct(direct_options);
+  direct.factorize(lower);
+  const Eigen::VectorXd exact = direct.solve(-r);
+  EXPECT_LT((x - exact).norm(), 1e-9 * exact.norm());
+  EXPECT_LT(pmg.last_iterations(), 30) << "of " << a.n_unknowns() << " unknowns";
+}
+
+// CG's automatic preconditioner is pmg when a coarse space is given; a pmg that fails (here
+// its set-up: a smoother block naming an equation that does not exist) falls back to
+// incomplete Cholesky, which solves, with the reason in a note.
+TEST(P1CoarseSpace, AutomaticIsPmgAndFallsBackToIncompleteCholeskyWithANote) {
+  const Box box(4, 2, OuterKind3D::dirichlet);
+  const DofMap3D dofs(box.mesh, 2);
+  const Assembler3D a(box.problem, dofs);
+  const auto [r, lower] = residual_and_tangent_at_zero(a);
+  LinearSolverOptions o;
+  o.kind = LinearSolverKind::cg;
+  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+      p1_prolongation(dofs, a.dof_to_equation()));
+  {
+    LinearSolver s(o);
+    s.factorize(lower);
+    const Eigen::VectorXd x = s.solve(-r);
+    EXPECT_EQ(s.preconditioner(), "pmg");
+    EXPECT_TRUE(s.notes().empty());
+    EXPECT_LT((-r - lower.selfadjointView<Eigen::Lower>() * x).norm(), 1e-10 * r.norm());
+  }
+  o.smoother_block = std::make_shared<const std::vector<int>>(std::vector<int>{a.n_unknowns()});
+  LinearSolver s(o);
+  s.factorize(lower);
+  const Eigen::VectorXd x = s.solve(-r);
+  EXPECT_LT((-r - lower.selfadjointView<Eigen::Lower>() * x).norm(), 1e-10 * r.norm());
+  EXPECT_EQ(s.preconditioner(), "ichol");
+  ASSERT_EQ(s.notes().size(), 1u);
+  EXPECT_NE(s.notes()[0].find("falling back to incomplete Cholesky"), std::string::npos)
+      << s.notes()[0];
+  EXPECT_NE(s.notes()[0].find("out of range"), std::string::npos) << s.notes()[0];
+}
+
 // Without a coarse space (P1 elements, 2D) pmg is BoomerAMG on the system, with a note.
 TEST(P1CoarseSpace, PmgWithoutACoarseSpaceIsBoomerAmgWithANote) {
   const Box box(4, 1, OuterKind3D::dirichlet);
