@@ -121,6 +121,17 @@ void use_options(KSP ksp, PetscOptions db) {
   check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(pc), db), "options");
 }
 
+// A multigrid level smoother: one Richardson step of its preconditioner (set by the caller).
+PC one_sweep_smoother(KSP smoother, PetscOptions db) {
+  use_options(smoother, db);
+  check(KSPSetType(smoother, KSPRICHARDSON), "KSPSetType(richardson)");
+  check(KSPSetTolerances(smoother, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 1),
+        "KSPSetTolerances (smoother)");
+  PC pc = nullptr;
+  check(KSPGetPC(smoother, &pc), "KSPGetPC");
+  return pc;
+}
+
 } // namespace
 
 void start_petsc() {
@@ -422,13 +433,8 @@ void PetscSolver::Impl::set_up_pmg(PC pc) {
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
     for (KSP smoother : {down, up}) {
-      use_options(smoother, db);
-      check(KSPSetType(smoother, KSPRICHARDSON), "KSPSetType(richardson)");
+      PC shell = one_sweep_smoother(smoother, db);
       check(KSPSetNormType(smoother, KSP_NORM_NONE), "KSPSetNormType (smoother)");
-      check(KSPSetTolerances(smoother, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 1),
-            "KSPSetTolerances (smoother)");
-      PC shell = nullptr;
-      check(KSPGetPC(smoother, &shell), "KSPGetPC");
       check(PCSetType(shell, PCSHELL), "PCSetType(shell)");
       check(PCShellSetContext(shell, block_smoother.get()), "PCShellSetContext");
       check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
@@ -443,12 +449,7 @@ void PetscSolver::Impl::set_up_pmg(PC pc) {
   } else {
     KSP smoother = nullptr;
     check(PCMGGetSmoother(pc, 1, &smoother), "PCMGGetSmoother");
-    use_options(smoother, db);
-    check(KSPSetType(smoother, KSPRICHARDSON), "KSPSetType(richardson)");
-    check(KSPSetTolerances(smoother, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 1),
-          "KSPSetTolerances (smoother)");
-    PC smoother_pc = nullptr;
-    check(KSPGetPC(smoother, &smoother_pc), "KSPGetPC");
+    PC smoother_pc = one_sweep_smoother(smoother, db);
     check(PCSetType(smoother_pc, PCSOR), "PCSetType(sor)");
     check(PCSORSetSymmetric(smoother_pc, SOR_LOCAL_SYMMETRIC_SWEEP), "PCSORSetSymmetric");
   }

@@ -33,6 +33,25 @@ Eigen::SparseMatrix<double> full_tangent(const Assembler3D& assembler) {
   return residual_and_tangent_at_zero(assembler).second.selfadjointView<Eigen::Lower>();
 }
 
+// CG options with the P1 coarse space of these DOFs (pmg unless another preconditioner is set).
+LinearSolverOptions cg_with_coarse_space(const DofMap3D& dofs, const Assembler3D& a) {
+  LinearSolverOptions o;
+  o.kind = LinearSolverKind::cg;
+  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+      p1_prolongation(dofs, a.dof_to_equation()));
+  return o;
+}
+
+// The reference: CHOLMOD's solution of lower x = rhs.
+Eigen::VectorXd direct_solution(const Eigen::SparseMatrix<double>& lower,
+                                const Eigen::VectorXd& rhs) {
+  LinearSolverOptions direct_options;
+  direct_options.kind = LinearSolverKind::cholmod;
+  LinearSolver direct(direct_options);
+  direct.factorize(lower);
+  return direct.solve(rhs);
+}
+
 // Dirichlet (phi = 0 on the box's faces: every boundary vertex and midpoint constrained) and
 // Neumann (one gauge vertex constrained): P^T K2 P equals the P1 matrix assembled directly, to
 // round-off (1e-12 of the largest entry).
@@ -87,20 +106,13 @@ TEST(P1CoarseSpace, PmgSolvesToTheDirectSolution) {
   const DofMap3D dofs(box.mesh, 2);
   const Assembler3D a(box.problem, dofs);
   const auto [r, lower] = residual_and_tangent_at_zero(a);
-  LinearSolverOptions o;
-  o.kind = LinearSolverKind::cg;
+  LinearSolverOptions o = cg_with_coarse_space(dofs, a);
   o.preconditioner = PreconditionerKind::pmg;
-  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-      p1_prolongation(dofs, a.dof_to_equation()));
   LinearSolver pmg(o);
   pmg.factorize(lower);
   const Eigen::VectorXd x = pmg.solve(-r);
   EXPECT_EQ(pmg.preconditioner(), "pmg");
-  LinearSolverOptions direct_options;
-  direct_options.kind = LinearSolverKind::cholmod;
-  LinearSolver direct(direct_options);
-  direct.factorize(lower);
-  const Eigen::VectorXd exact = direct.solve(-r);
+  const Eigen::VectorXd exact = direct_solution(lower, -r);
   EXPECT_LT((x - exact).norm(), 1e-9 * exact.norm());
   EXPECT_LT(pmg.last_iterations(), 30) << "of " << a.n_unknowns() << " unknowns";
   std::printf("pmg: %d CG iterations for %d unknowns\n", pmg.last_iterations(), a.n_unknowns());
@@ -115,11 +127,8 @@ TEST(P1CoarseSpace, PmgWithASmootherBlockSolvesToTheDirectSolution) {
   const DofMap3D dofs(box.mesh, 2);
   const Assembler3D a(box.problem, dofs);
   const auto [r, lower] = residual_and_tangent_at_zero(a);
-  LinearSolverOptions o;
-  o.kind = LinearSolverKind::cg;
+  LinearSolverOptions o = cg_with_coarse_space(dofs, a);
   o.preconditioner = PreconditionerKind::pmg;
-  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-      p1_prolongation(dofs, a.dof_to_equation()));
   o.smoother_block = std::make_shared<const std::vector<int>>(
       element_equations(dofs, a.dof_to_equation(), box.mesh.n_tets(),
                         [&](std::size_t t) { return box.mesh.tet_part[t] == 1; }));
@@ -129,11 +138,7 @@ TEST(P1CoarseSpace, PmgWithASmootherBlockSolvesToTheDirectSolution) {
   pmg.factorize(lower);
   const Eigen::VectorXd x = pmg.solve(-r);
   EXPECT_EQ(pmg.preconditioner(), "pmg");
-  LinearSolverOptions direct_options;
-  direct_options.kind = LinearSolverKind::cholmod;
-  LinearSolver direct(direct_options);
-  direct.factorize(lower);
-  const Eigen::VectorXd exact = direct.solve(-r);
+  const Eigen::VectorXd exact = direct_solution(lower, -r);
   EXPECT_LT((x - exact).norm(), 1e-9 * exact.norm());
   EXPECT_LT(pmg.last_iterations(), 30) << "of " << a.n_unknowns() << " unknowns";
 }
@@ -146,10 +151,7 @@ TEST(P1CoarseSpace, AutomaticIsPmgAndFallsBackToIncompleteCholeskyWithANote) {
   const DofMap3D dofs(box.mesh, 2);
   const Assembler3D a(box.problem, dofs);
   const auto [r, lower] = residual_and_tangent_at_zero(a);
-  LinearSolverOptions o;
-  o.kind = LinearSolverKind::cg;
-  o.coarse_prolongation = std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-      p1_prolongation(dofs, a.dof_to_equation()));
+  LinearSolverOptions o = cg_with_coarse_space(dofs, a);
   {
     LinearSolver s(o);
     s.factorize(lower);
