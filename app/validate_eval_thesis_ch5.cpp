@@ -209,15 +209,11 @@ EvalResult backiron_fe(const EvalContext& ctx) {
              "the charge model with spherical imaging (iron as infinitely permeable spheres) on "
              "the same points: |FE / charge model - 1|.";
   const auto scales = ctx.fe_scales();
-  if (scales.empty())
+  if (!set_fe_values(r, scales, [&](double scale) {
+        const auto g = gap_peaks(ctx, irons, scale);
+        return 100 * std::abs(g->fe_T / g->charge_T - 1);
+      }))
     return r;
-  auto difference = [&](double scale) {
-    const auto g = gap_peaks(ctx, irons, scale);
-    return 100 * std::abs(g->fe_T / g->charge_T - 1);
-  };
-  r.fe = difference(scales.back());
-  if (scales.size() > 1)
-    r.fe_coarse = difference(scales[scales.size() - 2]);
   const auto g = gap_peaks(ctx, irons, scales.back());
   r.details["peak_B_r_fe_T"] = g->fe_T;
   r.details["peak_B_r_charge_model_T"] = g->charge_T;
@@ -284,14 +280,11 @@ EvalResult saturation(const EvalContext& ctx) {
              "h_bm = 5 and 10 mm; peak |B| over the iron's nodes and peak |B_r| on the r69 "
              "probe (69 mm, over the magnets' hemisphere).";
   const auto scales = ctx.fe_scales();
-  if (scales.empty())
+  if (!set_fe_values(r, scales, [&](double scale) {
+        return saturation_quantity(q, *saturation_run(ctx, 5, scale),
+                                   *saturation_run(ctx, 10, scale));
+      }))
     return r;
-  auto at = [&](double scale) {
-    return saturation_quantity(q, *saturation_run(ctx, 5, scale), *saturation_run(ctx, 10, scale));
-  };
-  r.fe = at(scales.back());
-  if (scales.size() > 1)
-    r.fe_coarse = at(scales[scales.size() - 2]);
   for (double h : {5.0, 10.0}) {
     const auto run = saturation_run(ctx, h, scales.back());
     r.details["h_bm_" + std::to_string(static_cast<int>(h)) + "mm"] = {

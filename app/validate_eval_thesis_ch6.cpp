@@ -76,15 +76,11 @@ EvalResult commutation(const EvalContext& ctx) {
              " N m about x, y and z, then one FE solve per demand with those currents in the "
              "coils (magfem actuator --verify): the Lorentz torque on the coils against T_d.";
   const auto scales = ctx.fe_scales();
-  if (scales.empty())
+  if (!set_fe_values(r, scales, [&](double scale) {
+        return measure(*verified(ctx, torque, scale), on_axis, torque);
+      }))
     return r; // FE only: nothing in this tier
-  std::shared_ptr<const VerifiedCommutation> coarse, fine;
-  fine = verified(ctx, torque, scales.back());
-  if (scales.size() > 1)
-    coarse = verified(ctx, torque, scales[scales.size() - 2]);
-  r.fe = measure(*fine, on_axis, torque);
-  if (coarse)
-    r.fe_coarse = measure(*coarse, on_axis, torque);
+  const auto fine = verified(ctx, torque, scales.back());
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const auto& c : fine->checks)
     list.push_back({{"demanded_Nm", {c.demanded_Nm.x(), c.demanded_Nm.y(), c.demanded_Nm.z()}},

@@ -28,6 +28,16 @@ std::vector<double> EvalContext::fe_scales() const {
   return t->as_doubles();
 }
 
+bool set_fe_values(EvalResult& r, const std::vector<double>& scales,
+                   const std::function<double(double)>& value) {
+  if (scales.empty())
+    return false;
+  r.fe = value(scales.back());
+  if (scales.size() > 1)
+    r.fe_coarse = value(scales[scales.size() - 2]);
+  return true;
+}
+
 double EvalContext::number(const std::string& key) const {
   if (!entry.evaluate || !entry.evaluate->has(key))
     throw InputError(entry.evaluate ? entry.evaluate->file() : "", entry.line, "evaluate." + key,

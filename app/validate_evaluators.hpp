@@ -63,6 +63,11 @@ struct Evaluator {
   std::function<EvalResult(const EvalContext&)> run;
 };
 
+// r.fe = value(finest scale) and r.fe_coarse = value(the next coarser one), as the FE scales
+// of the tier give them; nothing when the tier has none. Returns whether FE ran.
+bool set_fe_values(EvalResult& r, const std::vector<double>& scales,
+                   const std::function<double(double)>& value);
+
 // --- Shared computations (cached by case file and mesh scale) -----------------------------
 // An FE run reduced to what the evaluators read: the probe tables and the run's size.
 struct FeProbes {
