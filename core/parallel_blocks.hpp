@@ -15,22 +15,32 @@ inline std::size_t block_count(std::size_t n, std::size_t block) {
   return (n + block - 1) / block;
 }
 
+// body(worker, b, begin, end) for every block b = [begin, end), on n_threads threads (the
+// caller's among them, worker 0); worker in [0, n_threads) names the thread, for scratch
+// space that a thread reuses across its blocks.
+template <class Body>
+void parallel_blocks_by_worker(std::size_t n, std::size_t block, int n_threads, const Body& body) {
+  const std::size_t n_blocks = block_count(n, block);
+  std::atomic<std::size_t> next{0};
+  auto work = [&](int worker) {
+    for (std::size_t b; (b = next++) < n_blocks;)
+      body(worker, b, b * block, std::min(n, (b + 1) * block));
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < n_threads; ++k)
+    pool.emplace_back(work, k);
+  work(0);
+  for (auto& th : pool)
+    th.join();
+}
+
 // body(b, begin, end) for every block b = [begin, end), on n_threads threads (the caller's
 // among them).
 template <class Body>
 void parallel_blocks(std::size_t n, std::size_t block, int n_threads, const Body& body) {
-  const std::size_t n_blocks = block_count(n, block);
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t b; (b = next++) < n_blocks;)
-      body(b, b * block, std::min(n, (b + 1) * block));
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < n_threads; ++k)
-    pool.emplace_back(work);
-  work();
-  for (auto& th : pool)
-    th.join();
+  parallel_blocks_by_worker(
+      n, block, n_threads,
+      [&](int, std::size_t b, std::size_t lo, std::size_t hi) { body(b, lo, hi); });
 }
 
 } // namespace magfem
