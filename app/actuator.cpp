@@ -9,6 +9,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -80,18 +81,23 @@ bool in_rotor(const Part3D& part, const std::string& rotor) {
   return part.group == rotor;
 }
 
-// The field turns rigidly with the rotor: every magnetic part is on the rotor or is a
-// (rotation-invariant) non-magnet sphere about the origin.
-bool rotor_rigid_field(const CaseSpec& spec, const std::string& rotor) {
+// The first part that keeps the field from turning rigidly with the rotor: a magnet off it,
+// or magnetic matter off it that is not a (rotation-invariant) sphere about the origin.
+std::optional<std::size_t> part_against_rigid_field(const CaseSpec& spec,
+                                                    const std::string& rotor) {
   for (std::size_t i = 0; i < spec.geometry3d.parts.size(); ++i) {
     const auto& part = spec.geometry3d.parts[i];
     const Material& m = *spec.regions[i].material;
     if (in_rotor(part, rotor) || is_air(m))
       continue;
     if (m.is_magnet() || !full_sphere_at_origin(part))
-      return false;
+      return i;
   }
-  return true;
+  return std::nullopt;
+}
+
+bool rotor_rigid_field(const CaseSpec& spec, const std::string& rotor) {
+  return !part_against_rigid_field(spec, rotor);
 }
 
 // The case without its coils, probes and forces: the magnets-and-iron problem whose field
@@ -112,17 +118,18 @@ CaseSpec turned(const CaseSpec& spec, const std::string& rotor, const Orientatio
   return rotate_group(s, rotor, Eigen::Vector3d::UnitZ(), o.rz_deg * deg_to_rad, origin);
 }
 
-FieldAtPoints fe_field(const Run3D& run) {
-  return [&run](const std::vector<Eigen::Vector3d>& points) {
-    const PointLocator3D locator(run.mesh);
+// B at points from an FE run; the function holds the run.
+FieldAtPoints fe_field(std::shared_ptr<const Run3D> run) {
+  return [run](const std::vector<Eigen::Vector3d>& points) {
+    const PointLocator3D locator(run->mesh);
     std::vector<Eigen::Vector3d> b;
     b.reserve(points.size());
     for (const auto& p : points) {
       const auto loc = locator.locate(p);
-      if (!loc || run.problem.is_shell(loc->tet))
-        throw InputError(run.spec.file, 0, "coils",
+      if (!loc || run->problem.is_shell(loc->tet))
+        throw InputError(run->spec.file, 0, "coils",
                          "a coil leaves the meshed domain (enlarge boundary.radius)");
-      b.push_back(run.field->B(loc->tet, loc->bary));
+      b.push_back(run->field->B(loc->tet, loc->bary));
     }
     return b;
   };
@@ -161,9 +168,8 @@ std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOption
   if (rotor_rigid_field(spec, options.rotor)) {
     notes.push_back("the field turns rigidly with the rotor: one FE solve in the rotor's frame "
                     "serves every orientation");
-    const auto run = run_case_3d(magnets_and_iron(spec), ov);
     n_solves = 1;
-    return torque_constants_rotating(coils, rotations, fe_field(*run), q);
+    return torque_constants_rotating(coils, rotations, fe_rotor_field(spec, options.rotor, ov), q);
   }
   notes.push_back("stator iron or magnets that are not spheres about the origin: one FE solve "
                   "per orientation");
@@ -172,9 +178,9 @@ std::vector<TorqueConstants> fe_gamma(const CaseSpec& spec, const ActuatorOption
     if (options.progress)
       options.progress->note("orientation " + std::to_string(out.size() + 1) + " of " +
                              std::to_string(orientations.size()) + " (" + angles(o) + " deg)");
-    const auto run = run_case_3d(magnets_and_iron(turned(spec, options.rotor, o)), ov);
     ++n_solves;
-    out.push_back(torque_constants(coils, fe_field(*run), q));
+    out.push_back(torque_constants(
+        coils, fe_field(run_case_3d(magnets_and_iron(turned(spec, options.rotor, o)), ov)), q));
   }
   return out;
 }
@@ -231,24 +237,48 @@ FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& roto
   return [model](const std::vector<Eigen::Vector3d>& x) { return model->B(x); };
 }
 
+FieldAtPoints fe_rotor_field(const CaseSpec& spec, const std::string& rotor,
+                             const RunOverrides& overrides, std::shared_ptr<const Run3D>* run) {
+  if (const auto i = part_against_rigid_field(spec, rotor))
+    throw InputError(spec.file, spec.regions[*i].line, "regions[" + std::to_string(*i) + "]",
+                     spec.regions[*i].name + " is off the rotor '" + rotor +
+                         "' and not a sphere about the origin: the field does not turn rigidly "
+                         "with the rotor, and one FE solve in its frame cannot serve every "
+                         "orientation");
+  std::shared_ptr<const Run3D> solved = run_case_3d(magnets_and_iron(spec), overrides);
+  if (run)
+    *run = solved;
+  return fe_field(std::move(solved));
+}
+
+std::vector<Eigen::Vector3d> rotor_torque(const CaseSpec& spec, const FieldAtPoints& b_rotor,
+                                          const std::vector<Orientation>& orientations,
+                                          const CoilRule& rule) {
+  // Coils without current add nothing, and each costs its quadrature points in the field at
+  // every orientation (18 of seed 001's 20 EMs).
+  std::vector<CoilField> coils;
+  std::vector<double> current;
+  for (const auto& c : spec.geometry3d.coils)
+    if (c.current != 0) {
+      current.push_back(c.current);
+      coils.emplace_back(c);
+    }
+  std::vector<Eigen::Matrix3d> rotations;
+  for (const auto& o : orientations)
+    rotations.push_back(rotor_rotation(o));
+  const Eigen::Map<const Eigen::VectorXd> i(current.data(),
+                                            static_cast<Eigen::Index>(current.size()));
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& g : torque_constants_rotating(coils, rotations, b_rotor, rule))
+    out.push_back(-(g * i));
+  return out;
+}
+
 std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const std::string& rotor,
                                                    const std::vector<Orientation>& orientations,
                                                    const CoilRule& rule) {
   std::vector<std::string> notes;
-  std::vector<CoilField> coils;
-  Eigen::VectorXd current(static_cast<Eigen::Index>(spec.geometry3d.coils.size()));
-  for (const auto& c : spec.geometry3d.coils) {
-    current(static_cast<Eigen::Index>(coils.size())) = c.current;
-    coils.emplace_back(c);
-  }
-  std::vector<Eigen::Matrix3d> rotations;
-  for (const auto& o : orientations)
-    rotations.push_back(rotor_rotation(o));
-  std::vector<Eigen::Vector3d> out;
-  for (const auto& g :
-       torque_constants_rotating(coils, rotations, analytic_rotor_field(spec, rotor, notes), rule))
-    out.push_back(-(g * current));
-  return out;
+  return rotor_torque(spec, analytic_rotor_field(spec, rotor, notes), orientations, rule);
 }
 
 double InclinationTorque::peak_Nm() const {
@@ -258,8 +288,8 @@ double InclinationTorque::peak_Nm() const {
   return p;
 }
 
-InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
-                                          double max_deg, double step_deg) {
+InclinationTorque torque_about_y(const CaseSpec& spec, const FieldAtPoints& b_rotor, double max_deg,
+                                 double step_deg) {
   InclinationTorque c;
   std::vector<Orientation> grid;
   const int n = static_cast<int>(std::floor(max_deg / step_deg + 1e-9));
@@ -267,9 +297,15 @@ InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::strin
     c.ry_deg.push_back(step_deg * i);
     grid.push_back({0, step_deg * i, 0});
   }
-  for (const auto& t : analytic_rotor_torque(spec, rotor, grid))
+  for (const auto& t : rotor_torque(spec, b_rotor, grid))
     c.ty_Nm.push_back(t.y());
   return c;
+}
+
+InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
+                                          double max_deg, double step_deg) {
+  std::vector<std::string> notes;
+  return torque_about_y(spec, analytic_rotor_field(spec, rotor, notes), max_deg, step_deg);
 }
 
 Eigen::Matrix3d rotor_rotation(const Orientation& o) {

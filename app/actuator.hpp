@@ -24,6 +24,7 @@
 // without coil currents, once if the field turns rigidly with the rotor (every magnetic part
 // on the rotor or a sphere about the origin), else once per orientation with the rotor turned
 // (app/sweep.hpp rotate_group).
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,7 +38,9 @@
 
 namespace magfem {
 class Progress;
-}
+struct Run3D;
+struct RunOverrides;
+} // namespace magfem
 
 namespace magfem {
 
@@ -116,20 +119,38 @@ void check_actuator_case(const CaseSpec& spec, const std::string& rotor);
 FieldAtPoints analytic_rotor_field(const CaseSpec& spec, const std::string& rotor,
                                    std::vector<std::string>& notes);
 
+// The rotor's B (tesla) in its own frame by one FE solve of the case's magnets and iron
+// (coils, probes and forces left out: the coils enter only through the Lorentz torque, which
+// needs the field without their currents). Only for a field that turns rigidly with the rotor
+// (every magnetic part on the rotor, or a sphere about the origin); InputError naming the
+// rotor otherwise. The returned function holds the run; `run`, if given, receives it too (for
+// its size and timings). A point outside the meshed domain is an InputError naming `coils`.
+FieldAtPoints fe_rotor_field(const CaseSpec& spec, const std::string& rotor,
+                             const RunOverrides& overrides,
+                             std::shared_ptr<const Run3D>* run = nullptr);
+
 // Torque (N m, about the origin) on the rotor at each orientation from the case's own coil
-// currents, by the Lorentz torque in the charge model's field: minus the torque on the
-// coils, sum_k Gamma_k i_k. No check that the rotor can turn (check_actuator_case): rotors
-// that reach around the coils (seed 001's design B) are allowed.
+// currents in the rotor's field b_rotor (its own frame: analytic_rotor_field, fe_rotor_field):
+// minus the Lorentz torque on the coils, -sum_k Gamma_k i_k over the coils that carry current.
+// No check that the rotor can turn (check_actuator_case): rotors that reach around the coils
+// (seed 001's design B) are allowed.
+std::vector<Eigen::Vector3d> rotor_torque(const CaseSpec& spec, const FieldAtPoints& b_rotor,
+                                          const std::vector<Orientation>& orientations,
+                                          const CoilRule& rule = {});
+// rotor_torque in the charge model's field (analytic_rotor_field).
 std::vector<Eigen::Vector3d> analytic_rotor_torque(const CaseSpec& spec, const std::string& rotor,
                                                    const std::vector<Orientation>& orientations,
                                                    const CoilRule& rule = {});
 
-// The rotor torque about y (analytic_rotor_torque) against the inclination about y, from
-// -max_deg to max_deg in steps of step_deg (seed 001's Fig. 4 curve).
+// The rotor torque about y (rotor_torque) against the inclination about y, from -max_deg to
+// max_deg in steps of step_deg (seed 001's Fig. 4 curve).
 struct InclinationTorque {
   std::vector<double> ry_deg, ty_Nm;
   double peak_Nm() const; // max |T_y|
 };
+InclinationTorque torque_about_y(const CaseSpec& spec, const FieldAtPoints& b_rotor, double max_deg,
+                                 double step_deg);
+// torque_about_y in the charge model's field.
 InclinationTorque analytic_torque_about_y(const CaseSpec& spec, const std::string& rotor,
                                           double max_deg, double step_deg);
 
