@@ -133,10 +133,18 @@ struct Reader3D {
 // index, sign and direction (those of the uncut segment) and those wholly outside are dropped,
 // so "an array cut in half" (the thesis's hemispherical actuator array, half-size magnets at
 // the cut) is written as the whole array and the cut.
+// `cell_fraction: f` (0 < f <= 1, default 1) shrinks every segment about its cell's centre to
+// f of the cell's theta and phi extent before the cut, leaving gaps of (1 - f) of a cell
+// between neighbours: the thesis's segmented back-iron (sec. 5.4), xi / tau_m of each magnet's
+// cell behind it. Shrinking before the cut keeps a segment behind each half-size magnet at the
+// cut where the whole cell's segment would be.
 void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
-  r.allow_keys(
-      keys_with({"r_inner", "r_outer", "theta", "phi", "p_theta", "p_phi", "pattern", "cut_phi"}));
+  r.allow_keys(keys_with({"r_inner", "r_outer", "theta", "phi", "p_theta", "p_phi", "pattern",
+                          "cut_phi", "cell_fraction"}));
   const SphericalSegment whole = read_segment(r, s);
+  const double fraction = r.has("cell_fraction") ? r.at("cell_fraction").as_positive() : 1.0;
+  if (fraction > 1)
+    r.at("cell_fraction").fail("cell_fraction must be at most 1 (1 = segments fill their cells)");
   std::optional<std::pair<double, double>> cut;
   if (r.has("cut_phi")) {
     cut = read_angle_range(r.at("cut_phi"), -360, 360);
@@ -178,6 +186,7 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
   }
   const double dt = (whole.theta_max - whole.theta_min) / nt;
   const double dp = (whole.phi_max - whole.phi_min) / np;
+  int n_added = 0;
   for (int it = 1; it <= nt; ++it)
     for (int ip = 1; ip <= np; ++ip) {
       SphericalSegment seg = whole;
@@ -209,6 +218,12 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
         m.direction = place.rotation * read_direction3(per_segment[(it - 1) * np + (ip - 1)]);
         m.sign = global_sign;
       }
+      // After the magnetization: the pattern's angles are the whole cell's.
+      const double theta_margin = 0.5 * (1 - fraction) * dt, phi_margin = 0.5 * (1 - fraction) * dp;
+      seg.theta_min += theta_margin;
+      seg.theta_max -= theta_margin;
+      seg.phi_min += phi_margin;
+      seg.phi_max -= phi_margin;
       if (cut) {
         // Cuts thinner than round-off would only make slivers.
         seg.phi_min = std::max(seg.phi_min, cut->first);
@@ -217,7 +232,10 @@ void Reader3D::segment_array(const YamlNode& r, const std::string& name) {
           continue;
       }
       add(r, Part3D{spec.name, seg, place, 0, ""}, spec);
+      ++n_added;
     }
+  if (n_added == 0)
+    r.at("cut_phi").fail("the cut leaves none of the (shrunk) segments");
 }
 
 // Cylinders standing radially on a sphere (the thesis's segmented outer magnet): bases at

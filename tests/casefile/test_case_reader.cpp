@@ -229,3 +229,61 @@ mesh: {size: 5}
     }
   FAIL() << "no segment m_1_5";
 }
+
+// cell_fraction (the segmented back-iron, thesis sec. 5.4): each segment is its cell shrunk
+// about the cell's centre before the cut. At 7/9 (xi = 35 deg of 45) the iron behind magnet
+// (1, 1), centred on theta 22.5 and phi -90, spans theta 5..40 and, cut, phi -90..-72.5: a
+// shrink after the cut (about the half cell's centre -78.75) would give -87.5..-70, and one
+// about the cell's corner would not be symmetric about 22.5 in theta. Exact angles (1e-12 rad
+// is round-off of degrees to radians).
+TEST(CaseReader, SegmentArrayCellFractionShrinksEachCellAboutItsCentreBeforeTheCut) {
+  const std::string layout = R"(dimension: 3
+unit: mm
+materials:
+  iron: {kind: linear, mu_r: 4000}
+regions:
+  - {name: b, shape: segment_array, r_inner: 43, r_outer: 53, theta: [0, 180],
+     phi: [-112.5, 247.5], p_theta: 4, p_phi: 8, cut_phi: [-90, 90], material: iron,
+     cell_fraction: FRACTION}
+boundary: {type: open, radius: 100}
+mesh: {size: 5}
+)";
+  auto with = [&](const std::string& fraction) {
+    std::string text = layout;
+    text.replace(text.find("FRACTION"), 8, fraction);
+    return text;
+  };
+  const auto spec = read_case(write_case("shrunk.yaml", with("${35 / 45}")));
+  const auto& parts = spec.geometry3d.parts;
+  ASSERT_EQ(parts.size(), 20u); // still one segment behind each of the 20 (half) magnets
+  const double deg = std::numbers::pi / 180;
+  auto range = [&](const std::string& name) {
+    for (const auto& p : parts)
+      if (p.name == name)
+        return std::get<SphericalSegment>(p.shape);
+    throw std::runtime_error("no part " + name);
+  };
+  const auto corner = range("b_1_1");
+  EXPECT_NEAR(corner.theta_min, 5 * deg, 1e-12);
+  EXPECT_NEAR(corner.theta_max, 40 * deg, 1e-12);
+  EXPECT_NEAR(corner.phi_min, -90 * deg, 1e-12);
+  EXPECT_NEAR(corner.phi_max, -72.5 * deg, 1e-12);
+  const auto inner = range("b_3_3"); // theta 90..135, phi -22.5..22.5
+  EXPECT_NEAR(inner.theta_min, 95 * deg, 1e-12);
+  EXPECT_NEAR(inner.theta_max, 130 * deg, 1e-12);
+  EXPECT_NEAR(inner.phi_min, -17.5 * deg, 1e-12);
+  EXPECT_NEAR(inner.phi_max, 17.5 * deg, 1e-12);
+  EXPECT_DOUBLE_EQ(inner.r_inner, 43e-3);
+  EXPECT_DOUBLE_EQ(inner.r_outer, 53e-3);
+
+  // Out of (0, 1]: an InputError at the key's line (8) and field.
+  for (const std::string bad : {"0", "1.2", "-0.5"}) {
+    try {
+      read_case(write_case("bad_fraction.yaml", with(bad)));
+      ADD_FAILURE() << "accepted cell_fraction " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 8) << e.what();
+      EXPECT_EQ(e.field(), "regions[0].cell_fraction") << e.what();
+    }
+  }
+}
