@@ -11,7 +11,7 @@ namespace magfem {
 std::vector<CoilQuadraturePoint> torque_quadrature(const CoilField& coil, const CoilRule& rule) {
   const auto* c = std::get_if<SphericalCoil>(&coil.coil().shape);
   if (!c)
-    return coil.volume_quadrature(rule.n_r);
+    return coil.volume_quadrature(rule.n_r, rule.n_azimuth);
   const Placement& place = coil.coil().placement;
   const double j = coil.coil().turns / coil.cross_section_area();
   const QuadratureRule gr = gauss_legendre(rule.n_r, c->r_inner, c->r_outer);
