@@ -135,14 +135,15 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  turns that off.\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--resume]\n"
-     "                [--out DIR]",
+     "                [--catalogue FILE] [--out DIR]",
      "recompute the published figures and report the agreement",
      "  Runs the catalogue (share/magfem/validation/catalogue.yaml when installed) and\n"
      "  writes results.csv, results.json, report.md and report.html into DIR (default\n"
      "  out/validate). Exit 0 when nothing fails, 4 when an entry fails, 2 on bad input.\n"
      "  Finished entries are kept in DIR/.magfem-checkpoint.jsonl as they finish: after\n"
      "  Ctrl-C or kill, --resume evaluates only the rest (failed entries again) and writes\n"
-     "  the same results as an uninterrupted run.\n"},
+     "  the same results as an uninterrupted run. --catalogue FILE runs another catalogue\n"
+     "  (the same format; case paths relative to FILE).\n"},
 }};
 
 } // namespace

@@ -31,7 +31,7 @@ _magfem() {
     analytic) options="--out --model --tolerance --n-max --param --help" ;;
     compare) options="--help" ;;
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --help" ;;
-    validate) options="--tier --only --source --jobs --resume --out --help" ;;
+    validate) options="--tier --only --source --jobs --resume --catalogue --out --help" ;;
     study) options="--param --objective --rotate --axis --angles --analytic --fe --mesh-scale --order --jobs --quiet --resume --out --help" ;;
     actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --quiet --out --help" ;;
     optimize) options="--vary --maximize --minimize --rotate --axis --angles --constraint --xtol --verify-fe --mesh-scale --order --quiet --out --help" ;;
