@@ -53,7 +53,8 @@ void read_mesh_options_2d(const YamlNode& m, double s, CaseSpec& c) {
 }
 
 void read_mesh_options_3d(const YamlNode& m, double s, CaseSpec& c) {
-  m.allow_keys({"size", "chord_tolerance", "radius_edge", "gap_layers", "scale", "probe_size"});
+  m.allow_keys({"size", "chord_tolerance", "radius_edge", "gap_layers", "scale", "probe_size",
+                "shell_size"});
   auto& o = c.geometry3d.options;
   o.default_size = m.at("size").as_positive() * s;
   o.chord_tolerance = m.has("chord_tolerance") ? m.at("chord_tolerance").as_positive() * s : 5e-5;
@@ -66,6 +67,8 @@ void read_mesh_options_3d(const YamlNode& m, double s, CaseSpec& c) {
   o.size_scale = m.get_positive("scale", 1.0);
   if (m.has("probe_size"))
     o.probe_size = m.at("probe_size").as_positive() * s;
+  if (m.has("shell_size"))
+    o.shell_size = m.at("shell_size").as_positive() * s;
 }
 
 // The Krylov solver's settings (CG's preconditioner, its tolerance and iteration limit, PETSc

@@ -61,6 +61,7 @@ struct MeshOptions3D {
   int gap_layers = 3;             // minimum element layers across thin air gaps
   double size_scale = 1.0;        // multiplies every size (refinement studies)
   double probe_size = 0;          // metres: size near probe surfaces (0 = no refinement)
+  double shell_size = 0;          // metres: max size in the open-boundary shell (0 = default_size)
   // The solver will curve the elements onto spheres (order 2): a size_scale > 1 may then
   // coarsen the chord limit of spheres too (their facets are not the geometry).
   bool spheres_curved = false;

@@ -57,6 +57,8 @@ struct SizeRules {
       return std::numeric_limits<double>::infinity();
     if (label >= 0 && geo.parts[label].max_size > 0)
       return scale * geo.parts[label].max_size;
+    if (label == region_shell_3d && geo.options.shell_size > 0)
+      return scale * geo.options.shell_size;
     return scale * default_size;
   }
   // Sagitta of a triangle of edge h on a surface of curvature radius R is about h^2 / (6 R).
@@ -446,8 +448,10 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
 // keeps elements inside a part no larger than its region size even far from any surface.
 MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
                                   const SizeField3D& field) {
+  const bool open = geo.outer.kind == OuterKind3D::open;
   auto size = [&](const Vec3& x) {
-    double region = rules.region(region_background_3d);
+    double region = rules.region(open && x.norm() > geo.outer.radius ? region_shell_3d
+                                                                     : region_background_3d);
     for (std::size_t i = 0; i < geo.parts.size(); ++i)
       if (part_contains(geo.parts[i], x, 0)) {
         region = rules.region(static_cast<int>(i));
@@ -455,8 +459,7 @@ MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
       }
     return std::min(field(x), region);
   };
-  const double ball =
-      geo.outer.radius * (geo.outer.kind == OuterKind3D::open ? geo.outer.shell_ratio : 1.0);
+  const double ball = geo.outer.radius * (open ? geo.outer.shell_ratio : 1.0);
   return estimate_mesh_3d(size, ball);
 }
 

@@ -24,7 +24,7 @@ class Progress;
 struct PetscSolverOptions {
   std::string preconditioner = "boomeramg"; // boomeramg | gamg | pmg
   std::string petsc_options;                // passed to PETSc last: wins over ours
-  double relative_tolerance = 1e-12;        // |b - A x| / |b| (unpreconditioned)
+  double relative_tolerance = 1e-10;        // |b - A x| / |b| (unpreconditioned)
   int max_iterations = 20000;
   Progress* progress = nullptr; // not owned; null = silent
   // pmg: interpolation from the coarse space (rows: the system's unknowns, columns: coarse

@@ -58,7 +58,7 @@ regions:
     placement: {translate: [4, 0, 0]}
     mesh_size: 0.25
 boundary: {type: open, radius: 8}
-mesh: {size: 2}
+mesh: {size: 2, shell_size: 3}
 forces:
   - {name: on_ball, type: sphere, center: [0, 0, 2], radius: 1.5, check_radius: 1.7,
      torque_point: [0, 0, 1]}
@@ -108,6 +108,7 @@ TEST(CaseReader3D, ShapesPlacementsAndMagnetizationsArriveInSiAndTheGlobalFrame)
 
   EXPECT_DOUBLE_EQ(spec.geometry3d.outer.radius, 0.08);
   EXPECT_DOUBLE_EQ(spec.geometry3d.options.default_size, 0.02);
+  EXPECT_DOUBLE_EQ(spec.geometry3d.options.shell_size, 0.03);
   ASSERT_EQ(spec.regions[0].material->name, "pm");
   EXPECT_DOUBLE_EQ(spec.regions[0].material->B_r, 1.2);
 }
@@ -172,6 +173,7 @@ TEST(CaseReader3D, BadInputNamesTheExactLineAndFieldPath) {
       {"height: 2\n", "hieght: 2\n", 17, "regions[1].hieght"},
       {"shape: box", "shape: cube", 23, "regions[2].shape"},
       {"unit: cm", "unit: furlong", 2, "unit"},
+      {"shell_size: 3}", "shell_size: 0}", 30, "mesh.shell_size"},
   };
   for (const auto& bad : cases) {
     std::string text = case3d;
