@@ -1,0 +1,93 @@
+#include "solver/galerkin_product.hpp"
+
+#include <algorithm>
+
+#include "core/parallel_blocks.hpp"
+#include "core/thread_count.hpp"
+
+namespace magfem {
+namespace {
+
+using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// Rows [lo, hi) of P^T A P, appended to `column` / `value`, their lengths to `length`.
+struct RowBlock {
+  std::vector<int> length, column;
+  std::vector<double> value;
+};
+
+// Scratch of one thread: a dense accumulator over the coarse unknowns and the row it last
+// touched (so it is cleared by the touched list, not by a sweep of all m entries).
+struct Accumulator {
+  std::vector<double> sum;
+  std::vector<int> owner;
+  std::vector<int> touched;
+  explicit Accumulator(int m) : sum(m, 0.0), owner(m, -1) {}
+};
+
+void product_rows(const int* a_row_start, const int* a_column, const double* a_value,
+                  const RowMajor& p, const RowMajor& pt, int lo, int hi, Accumulator& acc,
+                  RowBlock& out) {
+  const int* p_start = p.outerIndexPtr();
+  const int* p_col = p.innerIndexPtr();
+  const double* p_val = p.valuePtr();
+  for (int i = lo; i < hi; ++i) {
+    acc.touched.clear();
+    for (RowMajor::InnerIterator k(pt, i); k; ++k) {
+      const int fine_row = static_cast<int>(k.col());
+      for (int e = a_row_start[fine_row]; e < a_row_start[fine_row + 1]; ++e) {
+        const double v = k.value() * a_value[e];
+        const int l = a_column[e];
+        for (int q = p_start[l]; q < p_start[l + 1]; ++q) {
+          const int j = p_col[q];
+          if (acc.owner[j] != i) {
+            acc.owner[j] = i;
+            acc.sum[j] = 0;
+            acc.touched.push_back(j);
+          }
+          acc.sum[j] += v * p_val[q];
+        }
+      }
+    }
+    std::sort(acc.touched.begin(), acc.touched.end());
+    out.length.push_back(static_cast<int>(acc.touched.size()));
+    for (int j : acc.touched) {
+      out.column.push_back(j);
+      out.value.push_back(acc.sum[j]);
+    }
+  }
+}
+
+} // namespace
+
+CsrMatrix galerkin_product(const int* a_row_start, const int* a_column, const double* a_value,
+                           const RowMajor& p, int threads) {
+  const int m = static_cast<int>(p.cols());
+  const RowMajor pt = p.transpose(); // P's columns as rows
+  constexpr std::size_t block = 2048;
+  std::vector<RowBlock> blocks(block_count(static_cast<std::size_t>(m), block));
+  if (threads <= 0)
+    threads = available_threads();
+  std::vector<Accumulator> scratch;
+  for (int t = 0; t < threads; ++t)
+    scratch.emplace_back(m);
+  parallel_blocks_by_worker(static_cast<std::size_t>(m), block, threads,
+                            [&](int worker, std::size_t b, std::size_t lo, std::size_t hi) {
+                              product_rows(a_row_start, a_column, a_value, p, pt,
+                                           static_cast<int>(lo), static_cast<int>(hi),
+                                           scratch[static_cast<std::size_t>(worker)], blocks[b]);
+                            });
+  CsrMatrix c;
+  c.rows = c.cols = m;
+  c.row_start.reserve(static_cast<std::size_t>(m) + 1);
+  c.row_start.push_back(0);
+  for (const RowBlock& b : blocks) {
+    for (int len : b.length)
+      c.row_start.push_back(c.row_start.back() + len);
+    c.column.insert(c.column.end(), b.column.begin(), b.column.end());
+    c.value.insert(c.value.end(), b.value.begin(), b.value.end());
+  }
+  return c;
+}
+
+} // namespace magfem
