@@ -450,8 +450,8 @@ MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
                                   const SizeField3D& field) {
   const bool open = geo.outer.kind == OuterKind3D::open;
   auto size = [&](const Vec3& x) {
-    double region = rules.region(open && x.norm() > geo.outer.radius ? region_shell_3d
-                                                                     : region_background_3d);
+    double region =
+        rules.region(open && x.norm() > geo.outer.radius ? region_shell_3d : region_background_3d);
     for (std::size_t i = 0; i < geo.parts.size(); ++i)
       if (part_contains(geo.parts[i], x, 0)) {
         region = rules.region(static_cast<int>(i));

@@ -313,9 +313,9 @@ struct PetscSolver::Impl {
   PetscOptions db = nullptr;
   KSP ksp = nullptr;
   Mat a = nullptr;
-  Mat p = nullptr;   // pmg's interpolation
+  Mat p = nullptr;      // pmg's interpolation
   Mat coarse = nullptr; // pmg's coarse operator P^T A P
-  Vec rhs = nullptr; // distributed mode: the assembled right-hand side
+  Vec rhs = nullptr;    // distributed mode: the assembled right-hand side
   std::unique_ptr<BlockSmootherSlot> block_smoother; // pmg with a smoother block
   std::vector<PetscInt> row_start, column, p_row_start, p_column;
   std::vector<PetscScalar> value, p_value;
