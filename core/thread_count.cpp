@@ -20,4 +20,10 @@ int available_threads() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+int element_loop_threads(std::size_t n_elements) {
+  constexpr std::size_t elements_per_thread = 20000;
+  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(available_threads()),
+                                                1 + n_elements / elements_per_thread));
+}
+
 } // namespace magfem

@@ -86,12 +86,11 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
   // Per element (volume, energy, peak |B|) on all cores, then summed in element order: the
   // same bits whatever the thread count.
   std::vector<ElementEnergy> share(mesh.n_tets());
-  const int threads =
-      static_cast<int>(std::min<std::size_t>(available_threads(), 1 + mesh.n_tets() / 20000));
-  parallel_blocks(mesh.n_tets(), 4096, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
-    for (std::size_t t = lo; t < hi; ++t)
-      share[t] = element_energy(field, t);
-  });
+  parallel_blocks(mesh.n_tets(), 4096, element_loop_threads(mesh.n_tets()),
+                  [&](std::size_t, std::size_t lo, std::size_t hi) {
+                    for (std::size_t t = lo; t < hi; ++t)
+                      share[t] = element_energy(field, t);
+                  });
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
     auto& reg = out.regions[slot_of(mesh.tet_part[t], names.size())];
     reg.volume_m3 += share[t].volume;

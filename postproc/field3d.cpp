@@ -149,9 +149,8 @@ std::vector<Eigen::Vector3d> Field3D::recovered_B(int threads) const {
   const int n = dofs_.dofs_per_element();
   std::vector<Eigen::Vector3d> sum(dofs_.n_dofs(), Eigen::Vector3d::Zero());
   std::vector<double> weight(dofs_.n_dofs(), 0.0);
-  if (threads <= 0) // all cores, one per ~20k elements at most (as the assembly)
-    threads =
-        static_cast<int>(std::min<std::size_t>(available_threads(), 1 + mesh.n_tets() / 20000));
+  if (threads <= 0)
+    threads = element_loop_threads(mesh.n_tets());
   // Per element and local DOF: vol B (3 values) and vol; each DOF summed by one thread in
   // element order, so the result does not depend on the thread count.
   parallel_element_scatter(

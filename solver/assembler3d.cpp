@@ -174,10 +174,7 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
 int Assembler3D::loop_threads() const {
   if (options_.threads > 0)
     return options_.threads;
-  // Automatic: all cores, but one thread per ~20k elements at most (below that the start-up
-  // outweighs the work).
-  const int cores = available_threads();
-  return static_cast<int>(std::min<std::size_t>(cores, 1 + problem_.mesh->n_tets() / 20000));
+  return element_loop_threads(problem_.mesh->n_tets());
 }
 
 void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,

@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "postproc/energy3d.hpp"
 #include "postproc/point_locator3d.hpp"
@@ -142,6 +144,22 @@ TEST(MagnetizedSphere, EnergyAndOpenBoundary) {
     // elements at R are 12 mm here); bounds 0.2 % and 1 %.
     EXPECT_NEAR(e.total_J / w_total, 1.0, 0.002);
     EXPECT_NEAR(e.regions[2].energy_J / w_exterior, 1.0, 0.01);
+    // The summary's per-element shares are added in element order: one thread must give the
+    // same bits as the automatic count (two or more here, on a machine with two cores).
+    EXPECT_GT(s->mesh.n_tets(), 20000u) << "too few tets for a threaded summary";
+    const char* before = std::getenv("MAGFEM_THREADS");
+    const std::string saved = before ? before : "";
+    setenv("MAGFEM_THREADS", "1", 1);
+    const EnergySummary3D serial = summarize_energy_3d(*s->field, {"magnet"});
+    if (before)
+      setenv("MAGFEM_THREADS", saved.c_str(), 1);
+    else
+      unsetenv("MAGFEM_THREADS");
+    for (std::size_t i = 0; i < e.regions.size(); ++i) {
+      EXPECT_EQ(serial.regions[i].energy_J, e.regions[i].energy_J) << e.regions[i].name;
+      EXPECT_EQ(serial.regions[i].volume_m3, e.regions[i].volume_m3) << e.regions[i].name;
+      EXPECT_EQ(serial.regions[i].peak_B_T, e.regions[i].peak_B_T) << e.regions[i].name;
+    }
     if (w_prev > 0) {
       EXPECT_NEAR(e.total_J / w_prev, 1.0, 0.001);
       EXPECT_NEAR(bz / bz_prev, 1.0, 0.001);
