@@ -67,8 +67,11 @@ void read_mesh_options_3d(const YamlNode& m, double s, CaseSpec& c) {
   o.size_scale = m.get_positive("scale", 1.0);
   if (m.has("probe_size"))
     o.probe_size = m.at("probe_size").as_positive() * s;
-  if (m.has("shell_size"))
+  if (m.has("shell_size")) {
     o.shell_size = m.at("shell_size").as_positive() * s;
+    if (c.geometry3d.outer.kind != OuterKind3D::open) // read_boundary ran first
+      m.at("shell_size").fail("shell_size needs boundary type open (there is no shell)");
+  }
 }
 
 // The Krylov solver's settings (CG's preconditioner, its tolerance and iteration limit, PETSc

@@ -174,6 +174,7 @@ TEST(CaseReader3D, BadInputNamesTheExactLineAndFieldPath) {
       {"shape: box", "shape: cube", 23, "regions[2].shape"},
       {"unit: cm", "unit: furlong", 2, "unit"},
       {"shell_size: 3}", "shell_size: 0}", 30, "mesh.shell_size"},
+      {"type: open, radius: 8}", "type: dirichlet, radius: 8}", 30, "mesh.shell_size"},
   };
   for (const auto& bad : cases) {
     std::string text = case3d;
