@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #include <tetgen.h>
@@ -388,6 +389,13 @@ void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeFi
   // Keeps the interposed terminatetetgen linked in (see tetgen_termination.cpp).
   if (!tetgen_termination_interposed)
     throw MeshError("", "", "internal: TetGen's error path is not interposed");
+  // TetGen keeps its exact-arithmetic state in globals: exactinit() sets the error bounds
+  // and the static filters of orient3d/insphere from each call's bounding box. Two meshes
+  // built at once (sweep positions, study designs on a thread pool) overwrite each other's
+  // filters, and a filter sized for a smaller box lets a wrong predicate sign through (seen:
+  // a two-thread FE sweep whose mesh, and result, differed between runs). One call at a time.
+  static std::mutex tetgen_globals;
+  const std::lock_guard<std::mutex> lock(tetgen_globals);
   try {
     const TetGenErrorScope scope;
     tetrahedralize(&b, &in, &out);

@@ -162,7 +162,7 @@ TEST(CoilPitch, BackIronLowersTheLossAtEveryPitch) {
 // Over 40..70 deg the least mean loss (no iron) is at an interior pitch, as in Fig. 5.9 (the
 // thesis: 58 deg): too small a pitch gives small coils, too large a pitch too few coils. On
 // the 7 x 7 x 7 grid (15 deg steps) the ends lie 8 % and 12 % above the minimum (measured);
-// on the thesis's 15 x 15 x 15 grid 32 % and 3.5 % (the DISABLED_ study below).
+// on the thesis's 15 x 15 x 15 grid 32 % and 3.5 % (the long-tier study below).
 TEST(CoilPitch, LeastLossIsAtAnInteriorPitch) {
   const auto grid = parse_orientations("rx=-45:15:45,ry=-45:15:45,rz=-45:15:45");
   const auto none = run_coil_pitch_study(topology_case(1, 1), options(),
@@ -177,14 +177,14 @@ TEST(CoilPitch, LeastLossIsAtAnInteriorPitch) {
 
 // The thesis's study itself (sec. 5.3.3): 31 pitches x 3375 orientations ("15 rotations about
 // each axis" over +-45 deg) for the three back-iron configurations, printed against Tables 5.4
-// and 5.5. Disabled in the default suite: about 5 min per configuration on 2 cores. Run with
-//   build/tests/app/test_app_actuator_coil_pitch --gtest_also_run_disabled_tests
-//     --gtest_filter=*DISABLED_ThesisStudy*   (one command line)
+// and 5.5. Long tier: about 5 min per configuration on 2 cores. Run with
+//   build/tests/app/test_app_actuator_coil_pitch --gtest_filter=*LongThesisStudy*
+//   (or bash scripts/test.sh --long, which runs every long check)
 // Asserted: the physics the thesis reports, not its levels (whose fill factor it does not
 // state; validation/catalogue.yaml thesis.c5.power.*): the minima lie at interior pitches,
 // the 12-coil range holds them as in Table 5.4 (58-60 deg), and the decreases of Table 5.5
 // (32 % / 66 %) are met within its 10 % tolerance (paper_targets D).
-TEST(CoilPitch, DISABLED_ThesisStudy) {
+TEST(CoilPitch, LongThesisStudy) {
   const double s = 90.0 / 14;
   std::vector<Orientation> grid;
   for (int i = 0; i < 15; ++i)

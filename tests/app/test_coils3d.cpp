@@ -311,9 +311,8 @@ TEST(Coils3D, RacetrackIsReadInMetresInItsOwnFrame) {
 // magnet is small beside force x radius, and there the spheres differ by ~7 %, so the torques
 // must balance within that difference plus 1 % (measured: 0.4 % force, 3.4 % torque apart).
 // At mesh scale 2.5 the Lorentz torque falls just outside the spheres' spread.
-// Outside the default suite (65 s on an idle 2-core machine, twice that loaded): run with
-// --gtest_also_run_disabled_tests.
-TEST(Coils3D, DISABLED_RacetrackAndMagnetForcesAndTorquesBalance) {
+// Long tier (65 s on an idle 2-core machine, twice that loaded): bash scripts/test.sh --long.
+TEST(Coils3D, LongRacetrackAndMagnetForcesAndTorquesBalance) {
   RunOverrides coarse;
   coarse.mesh_scale = 1.6;
   auto run =

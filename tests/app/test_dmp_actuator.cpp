@@ -137,9 +137,9 @@ TEST(DmpActuator, FeTorqueEqualsChargeModel) {
 // torque (the reaction; in air of mu_r 1 the pair's own field exerts no net torque on it),
 // here with a converged coil quadrature (16 x 16 x 32: the 4 x 4 x 8 rule of before was 0.6 % off
 // design A's converged torque at 10 deg). Tolerance 1 %: two meshes, each a few tenths of a
-// percent from the charge model. Disabled (about 30 s: the coils' source field over the whole
-// mesh); run with --gtest_also_run_disabled_tests.
-TEST(DmpActuator, DISABLED_FeWithCoilSourcesGivesTheReaction) {
+// percent from the charge model. About 30 s (the coils' source field over the whole mesh),
+// so in the long tier (bash scripts/test.sh --long).
+TEST(DmpActuator, LongFeWithCoilSourcesGivesTheReaction) {
   const CaseSpec two = two_magnets_of_design_b();
   CoilRule converged;
   converged.n_r = 16;

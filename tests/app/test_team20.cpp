@@ -6,7 +6,7 @@
 // order 1 and mesh scale 2 (~230k tetrahedra: the 1 mm slot and 1.5 mm gap need small
 // elements; the example's own order 2 mesh is far larger and was not run); that is ~3
 // minutes per level on 2 busy cores, so it is not in the default suite:
-//   build/tests/app/test_app_team20 --gtest_also_run_disabled_tests
+//   bash scripts/test.sh --long   (or: ctest --test-dir build -R Team20 -L long)
 // Measured at this resolution (FE vs measured; 160-210 s per level on 2 shared cores):
 //   AT    F_z N           Bz(P1) T        Bz(P2) T
 //   1000  8.80 / 8.1 +8.6%  0.323 / 0.36  0.263 / 0.24
@@ -69,7 +69,7 @@ const ProbeTable& probe(const Run3D& run, const std::string& name) {
 // B at P1 (gap centre) is smooth and published codes match it within a few %: 10 %.
 // B at P2 sits under the pole's edge where B jumps; every published code is 5-15 % off the
 // measurement there (reference README), so 15 %.
-TEST(Team20, DISABLED_ForceAndFluxDensityAgainstMeasurementAtEveryLevel) {
+TEST(Team20, LongForceAndFluxDensityAgainstMeasurementAtEveryLevel) {
   const auto base = read_case(test::example("3d/team20.yaml"));
   ASSERT_EQ(base.geometry3d.coils.size(), 1u);
   const double turns = base.geometry3d.coils[0].turns;

@@ -492,9 +492,9 @@ TEST(Mesher2D, BadInputThrowsMeshErrorNamingThePart) {
   expect_mesh_error([&] { build_mesh_2d(g); }, "", "default_size");
 }
 
-// Speed figure (run with --gtest_also_run_disabled_tests): about 50k triangles. CPU time is
+// Speed figure (long tier: bash scripts/test.sh --long): about 50k triangles. CPU time is
 // asserted because the wall time depends on what else the shared machine runs.
-TEST(Mesher2D, DISABLED_Benchmark50kTriangles) {
+TEST(Mesher2D, LongBenchmark50kTriangles) {
   Geometry2D g = base_geometry(OuterKind::open, 20 * mm);
   g.options.default_size = 0.5 * mm;
   g.parts.push_back({"magnet", Disk{Vec2::Zero(), 10 * mm}, 0});

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Measures the accuracy that example files claim in their comments, against the exact or
+# independent answer, and writes docs/example_accuracy.md with the commit it ran on. The
+# claims in the examples quote this file; rerun it when the mesher or the solver changes.
+#   bash scripts/example_accuracy.sh            (needs a build: bash scripts/build.sh)
+# About 2 min on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+magfem=build/magfem
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+doc=docs/example_accuracy.md
+commit=$(git rev-parse --short=12 HEAD)
+dirty=$(git diff --quiet HEAD -- . ':!docs' && echo "" || echo " (with uncommitted changes)")
+
+# sweep.csv columns: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz. Prints a table row per angle and the largest
+# difference of any torque and any force component as % of the analytic peak |T| and |F|.
+compare_sweeps() { # fe.csv analytic.csv
+  paste -d, "$1" "$2" | awk -F, '
+    NR == 1 { next }
+    { n++; a[n] = $1; for (k = 2; k <= 7; k++) { fe[n, k] = $k; an[n, k] = $(k + 7) }
+      for (k = 2; k <= 4; k++) if ((v = ($(k + 7) < 0 ? -$(k + 7) : $(k + 7))) > pt) pt = v
+      for (k = 5; k <= 7; k++) if ((v = ($(k + 7) < 0 ? -$(k + 7) : $(k + 7))) > pf) pf = v }
+    END {
+      print "| angle (deg) | T_y FE (N m) | T_y charge model (N m) | F FE (N) | F charge model (N) |"
+      print "|---|---|---|---|---|"
+      for (i = 1; i <= n; i++) {
+        printf "| %g | %.4f | %.4f | (%.2f, %.2f, %.2f) | (%.2f, %.2f, %.2f) |\n", a[i], fe[i, 3],
+          an[i, 3], fe[i, 5], fe[i, 6], fe[i, 7], an[i, 5], an[i, 6], an[i, 7]
+        for (k = 2; k <= 4; k++) { d = fe[i, k] - an[i, k]; if (d < 0) d = -d; if (d > dt) dt = d }
+        for (k = 5; k <= 7; k++) { d = fe[i, k] - an[i, k]; if (d < 0) d = -d; if (d > df) df = d }
+      }
+      printf "\nLargest difference: torque %.2f %% of the peak %.3f N m, force %.2f %% of the peak %.1f N.\n",
+        100 * dt / pt, pt, 100 * df / pf, pf
+    }'
+}
+
+{
+  echo "# Example accuracy"
+  echo
+  echo "Produced by \`bash scripts/example_accuracy.sh\` on commit $commit$dirty, $(date -u +%Y-%m-%d)."
+  echo "Do not edit by hand: the example files quote these figures."
+  echo
+  echo "## examples/3d/compensator_table42.yaml"
+  echo
+  echo "FE (\`magfem sweep --rotate outer --axis y --angles 0,60,90\`, the example's own mesh)"
+  echo "against the charge model (\`--analytic\`, exact for these uniformly magnetized bodies)."
+  echo
+} > "$out/doc.md"
+
+case=examples/3d/compensator_table42.yaml
+start=$(date +%s)
+$magfem sweep "$case" --rotate outer --axis y --angles 0,60,90 --out "$out/fe" > "$out/fe.log"
+end=$(date +%s)
+$magfem sweep "$case" --rotate outer --axis y --angles 0,60,90 --analytic --out "$out/an" > /dev/null
+unknowns=$(grep -m1 '"unknowns"' "$out/fe/summary.json" | sed 's/.*: *//; s/,$//' || true)
+compare_sweeps "$out/fe/sweep.csv" "$out/an/sweep.csv" >> "$out/doc.md"
+echo >> "$out/doc.md"
+echo "FE sweep: $((end - start)) s wall on $(nproc) cores${unknowns:+, $unknowns unknowns per position}." >> "$out/doc.md"
+
+mv "$out/doc.md" "$doc"
+cat "$doc"
