@@ -239,7 +239,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
     names.push_back(r.name);
   run->energy = summarize_energy_3d(*run->field, names);
   const PointLocator3D locator(run->mesh);
-  run->recovered_B = run->field->recovered_B();
+  run->recovered_B = RecoveredB3D(*run->field);
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(
         sample_probe_3d(*run->field, locator, probe, run->spec.length_unit, &run->recovered_B));
@@ -247,7 +247,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   for (auto& f : coil_lorentz_forces(*run))
     run->forces.push_back(f);
   run->coil_results = compute_coil_results(*run, assembler, u);
-  check_finite(run->recovered_B, "recovered flux density");
+  check_finite(run->recovered_B.values(), "recovered flux density");
   check_finite(run->energy.total_J, "magnetic energy");
   check_forces_finite(run->forces);
   run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
@@ -272,7 +272,8 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
       material_of_part.push_back(it->second);
     }
     write_vtu(stage.path_for("solution.vtu").string(),
-              make_vtu_3d(*run.field, run.recovered_B, material_of_part, 0, material_names));
+              make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0,
+                          material_names));
   }
   nlohmann::ordered_json j;
   add_provenance(j);

@@ -12,6 +12,7 @@
 #include "mesh/mesh_estimate3d.hpp"
 #include "postproc/energy3d.hpp"
 #include "postproc/field3d.hpp"
+#include "postproc/recovered_b3d.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/dof_map3d.hpp"
 #include "solver/problem3d.hpp"
@@ -29,7 +30,7 @@ struct Run3D {
   std::unique_ptr<Field3D> field;
   NewtonReport report;
   EnergySummary3D energy;
-  std::vector<Eigen::Vector3d> recovered_B; // nodal B (Field3D::recovered_B), computed once
+  RecoveredB3D recovered_B; // nodal B per region, computed once (probes, VTU)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
   CoilResults coil_results;

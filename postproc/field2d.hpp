@@ -26,7 +26,9 @@ public:
   Eigen::Vector2d H(std::size_t t, const Eigen::Vector2d& x, const Eigen::Vector2d& b) const;
   Eigen::Vector2d point(std::size_t t, const std::array<double, 3>& bary) const;
 
-  // Area-weighted average of the element B values at every DOF point (shell excluded).
+  // Area-weighted average of the element B values at every DOF point (shell excluded), over
+  // all regions at the DOF: it mixes materials at their boundaries (B_t jumps by mu_r), so it
+  // is for VTU point data only; probes read the element field (probes2d.hpp).
   std::vector<Eigen::Vector2d> recovered_B() const;
 
 private:

@@ -1,11 +1,8 @@
 #include "postproc/field3d.hpp"
 
-#include <algorithm>
-#include <thread>
+#include <utility>
 
 #include "core/constants.hpp"
-#include "core/parallel_scatter.hpp"
-#include "core/thread_count.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -142,46 +139,6 @@ Eigen::Vector3d Field3D::B_of_H(std::size_t t, const Eigen::Vector3d& x,
 
 Eigen::Vector3d Field3D::B(std::size_t t, const std::array<double, 4>& bary) const {
   return B_of_H(t, point(t, bary), H(t, bary));
-}
-
-std::vector<Eigen::Vector3d> Field3D::recovered_B(int threads) const {
-  const auto& mesh = *problem_.mesh;
-  const int n = dofs_.dofs_per_element();
-  std::vector<Eigen::Vector3d> sum(dofs_.n_dofs(), Eigen::Vector3d::Zero());
-  std::vector<double> weight(dofs_.n_dofs(), 0.0);
-  if (threads <= 0)
-    threads = element_loop_threads(mesh.n_tets());
-  // Per element and local DOF: vol B (3 values) and vol; each DOF summed by one thread in
-  // element order, so the result does not depend on the thread count.
-  parallel_element_scatter(
-      mesh.n_tets(), 4 * n, sum.size(), threads,
-      [&](std::size_t t, double* out) {
-        if (problem_.is_shell(t))
-          return;
-        const auto& tet = mesh.tets[t];
-        const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]],
-                                           mesh.nodes[tet[2]], mesh.nodes[tet[3]])
-                               .volume;
-        for (int i = 0; i < n; ++i) {
-          const Eigen::Vector3d b = vol * B_at_node(t, i);
-          out[4 * i] = b.x(), out[4 * i + 1] = b.y(), out[4 * i + 2] = b.z();
-          out[4 * i + 3] = vol;
-        }
-      },
-      [&](std::size_t t, const double* v, std::size_t lo, std::size_t hi) {
-        if (problem_.is_shell(t))
-          return;
-        const int* dof = dofs_.element_dofs(t);
-        for (int i = 0; i < n; ++i)
-          if (static_cast<std::size_t>(dof[i]) >= lo && static_cast<std::size_t>(dof[i]) < hi) {
-            sum[dof[i]] += Eigen::Vector3d(v[4 * i], v[4 * i + 1], v[4 * i + 2]);
-            weight[dof[i]] += v[4 * i + 3];
-          }
-      });
-  for (std::size_t i = 0; i < sum.size(); ++i)
-    if (weight[i] > 0)
-      sum[i] /= weight[i];
-  return sum;
 }
 
 Eigen::Vector3d Field3D::interpolate(const std::vector<Eigen::Vector3d>& nodal, std::size_t t,

@@ -1,9 +1,9 @@
 #pragma once
 // The solved 3D field: the scalar potential phi at every DOF, evaluated per element as the FE
-// solution itself (H = -grad phi and B = mu H + B_r m_hat are discontinuous across elements)
-// or recovered at the DOF nodes by volume-weighted averaging (smooth, for plots, VTU point
-// data and probes that want a continuous field). Shell tets (mapped exterior) are not
-// physical space: B and H there are not evaluated by the recovery, the locator skips them.
+// solution itself (H = -grad phi and B = mu H + B_r m_hat are discontinuous across elements).
+// The smooth recovered B (per region, for probes and VTU point data) is RecoveredB3D
+// (recovered_b3d.hpp). Shell tets (mapped exterior) are not physical space: B and H there are
+// not evaluated by the recovery, the locator skips them.
 #include <array>
 #include <vector>
 
@@ -49,12 +49,8 @@ public:
   int shape_gradients(std::size_t t, const std::array<double, 4>& bary,
                       std::array<Eigen::Vector3d, 10>& grad, Eigen::Vector3d& x) const;
 
-  // Volume-weighted average of the element B values at every DOF point (shell excluded;
-  // DOFs touched only by the shell get zero). Computed once and cached by the caller.
-  // `threads` (0 = all cores): the result is the serial one bit for bit whatever the count.
-  std::vector<Eigen::Vector3d> recovered_B(int threads = 0) const;
-  // Interpolates nodal values (one per DOF, e.g. recovered_B()) at a point of tet t with the
-  // element's shape functions.
+  // Interpolates nodal values (one per DOF) at a point of tet t with the element's shape
+  // functions. The recovered B (one value per DOF and region) is RecoveredB3D's.
   Eigen::Vector3d interpolate(const std::vector<Eigen::Vector3d>& nodal, std::size_t t,
                               const std::array<double, 4>& bary) const;
 

@@ -27,8 +27,9 @@ std::string where(const Eigen::Vector3d& x) {
 }
 
 // Volume-weighted average of the element B at every DOF over the air tets only: B jumps
-// across magnet and iron surfaces (tangentially), and Field3D::recovered_B, which averages
-// over all tets, smears that jump into the first layer of air elements.
+// across magnet and iron surfaces (tangentially), and an average over all tets smears that
+// jump into the first layer of air elements. Unlike RecoveredB3D (per region), all air regions
+// (and coils, mu_r 1) are one here, and the coils' known free-space field is taken out first.
 std::vector<Eigen::Vector3d> air_recovered_B(const Field3D& field) {
   const DofMap3D& dofs = field.dofs();
   const Problem3D& problem = field.problem();

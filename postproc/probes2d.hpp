@@ -6,7 +6,9 @@
 //   line:   r,z,Br,Bz
 //   circle: angle_deg,r,z,Br,Bz,Brho,Btheta
 // Coordinates in the case's length unit, B in tesla. Values are the FE field of the element
-// containing the point.
+// containing the point, never the nodal average of Field2D::recovered_B, which mixes the
+// materials at region boundaries (tests/postproc/test_thin_plate2d.cpp). A point on a boundary
+// is read in the triangle PointLocator2D::locate returns.
 #include "postproc/field2d.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probe_spec.hpp"

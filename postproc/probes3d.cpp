@@ -55,32 +55,33 @@ std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe) {
 
 ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
                            const ProbeSpec& probe, double length_unit,
-                           const std::vector<Eigen::Vector3d>* recovered_B) {
+                           const RecoveredB3D* recovered) {
   const std::vector<Eigen::Vector3d> pts = probe_points_3d(probe);
   ProbeTable table;
   table.name = probe.name;
   const bool sphere = probe.kind == ProbeSpec::Kind::sphere;
   if (sphere)
-    table.columns = {"theta_deg", "phi_deg", "x",    "y",      "z",   "Bx",
-                     "By",        "Bz",      "Brho", "Btheta", "Bphi"};
+    table.columns = {"theta_deg", "phi_deg", "x",    "y",      "z",    "Bx",
+                     "By",        "Bz",      "Brho", "Btheta", "Bphi", "region_id"};
   else
-    table.columns = {"x", "y", "z", "Bx", "By", "Bz"};
+    table.columns = {"x", "y", "z", "Bx", "By", "Bz", "region_id"};
   const std::vector<SpherePoint> s = sphere ? sphere_samples(probe) : std::vector<SpherePoint>{};
   table.rows.reserve(pts.size());
   for (std::size_t k = 0; k < pts.size(); ++k) {
     const auto loc = locator.locate(pts[k]);
     if (!loc)
       throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
-    const Eigen::Vector3d b = recovered_B ? field.interpolate(*recovered_B, loc->tet, loc->bary)
-                                          : field.B(loc->tet, loc->bary);
+    const Eigen::Vector3d b =
+        recovered ? recovered->at(loc->tet, loc->bary) : field.B(loc->tet, loc->bary);
+    const double region = field.problem().mesh->tet_part[loc->tet];
     const Eigen::Vector3d x = pts[k] / length_unit;
     if (!sphere) {
-      table.rows.push_back({x.x(), x.y(), x.z(), b.x(), b.y(), b.z()});
+      table.rows.push_back({x.x(), x.y(), x.z(), b.x(), b.y(), b.z(), region});
       continue;
     }
     table.rows.push_back({s[k].theta * rad_to_deg, s[k].phi * rad_to_deg, x.x(), x.y(), x.z(),
                           b.x(), b.y(), b.z(), b.dot(s[k].e_rho), b.dot(s[k].e_theta),
-                          b.dot(s[k].e_phi)});
+                          b.dot(s[k].e_phi), region});
   }
   return table;
 }

@@ -1,20 +1,25 @@
 #pragma once
 // Sampling of the 3D field on line, point-list and sphere-patch probes. CSV contract (other
-// tools read it):
-//   line, points: x,y,z,Bx,By,Bz
-//   sphere:       theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi
+// tools read it; columns are only ever added at the end):
+//   line, points: x,y,z,Bx,By,Bz,region_id
+//   sphere:       theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi,region_id
 // Sphere patch: theta polar from +z, phi azimuth from +x, both about probe.center; theta_steps
 // x phi_steps samples over the inclusive ranges, theta the outer loop. Brho, Btheta, Bphi are
 // the components along the local spherical unit vectors. Coordinates in the case's length
-// unit, B in tesla.
-// B is the FE field of the tet containing the point, or, if `recovered_B` is given (one value
-// per DOF, Field3D::recovered_B()), that nodal field interpolated in the tet.
+// unit, B in tesla. region_id: the region the point was read in (the mesh tet_part of its
+// tet: the index of the case's region, -1 for background air), as the VTU's region_id.
+// B is the FE field of the tet containing the point, or, if `recovered` is given, the
+// recovered B of that tet's region (RecoveredB3D: never averaged across materials).
+// A point on a region boundary lies in tets of both sides: it is read in the one
+// PointLocator3D::locate returns (the first containing tet of its bucket), and region_id says
+// which; move the point off the boundary to choose.
 #include <vector>
 
 #include "postproc/field3d.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probe_spec.hpp"
 #include "postproc/probe_table.hpp"
+#include "postproc/recovered_b3d.hpp"
 
 namespace magfem {
 
@@ -22,7 +27,7 @@ namespace magfem {
 // std::invalid_argument for a 2D-only probe kind (circle).
 ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
                            const ProbeSpec& probe, double length_unit,
-                           const std::vector<Eigen::Vector3d>* recovered_B = nullptr);
+                           const RecoveredB3D* recovered = nullptr);
 
 // The sample points of a probe in metres, in CSV row order.
 std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe);

@@ -13,8 +13,8 @@
 namespace magfem {
 
 // material_of_part: index into material_names for every part; background air uses
-// air_material. recovered_B: Field3D::recovered_B() (computed by the caller, who usually
-// needs it for probes too).
+// air_material. recovered_B: one value per DOF, RecoveredB3D::dof_average() (mixed across
+// regions at their boundaries: point data can hold one value a point; the cell data do not mix).
 VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& recovered_B,
                     const std::vector<int>& material_of_part, int air_material,
                     const std::vector<std::string>& material_names);

@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   std::printf("curved tets %zu, peak memory %.0f MB\n", s->dofs->n_curved(),
               usage.ru_maxrss / 1024.0);
   const PointLocator3D locator(s->mesh);
-  const auto rec = s->field->recovered_B();
+  const RecoveredB3D rec(*s->field);
   for (double r_mm : {6.0, 12.0}) {
     const ProbeSpec p = sphere_probe(r_mm * test::mm, 37);
     std::printf("r = %.0f mm:\n", r_mm);

@@ -19,6 +19,7 @@
 #include "postproc/field3d.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
+#include "postproc/recovered_b3d.hpp"
 #include "postproc/vtu_export3d.hpp"
 
 namespace magfem {
@@ -87,7 +88,7 @@ TEST(Field3D, P2FieldAndRecoveryAreExactForQuadraticPotential) {
     EXPECT_LT((box.field->B(loc->tet, loc->bary) - mu0 * h_exact(x)).norm(), 1e-9 * mu0 * scale);
   }
   // B is linear per element, so averaging exact nodal values is exact.
-  const auto rec = box.field->recovered_B();
+  const auto rec = RecoveredB3D(*box.field).dof_average();
   for (int d = 0; d < box.dofs->n_dofs(); d += 17)
     EXPECT_LT((rec[d] - mu0 * h_exact(box.dofs->dof_points()[d])).norm(), 1e-9 * mu0 * scale);
   EXPECT_FALSE(locator.locate(Eigen::Vector3d(6, 0, 0) * mm).has_value());
@@ -110,6 +111,43 @@ TEST(Field3D, MaterialLawsAndMagnetization) {
   }
 }
 
+// Magnet (z < 0), iron (mu_r 10, z > 0, x < 0) and air: with the quadratic potential, H is
+// continuous and the element B linear and continuous inside each region, but B jumps across
+// the region boundaries (mu_r, remanence). Recovery per region reproduces it at every point,
+// next to the boundaries too; a point on a boundary is read in its tet's region.
+TEST(RecoveredB3D, ExactPerRegionForFieldsLinearInEachRegion) {
+  BoxField box(2, true);
+  const RecoveredB3D rec(*box.field);
+  const PointLocator3D locator(box.mesh);
+  std::size_t boundary_dofs = 0, slots = 0;
+  for (int d = 0; d < box.dofs->n_dofs(); ++d) {
+    EXPECT_GE(rec.n_regions_at(d), 1);
+    boundary_dofs += rec.n_regions_at(d) > 1;
+    slots += rec.n_regions_at(d);
+  }
+  EXPECT_GT(boundary_dofs, 0u);
+  EXPECT_EQ(rec.n_slots(), slots);
+  const double scale = 1e4 * mu0 * 10; // |B| in the iron, T
+  for (double z : {-4.9, -0.3, -1e-9, 0.0, 1e-9, 0.2, 3.3})
+    for (double x : {-4.1, -0.25, 0.0, 0.25, 2.2}) {
+      const Eigen::Vector3d p = Eigen::Vector3d(x, 0.37 * x + 0.1, z) * mm;
+      const auto loc = locator.locate(p);
+      ASSERT_TRUE(loc.has_value());
+      EXPECT_LT((rec.at(loc->tet, loc->bary) - box.field->B(loc->tet, loc->bary)).norm(),
+                1e-9 * scale)
+          << "at (" << x << ", " << z << ") mm, region " << box.mesh.tet_part[loc->tet];
+    }
+  // One value a DOF (VTU point data): a DOF inside a region keeps that region's value; the
+  // regions are averaged only where they meet.
+  const auto avg = rec.dof_average();
+  for (std::size_t t = 0; t < box.mesh.n_tets(); ++t)
+    for (int i = 0; i < box.dofs->dofs_per_element(); ++i)
+      if (const int d = box.dofs->element_dofs(t)[i]; rec.n_regions_at(d) == 1) {
+        EXPECT_EQ(avg[d], rec.value(d, box.mesh.tet_part[t]));
+      }
+  EXPECT_THROW(rec.value(0, 7), std::out_of_range);
+}
+
 TEST(Probes3D, CsvContractsAndSphericalComponents) {
   BoxField box(2);
   const PointLocator3D locator(box.mesh);
@@ -126,7 +164,7 @@ TEST(Probes3D, CsvContractsAndSphericalComponents) {
   sphere.phi_steps = 4;
   const ProbeTable t = sample_probe_3d(*box.field, locator, sphere, mm);
   EXPECT_EQ(t.to_csv().substr(0, t.to_csv().find('\n')),
-            "theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi");
+            "theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi,region_id");
   ASSERT_EQ(t.rows.size(), 20u);
   // theta outer loop, phi inner loop, inclusive ranges
   EXPECT_DOUBLE_EQ(t.rows[0][0], 10);
@@ -156,7 +194,8 @@ TEST(Probes3D, CsvContractsAndSphericalComponents) {
   line.end = Eigen::Vector3d(4, 2, 0) * mm;
   line.points = 5;
   const ProbeTable tl = sample_probe_3d(*box.field, locator, line, mm);
-  EXPECT_EQ(tl.columns, (std::vector<std::string>{"x", "y", "z", "Bx", "By", "Bz"}));
+  EXPECT_EQ(tl.columns, (std::vector<std::string>{"x", "y", "z", "Bx", "By", "Bz", "region_id"}));
+  EXPECT_EQ(tl.rows[0][6], 0); // the box is one region, part 0
   ASSERT_EQ(tl.rows.size(), 5u);
   EXPECT_DOUBLE_EQ(tl.rows[4][1], 2);
   EXPECT_DOUBLE_EQ(tl.rows[2][0], 0);
@@ -165,7 +204,7 @@ TEST(Probes3D, CsvContractsAndSphericalComponents) {
   pts.name = "p";
   pts.kind = ProbeSpec::Kind::points;
   pts.point_list = {Eigen::Vector3d(1, 2, 3) * mm, Eigen::Vector3d(-1, 0, 4) * mm};
-  const auto rec = box.field->recovered_B();
+  const RecoveredB3D rec(*box.field);
   const ProbeTable tp = sample_probe_3d(*box.field, locator, pts, mm, &rec);
   ASSERT_EQ(tp.rows.size(), 2u);
   for (int k = 0; k < 3; ++k)
@@ -199,7 +238,7 @@ TEST(Energy3D, UniformFieldEnergyPerRegion) {
 
 TEST(VtuExport3D, QuadraticTetsWithAllArrays) {
   BoxField box(2, true);
-  const auto rec = box.field->recovered_B();
+  const auto rec = RecoveredB3D(*box.field).dof_average();
   const VtuGrid g = make_vtu_3d(*box.field, rec, {0, 1}, 2, {"magnet", "iron", "air"});
   EXPECT_EQ(g.points.size(), static_cast<std::size_t>(box.dofs->n_dofs()));
   EXPECT_EQ(g.cell_types.size(), box.mesh.n_tets());

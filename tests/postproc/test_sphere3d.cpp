@@ -40,7 +40,7 @@ ProbeError sphere_probe_error(const test::SphereSolution& s, double r, const Exa
   p.phi_max = 2 * pi;
   p.theta_steps = 19;
   p.phi_steps = 24;
-  const auto rec = recovered ? s.field->recovered_B() : std::vector<Eigen::Vector3d>{};
+  const RecoveredB3D rec = recovered ? RecoveredB3D(*s.field) : RecoveredB3D();
   const ProbeTable t = sample_probe_3d(*s.field, locator, p, 1.0, recovered ? &rec : nullptr);
   double se = 0, sr = 0, me = 0, mr = 0;
   for (const auto& row : t.rows) {

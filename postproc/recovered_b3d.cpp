@@ -1,0 +1,146 @@
+#include "postproc/recovered_b3d.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "core/parallel_scatter.hpp"
+#include "core/thread_count.hpp"
+#include "solver/tet_lagrange.hpp"
+
+namespace magfem {
+
+namespace {
+constexpr int no_part = std::numeric_limits<int>::min(); // tet_part values are >= -2
+} // namespace
+
+void RecoveredB3D::build_slots(const Problem3D& problem) {
+  const Mesh3D& mesh = *mesh_;
+  const int n = dofs_->dofs_per_element();
+  // The region of the first tet at each DOF, and (DOF, region) for every tet of another
+  // region: only region-boundary DOFs add pairs, so this stays small next to the mesh.
+  std::vector<int> first_part(dofs_->n_dofs(), no_part);
+  std::vector<std::pair<int, int>> others;
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
+    if (problem.is_shell(t))
+      continue;
+    const int part = mesh.tet_part[t];
+    const int* dof = dofs_->element_dofs(t);
+    for (int i = 0; i < n; ++i) {
+      int& p = first_part[dof[i]];
+      if (p == no_part)
+        p = part;
+      else if (p != part)
+        others.emplace_back(dof[i], part);
+    }
+  }
+  std::sort(others.begin(), others.end());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  first_.assign(first_part.size() + 1, 0);
+  part_.clear();
+  part_.reserve(first_part.size() + others.size());
+  std::size_t k = 0;
+  for (std::size_t d = 0; d < first_part.size(); ++d) {
+    if (first_part[d] != no_part)
+      part_.push_back(first_part[d]);
+    for (; k < others.size() && others[k].first == static_cast<int>(d); ++k)
+      part_.push_back(others[k].second);
+    first_[d + 1] = static_cast<int>(part_.size());
+  }
+}
+
+RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
+    : mesh_(field.problem().mesh), dofs_(&field.dofs()) {
+  const Problem3D& problem = field.problem();
+  const Mesh3D& mesh = *mesh_;
+  build_slots(problem);
+  const int n = dofs_->dofs_per_element();
+  b_.assign(part_.size(), Eigen::Vector3d::Zero());
+  weight_.assign(part_.size(), 0.0);
+  if (threads <= 0)
+    threads = element_loop_threads(mesh.n_tets());
+  // Per element and local DOF: vol B (3 values), vol and the slot (exact as a double). Each
+  // slot is summed by one thread in element order: the result does not depend on the count.
+  parallel_element_scatter(
+      mesh.n_tets(), 5 * n, b_.size(), threads,
+      [&](std::size_t t, double* out) {
+        if (problem.is_shell(t))
+          return;
+        const auto& tet = mesh.tets[t];
+        const double vol = TetGeometry::of(mesh.nodes[tet[0]], mesh.nodes[tet[1]],
+                                           mesh.nodes[tet[2]], mesh.nodes[tet[3]])
+                               .volume;
+        const int* dof = dofs_->element_dofs(t);
+        for (int i = 0; i < n; ++i) {
+          const Eigen::Vector3d b = vol * field.B_at_node(t, i);
+          double* o = out + 5 * i;
+          o[0] = b.x(), o[1] = b.y(), o[2] = b.z(), o[3] = vol;
+          o[4] = slot(dof[i], mesh.tet_part[t]);
+        }
+      },
+      [&](std::size_t t, const double* v, std::size_t lo, std::size_t hi) {
+        if (problem.is_shell(t))
+          return;
+        for (int i = 0; i < n; ++i) {
+          const double* o = v + 5 * i;
+          const auto s = static_cast<std::size_t>(o[4]);
+          if (s >= lo && s < hi) {
+            b_[s] += Eigen::Vector3d(o[0], o[1], o[2]);
+            weight_[s] += o[3];
+          }
+        }
+      });
+  for (std::size_t s = 0; s < b_.size(); ++s)
+    b_[s] /= weight_[s]; // every slot has a tet of positive volume
+}
+
+int RecoveredB3D::slot(int dof, int part) const {
+  for (int s = first_[dof]; s < first_[dof + 1]; ++s)
+    if (part_[s] == part)
+      return s;
+  return -1;
+}
+
+const Eigen::Vector3d& RecoveredB3D::value(int dof, int part) const {
+  const int s = slot(dof, part);
+  if (s < 0)
+    throw std::out_of_range("recovered B: region " + std::to_string(part) + " does not touch DOF " +
+                            std::to_string(dof));
+  return b_[s];
+}
+
+Eigen::Vector3d RecoveredB3D::at(std::size_t t, const std::array<double, 4>& bary) const {
+  std::array<double, 10> n{};
+  const int count = tet_values(dofs_->order(), bary, n.data());
+  const int* dof = dofs_->element_dofs(t);
+  const int part = mesh_->tet_part[t];
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i)
+    v += n[i] * value(dof[i], part);
+  return v;
+}
+
+std::vector<Eigen::Vector3d> RecoveredB3D::dof_average() const {
+  if (first_.empty())
+    return {};
+  std::vector<Eigen::Vector3d> out(first_.size() - 1, Eigen::Vector3d::Zero());
+  for (std::size_t d = 0; d < out.size(); ++d) {
+    const int lo = first_[d], hi = first_[d + 1];
+    if (hi - lo == 1) {
+      out[d] = b_[lo];
+      continue;
+    }
+    double w = 0;
+    for (int s = lo; s < hi; ++s) {
+      out[d] += weight_[s] * b_[s];
+      w += weight_[s];
+    }
+    if (w > 0)
+      out[d] /= w;
+  }
+  return out;
+}
+
+} // namespace magfem
