@@ -135,3 +135,76 @@ TEST(NewtonJacobian, NewtonConvergesQuadraticallyPicardOnlyLinearly) {
   // Both reach the same field: the tangent changes the path, not the answer.
   EXPECT_LT((up - u).norm(), 1e-6 * u.norm());
 }
+
+// A system on which full Newton steps diverge: r_i(u) = atan(u_i - a_i), the gradient of the
+// convex energy sum_i F(u_i - a_i), F(x) = x atan(x) - ln(1 + x^2) / 2, with the exact
+// solution u = a. From u = 0 Newton on atan diverges when |a_i| > 1.3917 (x_{k+1} =
+// x_k - (1 + x_k^2) atan(x_k) overshoots ever further). The iron problems of this file do
+// not show it: with the bundled B-H curves, full Newton steps from zero or from a far start
+// (+-10x, 100x the solution) converged on every square case tried (steel_1010, pure_iron,
+// 1e5..1e7 A/m^2), so only a system built for it can tell a working line search from none.
+// Written as internal(u) - external with external = atan(a), so load_norm is |atan(a)|.
+class AtanSystem : public NonlinearSystem {
+public:
+  explicit AtanSystem(Eigen::VectorXd a) : a_(std::move(a)) {}
+  int n_unknowns() const override { return static_cast<int>(a_.size()); }
+  bool is_linear() const override { return false; }
+  void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
+                Eigen::SparseMatrix<double>* matrix, TangentKind) const override {
+    const Eigen::ArrayXd x = (u - a_).array();
+    residual = x.atan().matrix();
+    if (matrix) {
+      // Both tangent kinds get the exact derivative 1 / (1 + x^2): only Newton is tested.
+      matrix->resize(n_unknowns(), n_unknowns());
+      std::vector<Eigen::Triplet<double>> t;
+      for (int i = 0; i < n_unknowns(); ++i)
+        t.emplace_back(i, i, 1 / (1 + x[i] * x[i]));
+      matrix->setFromTriplets(t.begin(), t.end());
+    }
+  }
+  double load_norm() const override { return a_.array().atan().matrix().norm(); }
+
+private:
+  Eigen::VectorXd a_;
+};
+
+// Without the line search the iterates run away (after 6 full steps the largest is ~1e20 and
+// the next tangent is singular in double precision: 1 / (1 + x^2) underflows), so the
+// residual grows at every step;
+// with it Newton reaches the exact solution u = a to the residual tolerance (|r| = |u - a| to
+// first order, so 1e-9 relative residual means u within 1e-8 of a) and ends with full steps.
+// A line search that accepts any step (always alpha = 1, or its merit test inverted) fails.
+TEST(NewtonJacobian, LineSearchRescuesNewtonWhereFullStepsDiverge) {
+  const Eigen::VectorXd a = Eigen::Vector3d(2.0, -3.0, 5.0);
+  const AtanSystem system(a);
+  NewtonOptions options;
+  options.line_search = false;
+  options.max_iterations = 6;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(3);
+  const NewtonReport full = solve_nonlinear(system, u, options);
+  EXPECT_FALSE(full.converged);
+  const auto& h = full.residual_history;
+  for (std::size_t k = 1; k < h.size(); ++k)
+    EXPECT_GT(h[k], h[k - 1]) << "iteration " << k;
+
+  options.max_iterations = NewtonOptions{}.max_iterations;
+
+  options.line_search = true;
+  u.setZero();
+  NewtonReport damped;
+  try {
+    damped = solve_nonlinear(system, u, options);
+  } catch (const std::exception& e) { // a singular tangent: the iterates ran away
+    FAIL() << "Newton with the line search ran away: " << e.what();
+  }
+  std::printf("with line search: %d iterations, steps:", damped.iterations);
+  for (double s : damped.step_lengths)
+    std::printf(" %.3g", s);
+  std::printf("\n");
+  ASSERT_TRUE(damped.converged) << damped.message;
+  EXPECT_LE(damped.residual_history.back(), options.residual_tol);
+  EXPECT_LT((u - a).norm(), 1e-8 * a.norm());
+  EXPECT_LT(damped.step_lengths.front(), 1.0); // the search did cut the first step
+  EXPECT_EQ(damped.step_lengths.back(), 1.0);  // and Newton ends with full steps
+  EXPECT_LE(damped.iterations, 20);
+}
