@@ -61,10 +61,9 @@ void product_rows(const int* a_row_start, const int* a_column, const double* a_v
 } // namespace
 
 CsrMatrix galerkin_product(const int* a_row_start, const int* a_column, const double* a_value,
-                           const RowMajor& p, int threads) {
+                           const RowMajor& p, int threads, std::size_t block) {
   const int m = static_cast<int>(p.cols());
   const RowMajor pt = p.transpose(); // P's columns as rows
-  constexpr std::size_t block = 2048;
   std::vector<RowBlock> blocks(block_count(static_cast<std::size_t>(m), block));
   if (threads <= 0)
     threads = available_threads();

@@ -5,6 +5,7 @@
 // every fine row of P has one or two entries, so row I of A_c only gathers the fine rows that
 // P's column I touches. Each row is summed alone in a fixed order: the same bits whatever the
 // thread count.
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -19,9 +20,14 @@ struct CsrMatrix {
   std::vector<double> value;
 };
 
+// Coarse rows per block of work (a thread's unit; the result does not depend on it).
+inline constexpr std::size_t galerkin_block_rows = 2048;
+
 // A: the whole (both triangles) n x n matrix in CSR, n = p.rows(). P: n x m, compressed.
-// threads: 0 = all cores. Returns P^T A P (m x m) with sorted columns.
+// threads: 0 = all cores. block_rows > 0 (a parameter so that tests can cut small problems
+// into many blocks). Returns P^T A P (m x m) with sorted columns.
 CsrMatrix galerkin_product(const int* a_row_start, const int* a_column, const double* a_value,
-                           const Eigen::SparseMatrix<double, Eigen::RowMajor>& p, int threads = 0);
+                           const Eigen::SparseMatrix<double, Eigen::RowMajor>& p, int threads = 0,
+                           std::size_t block_rows = galerkin_block_rows);
 
 } // namespace magfem

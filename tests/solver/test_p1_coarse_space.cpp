@@ -105,6 +105,61 @@ TEST(P1CoarseSpace, RowWiseGalerkinProductIsEigensAndIndependentOfThreads) {
   }
 }
 
+// The row-wise product as an Eigen matrix, after checking its CSR shape: m + 1 row starts from
+// 0 to the number of entries, columns in range and strictly increasing within each row.
+Eigen::SparseMatrix<double> checked_csr(const CsrMatrix& c) {
+  EXPECT_EQ(c.row_start.size(), static_cast<std::size_t>(c.rows) + 1);
+  EXPECT_EQ(c.row_start.front(), 0);
+  EXPECT_EQ(static_cast<std::size_t>(c.row_start.back()), c.column.size());
+  EXPECT_EQ(c.column.size(), c.value.size());
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < c.rows && i + 1 < static_cast<int>(c.row_start.size()); ++i)
+    for (int k = c.row_start[i]; k < c.row_start[i + 1]; ++k) {
+      EXPECT_TRUE(c.column[k] >= 0 && c.column[k] < c.cols) << "row " << i;
+      if (k > c.row_start[i]) {
+        EXPECT_LT(c.column[k - 1], c.column[k]) << "row " << i;
+      }
+      t.emplace_back(i, c.column[k], c.value[k]);
+    }
+  Eigen::SparseMatrix<double> m(c.rows, c.cols);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+// The product is cut into blocks of galerkin_block_rows (2048) coarse rows, and the test above
+// has 124 coarse rows: one block. Here a Neumann box of 13^3 cells has 14^3 - 1 = 2743 coarse
+// rows, so the default runs two blocks, the second one partial (695 rows), and smaller blocks
+// cut it into many (1, 100, 999 rows; 4096 is one block again). Every variant must equal
+// Eigen's P^T A P to 1e-13 of the largest entry (only the summation order differs) and give
+// the same bits as the default: each row is summed alone, so the blocks change nothing. A
+// block whose last rows are dropped, or rows written at a wrong offset, fails both.
+TEST(P1CoarseSpace, RowWiseGalerkinProductOverManyBlocksIsEigens) {
+  const Box box(13, 2, OuterKind3D::neumann);
+  const DofMap3D dofs(box.mesh, 2);
+  const Assembler3D a(box.problem, dofs);
+  const auto p = p1_prolongation(dofs, a.dof_to_equation());
+  ASSERT_GT(static_cast<std::size_t>(p.cols()), galerkin_block_rows);
+  ASSERT_NE(p.cols() % static_cast<int>(galerkin_block_rows), 0); // a partial last block
+  Eigen::SparseMatrix<double, Eigen::RowMajor> full = full_tangent(a);
+  full.makeCompressed();
+  const Eigen::SparseMatrix<double> eigen = p.transpose() * full * p;
+  const double scale = eigen.coeffs().cwiseAbs().maxCoeff();
+  const CsrMatrix ours =
+      galerkin_product(full.outerIndexPtr(), full.innerIndexPtr(), full.valuePtr(), p, 2);
+  ASSERT_EQ(ours.rows, eigen.rows());
+  ASSERT_EQ(ours.cols, eigen.cols());
+  const Eigen::SparseMatrix<double> difference = checked_csr(ours) - eigen;
+  EXPECT_LT(difference.coeffs().cwiseAbs().maxCoeff(), 1e-13 * scale);
+  for (const std::size_t block :
+       {std::size_t{1}, std::size_t{100}, std::size_t{999}, std::size_t{4096}}) {
+    const CsrMatrix other =
+        galerkin_product(full.outerIndexPtr(), full.innerIndexPtr(), full.valuePtr(), p, 2, block);
+    EXPECT_EQ(other.row_start, ours.row_start) << "block " << block;
+    EXPECT_EQ(other.column, ours.column) << "block " << block;
+    EXPECT_EQ(other.value, ours.value) << "block " << block;
+  }
+}
+
 // A linear potential is in P1: its coarse vector, prolonged, is the P2 interpolant (vertex and
 // midpoint values of the same linear function), exactly.
 TEST(P1CoarseSpace, ProlongationInterpolatesLinearPotentials) {
