@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 #include <Eigen/Cholesky>
 #include <Eigen/SVD>
@@ -11,6 +12,9 @@ namespace magfem {
 
 Commutation commutate(const TorqueConstants& gamma, const Eigen::VectorXd& resistance_ohm,
                       const Eigen::Vector3d& torque_Nm) {
+  if (resistance_ohm.size() != gamma.cols() || !(resistance_ohm.array() > 0).all() ||
+      !resistance_ohm.allFinite())
+    throw std::invalid_argument("commutate: one positive resistance per coil expected");
   Commutation c;
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(gamma);
   const auto& s = svd.singularValues();
@@ -26,11 +30,13 @@ Commutation commutate(const TorqueConstants& gamma, const Eigen::VectorXd& resis
     c.warning = buf;
     return c;
   }
-  // Eq. 5.4 as written: Gamma Gamma^T is 3 x 3 and symmetric positive definite here, and its
-  // condition (cond(Gamma)^2 <= 1e12) leaves at least four significant digits.
-  const Eigen::Matrix3d g = gamma * gamma.transpose();
+  // Eq. 5.4 weighted by the resistances (Lagrange: 2 R i = Gamma^T lambda): Gamma R^-1
+  // Gamma^T is 3 x 3 and symmetric positive definite here, and its condition
+  // (cond(Gamma)^2 max(R) / min(R)) leaves several significant digits for any real winding.
+  const Eigen::VectorXd conductance = resistance_ohm.cwiseInverse();
+  const Eigen::Matrix3d g = gamma * conductance.asDiagonal() * gamma.transpose();
   const Eigen::Vector3d y = g.llt().solve(torque_Nm);
-  c.currents = gamma.transpose() * y;
+  c.currents = conductance.asDiagonal() * (gamma.transpose() * y);
   c.power_W = (resistance_ohm.array() * c.currents.array().square()).sum();
   c.peak_A = c.currents.cwiseAbs().maxCoeff();
   c.ok = true;

@@ -1,10 +1,12 @@
 #pragma once
 // Commutation of a multi-coil actuator (thesis eq. 5.4): the coil currents that produce a
-// demanded torque T_d with the least sum of squared currents,
-//   i = Gamma^T (Gamma Gamma^T)^-1 T_d,
-// Gamma being the 3 x n matrix of torque constants (N m per ampere of each coil). Among all
-// solutions of Gamma i = T_d this has the smallest two-norm; with equal resistances it also
-// has the least copper loss (the thesis's criterion), which is reported as sum R_k i_k^2.
+// demanded torque T_d with the least copper loss P = sum R_k i_k^2 (the thesis's criterion),
+//   i = R^-1 Gamma^T (Gamma R^-1 Gamma^T)^-1 T_d,
+// Gamma being the 3 x n matrix of torque constants (N m per ampere of each coil) and R the
+// diagonal of coil resistances. With equal resistances R cancels and this is eq. 5.4 as the
+// thesis writes it, i = Gamma^T (Gamma Gamma^T)^-1 T_d, the least two-norm solution; coils
+// of different size or winding have different resistances, and then the least-norm currents
+// cost more than the least loss.
 #include <string>
 
 #include <Eigen/Core>
@@ -28,7 +30,8 @@ struct Commutation {
   std::string warning; // why the currents are missing
 };
 
-// resistance_ohm: one per coil (Gamma's columns).
+// resistance_ohm: one per coil (Gamma's columns), each > 0; throws std::invalid_argument
+// otherwise.
 Commutation commutate(const TorqueConstants& gamma, const Eigen::VectorXd& resistance_ohm,
                       const Eigen::Vector3d& torque_Nm);
 

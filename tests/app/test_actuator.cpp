@@ -99,6 +99,61 @@ TEST(Actuator, CommutatedCurrentsProduceTheDemandWithTheLeastNorm) {
   EXPECT_GT(bad.condition, max_condition);
 }
 
+// Coils of unequal resistance (ratio 10 here): the currents of least copper loss
+// P = sum R_k i_k^2 subject to Gamma i = T_d. Checked three ways, each to round-off (1e-10 of
+// the scale; the 3 x 3 systems have condition below 1e4): against the closed form
+// i = R^-1 Gamma^T (Gamma R^-1 Gamma^T)^-1 T_d computed here by a different route (the KKT
+// system [2 R, Gamma^T; Gamma, 0] [i; lambda] = [0; T_d], full-pivot LU); by the optimality
+// condition that R i is orthogonal to the null space of Gamma; and by perturbations along
+// that null space (other solutions), which all raise P. The reported power is sum R_k i_k^2,
+// and the unweighted least-norm currents (eq. 5.4 as if the resistances were equal) cost
+// measurably more. Ignoring R, weighting by 1/R instead of R, or a power without R fail it.
+TEST(Actuator, CommutationWithUnequalResistancesHasTheLeastCopperLoss) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const int n = 12;
+  TorqueConstants g(3, n);
+  Eigen::VectorXd res(n);
+  for (int c = 0; c < n; ++c) {
+    for (int r = 0; r < 3; ++r)
+      g(r, c) = 0.05 * u(rng);
+    res(c) = 0.2 * std::pow(10.0, 0.5 * (1 + u(rng))); // 0.2 .. 2 ohm
+  }
+  const Eigen::Vector3d t(0.4, -0.2, 1.0);
+  const Commutation c = commutate(g, res, t);
+  ASSERT_TRUE(c.ok) << c.warning;
+  const Eigen::VectorXd& i = c.currents;
+  auto power = [&](const Eigen::VectorXd& x) { return (res.array() * x.array().square()).sum(); };
+  EXPECT_LT((g * i - t).norm(), 1e-12 * t.norm());
+  EXPECT_NEAR(c.power_W, power(i), 1e-12 * power(i));
+  EXPECT_DOUBLE_EQ(c.peak_A, i.cwiseAbs().maxCoeff());
+
+  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + 3, n + 3);
+  kkt.topLeftCorner(n, n) = 2 * res.asDiagonal();
+  kkt.topRightCorner(n, 3) = g.transpose();
+  kkt.bottomLeftCorner(3, n) = g;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 3);
+  rhs.tail(3) = t;
+  const Eigen::VectorXd least = kkt.fullPivLu().solve(rhs).head(n);
+  EXPECT_LT((i - least).norm(), 1e-10 * least.norm());
+
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(g, Eigen::ComputeFullV);
+  const Eigen::MatrixXd null = svd.matrixV().rightCols(n - 3);
+  const Eigen::VectorXd ri = res.asDiagonal() * i;
+  EXPECT_LT((null.transpose() * ri).norm(), 1e-10 * ri.norm());
+  for (int k = 0; k < n - 3; ++k)
+    for (double step : {-0.1, 0.1}) {
+      const Eigen::VectorXd other = i + step * i.norm() * null.col(k);
+      EXPECT_LT((g * other - t).norm(), 1e-12 * t.norm());      // another solution ...
+      EXPECT_GT(power(other), power(i)) << "null vector " << k; // ... never cheaper
+    }
+
+  const Eigen::VectorXd least_norm =
+      g.transpose() * (Eigen::Matrix3d(g * g.transpose())).llt().solve(t);
+  std::printf("copper loss: least-loss %.4f W, least-norm %.4f W\n", power(i), power(least_norm));
+  EXPECT_GT(power(least_norm), 1.05 * power(i));
+}
+
 // The hemispherical array is antisymmetric under a half turn about x (theta -> 180 - theta,
 // phi -> -phi maps every segment onto one of opposite sign and the iron sphere onto itself),
 // so turning the rotor by another 180 deg about x negates every torque constant:
