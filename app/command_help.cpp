@@ -115,8 +115,9 @@ constexpr std::array<CommandHelp, 8> commands{{
      "torque constants, commutated currents and copper loss of a multi-coil actuator",
      "  For every rotor orientation: the torque constants Gamma (3 x coils, N m/A: the\n"
      "  Lorentz torque about the origin of each coil at 1 A in the field of the magnets\n"
-     "  and iron), the currents i = Gamma^T (Gamma Gamma^T)^-1 T_d (thesis eq. 5.4, least\n"
-     "  two-norm), the copper loss sum R_k i_k^2, the peak current and cond(Gamma).\n"
+     "  and iron), the currents of least copper loss i = R^-1 Gamma^T (Gamma R^-1 Gamma^T)^-1\n"
+     "  T_d (thesis eq. 5.4 weighted by the coil resistances R; the least two-norm for equal\n"
+     "  coils), the copper loss sum R_k i_k^2, the peak current and cond(Gamma).\n"
      "  SPEC: rx=A,ry=B,rz=C, each START:STEP:END, a number or a list (degrees; a missing\n"
      "  axis is 0), or a CSV with the header rx_deg,ry_deg,rz_deg. The rotor turns by rx\n"
      "  about the fixed x axis, then ry about y, then rz about z: R = Rz Ry Rx.\n"
