@@ -1,8 +1,11 @@
 #include "app/actuator_plot.hpp"
 
+#include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "app/gnuplot.hpp"
@@ -15,6 +18,25 @@ double angle(const Orientation& o, int axis) {
 }
 
 } // namespace
+
+std::vector<PowerMapCell> power_map_cells(const ActuatorResult& r, std::size_t demand, int ax,
+                                          int ay) {
+  std::map<std::pair<double, double>, PowerMapCell> cells;
+  for (std::size_t i = 0; i < r.orientations.size(); ++i) {
+    const auto& o = r.orientations[i];
+    const std::pair<double, double> key{angle(o, ax), ay >= 0 ? angle(o, ay) : 0.0};
+    auto& cell = cells[key];
+    cell.x_deg = key.first;
+    cell.y_deg = key.second;
+    const auto& c = r.demands[demand].commutations[i];
+    if (c.ok && !(c.power_W <= cell.worst_W)) // NaN (none yet) or larger
+      cell.worst_W = c.power_W;
+  }
+  std::vector<PowerMapCell> out;
+  for (const auto& [key, cell] : cells)
+    out.push_back(cell);
+  return out;
+}
 
 bool plot_power_map(const ActuatorResult& r, const std::string& title,
                     const std::filesystem::path& png, std::string& why) {
@@ -40,52 +62,65 @@ bool plot_power_map(const ActuatorResult& r, const std::string& title,
   if (!gnuplot_available(why))
     return false;
   const bool map2d = distinct[ay].size() >= 2;
+  const int third = 3 - ax - ay;
+  const bool third_varies = map2d && distinct[third].size() >= 2;
   const char* names[3] = {"rx (deg)", "ry (deg)", "rz (deg)"};
+  const char* short_names[3] = {"rx", "ry", "rz"};
   const auto script = std::filesystem::path(png).replace_extension(".gp");
   std::vector<std::filesystem::path> data;
   {
     std::ofstream g(script);
     const std::string safe_title = gnuplot_title(title);
     const std::size_t n = r.demands.size();
-    g << "set terminal png size " << 520 * n + 80 << ",480 noenhanced\n"
+    g << "set terminal png size " << 560 * n + 80 << ",500 noenhanced\n"
       << "set output '" << png.string() << "'\n"
       << "set multiplot layout 1," << n << " title \"" << safe_title << "\"\n"
-      << "set xlabel '" << names[ax] << "'\n";
+      << "set xlabel '" << names[ax] << "'\nset datafile missing 'nan'\n";
     if (map2d)
-      g << "set ylabel '" << names[ay] << "'\nset view map\nset cblabel 'P (W)'\n"
-        << "set datafile missing 'nan'\n";
+      g << "set ylabel '" << names[ay] << "'\nset cblabel 'P (W)"
+        << (third_varies ? std::string(", worst over ") + short_names[third] : std::string())
+        << "'\nset key below\nset size ratio -1\n";
     else
-      g << "set ylabel 'P (W)'\nset grid\n";
+      g << "set ylabel 'P (W)'\nset grid\nset key below\n";
     for (std::size_t d = 0; d < n; ++d) {
-      // Mean over the remaining axis of every (ax, ay) cell; gaps where none is usable.
-      std::map<std::pair<double, double>, std::pair<double, int>> cells;
-      for (std::size_t i = 0; i < r.orientations.size(); ++i) {
-        const auto& o = r.orientations[i];
-        auto& cell = cells[{angle(o, ax), map2d ? angle(o, ay) : 0.0}];
-        const auto& c = r.demands[d].commutations[i];
-        if (c.ok)
-          cell.first += c.power_W, ++cell.second;
-      }
+      const auto cells = power_map_cells(r, d, ax, map2d ? ay : -1);
       data.push_back(std::filesystem::path(png).replace_extension(".d" + std::to_string(d)));
-      std::ofstream f(data.back());
-      double last_x = cells.empty() ? 0 : cells.begin()->first.first;
-      for (const auto& [key, v] : cells) {
-        if (map2d && key.first != last_x)
-          f << '\n'; // gnuplot grid rows
-        last_x = key.first;
-        f << key.first << ' ' << key.second << ' ';
-        if (v.second > 0)
-          f << v.first / v.second << '\n';
-        else
-          f << "nan\n";
+      const PowerMapCell* worst = nullptr;
+      {
+        std::ofstream f(data.back());
+        f.precision(10);
+        double last_x = cells.empty() ? 0 : cells.front().x_deg;
+        for (const auto& c : cells) {
+          if (map2d && c.x_deg != last_x)
+            f << '\n'; // gnuplot grid rows
+          last_x = c.x_deg;
+          f << c.x_deg << ' ' << c.y_deg << ' ';
+          if (std::isnan(c.worst_W))
+            f << "nan\n";
+          else
+            f << c.worst_W << '\n';
+          if (!std::isnan(c.worst_W) && (!worst || c.worst_W > worst->worst_W))
+            worst = &c;
+        }
       }
       const std::string label = r.demands[d].name;
+      g << "set title '" << label << "'\n";
+      std::ostringstream mark;
+      if (worst) {
+        mark << ", '-' u 1:2 w p pt 6 ps 3 lw 2 lc 'black' t 'worst: " << std::setprecision(4)
+             << worst->worst_W << " W at " << short_names[ax] << " " << worst->x_deg;
+        if (map2d)
+          mark << ", " << short_names[ay] << " " << worst->y_deg;
+        mark << "'";
+      }
+      // `with image`: one rectangle per orientation in its own colour (pm3d would colour each
+      // tile with the mean of its four corners and hide the peak).
       if (map2d)
-        g << "set title '" << label << "'\nsplot '" << data.back().string()
-          << "' u 1:2:3 w pm3d notitle\n";
+        g << "plot '" << data.back().string() << "' u 1:2:3 w image notitle" << mark.str() << "\n";
       else
-        g << "set title '" << label << "'\nplot '" << data.back().string()
-          << "' u 1:3 w lp notitle\n";
+        g << "plot '" << data.back().string() << "' u 1:3 w lp notitle" << mark.str() << "\n";
+      if (worst)
+        g << worst->x_deg << ' ' << (map2d ? worst->y_deg : worst->worst_W) << "\ne\n";
     }
     g << "unset multiplot\n";
   }

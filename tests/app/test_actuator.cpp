@@ -24,6 +24,7 @@
 #include <Eigen/SVD>
 
 #include "app/actuator.hpp"
+#include "app/actuator_plot.hpp"
 #include "app/sweep.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
@@ -387,4 +388,30 @@ TEST(Actuator, FeTorqueConstantsAndVerificationOnASmallActuator) {
   std::printf("verify: demanded (%.4g, %.4g, %.4g), produced (%.4g, %.4g, %.4g) N m\n", demand.x(),
               demand.y(), demand.z(), p.x(), p.y(), p.z());
   EXPECT_LT((p - demand).norm(), 0.02 * demand.norm());
+}
+
+// power_map.png shows each orientation as its own cell with the worst loss over the third
+// angle: a 2 x 1 grid over rx with two rz values each, one orientation ill-conditioned. A mean
+// (what the map drew before, and what gnuplot's pm3d does between corners) would show 55 W
+// where the worst orientation needs 100 W.
+TEST(Actuator, PowerMapCellsHoldTheWorstOrientation) {
+  ActuatorResult r;
+  r.orientations = {{0, 0, 0}, {0, 0, 10}, {15, 0, 0}, {15, 0, 10}};
+  ActuatorDemand d;
+  d.name = "P_x";
+  for (double p : {10.0, 100.0, 20.0, -1.0}) {
+    Commutation c;
+    c.ok = p >= 0;
+    c.power_W = p;
+    d.commutations.push_back(c);
+  }
+  r.demands = {d};
+  const auto cells = power_map_cells(r, 0, 0, 1); // rx across, ry up; rz is the third angle
+  ASSERT_EQ(cells.size(), 2u);
+  EXPECT_EQ(cells[0].x_deg, 0);
+  EXPECT_EQ(cells[0].worst_W, 100.0);
+  EXPECT_EQ(cells[1].x_deg, 15);
+  EXPECT_EQ(cells[1].worst_W, 20.0); // the ill-conditioned orientation is not a zero
+  r.demands[0].commutations[2].ok = false;
+  EXPECT_TRUE(std::isnan(power_map_cells(r, 0, 0, 1)[1].worst_W)); // a gap, not 0 W
 }
