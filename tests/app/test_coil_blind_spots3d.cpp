@@ -114,8 +114,9 @@ double extrapolated_neumann_inductance(const CoilField& coil) {
 // slowly (order ~1.5, 1/r singularity): L(12) is 0.5 % low; extrapolated, measured 0.1 % from
 // the FE value (which is at the quadrature level: no iron, the magnet has mu_r 1). The
 // extrapolation's own spread (orders 1 to 2) is 0.5 %: tolerance 1 %.
-// Planted bugs caught: the straight sections dropped from the source field; one corner arc
-// with its current reversed (see the report of issue 30).
+// Planted bugs caught (sources/coil_field.cpp): the straight sections dropped from the source
+// field (stress + Lorentz 51 % of |F|, L -73 %); one corner arc's current reversed (24 %,
+// L -23 %).
 TEST(CoilBlindSpots3D, RacetrackForcesBalanceAndInductanceMatchesNeumann) {
   const auto spec = read_case(test::write_temp_case("blind_racetrack.yaml", racetrack_case));
   RunOverrides coarse;
@@ -212,8 +213,10 @@ std::unique_ptr<Run3D> run_rod_3d(double current, int order) {
 // but once the relative residual is below 1e-2 the tangent's 2 mu' H H^T term makes it
 // quadratic: measured 2-3 more iterations to 1e-12. A secant (Picard) tangent contracts
 // linearly and needs many more: at most 4 allowed.
-// Planted bugs caught: the coil's source potential left out of the total-potential (iron)
-// region; its sign flipped; the dmu/dH term of the Newton tangent dropped.
+// Planted bugs caught (solver/assembler3d.cpp): the coil's source potential left out of the
+// total-potential (iron) region (linkage +27 %, B up to 67 % of the peak); its sign flipped
+// (likewise); the 2 mu' H H^T term of the Newton tangent dropped, or halved (no convergence in
+// the 40 iterations allowed: run_case_3d throws).
 TEST(CoilBlindSpots3D, CoilAroundASaturatingRodAgreesWithTheAxisymmetricSolver) {
   constexpr double current = 3;
   const auto fe3 = run_rod_3d(current, 2);
@@ -269,8 +272,11 @@ TEST(CoilBlindSpots3D, CoilAroundASaturatingRodAgreesWithTheAxisymmetricSolver) 
 // At 3 A the rod saturates, so the differential inductance is clearly below the secant
 // lambda / I (measured 16 % below); a code returning the secant (or the tangent without its
 // mu' term) fails the 10 % required.
-// Planted bugs caught: the mu' term dropped from the post-processing's tangent permeability;
-// the sensitivity solved with the Picard (secant) tangent.
+// Planted bugs caught: the mu' term dropped from the post-processing's tangent permeability
+// (postproc/coil_linkage3d.cpp: L_diff 5 times too large); the sensitivity solved with the
+// Picard tangent (solver/current_sensitivity3d.cpp: -51 %); the total regions' K Phi_s left out
+// of dr/dI (Assembler3D::current_derivative: 8 times too large); the secant lambda / I
+// returned as the inductance (+19 %, and not below the secant).
 TEST(CoilBlindSpots3D, DifferentialInductanceInSaturatedIronIsTheLinkageDerivative) {
   constexpr double current = 3, step = 0.01 * current;
   const auto low = run_rod_3d(current - step, 1);
@@ -354,9 +360,13 @@ solver: {order: 2}
 // region's interpolated source potential against the exact one in the linkage; tolerance
 // 5e-4), and the inductance equals the axisymmetric solver's (measured -0.26 % at this coarse
 // mesh, -0.2 to -1.2 % at sizes 6 to 12 mm: tolerance 2 %).
-// Planted bugs caught: the shell's source load without |det J| J^-1; the source table in
-// shell tets sampled at the mesh point instead of the mapped one; the shell energy without
-// |det J|.
+// Planted bugs caught: the shell's source load without |det J| J^-1 (Assembler3D::
+// element_source: W +1.9 %, B near the shell 15-26 % off, W / (lambda I / 2) +3 %, iron-core L
+// -2.7 %; L and lambda in air stay exact, the reciprocity integral being stationary); the
+// source table in shell tets sampled at the mesh point instead of the mapped one (everything
+// wrong by orders of magnitude); the shell energy without |det J| (W -7 %, the identity -19 %)
+// or without J^-1 (air: -7e-5, unseen; the iron identity: 330 times); the shell linkage or
+// inductance without |det J| (-7 %).
 TEST(CoilBlindSpots3D, CoilFieldReachingTheShellKeepsEnergyAndLinkageExact) {
   const auto air =
       run_case_3d(read_case(test::write_temp_case("blind_shell_air.yaml", shell_case("air"))));
