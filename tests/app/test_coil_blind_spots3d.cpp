@@ -197,15 +197,16 @@ probes:
 }
 
 std::unique_ptr<Run3D> run_rod_3d(double current, int order) {
-  return run_case_3d(
-      read_case(test::write_temp_case("blind_rod3d.yaml", rod_case_3d(current, order))));
+  // A file per order and current: ctest may run the tests of this file at once.
+  const std::string name = format("blind_rod3d_p%g_%.4fA.yaml", order, current);
+  return run_case_3d(read_case(test::write_temp_case(name, rod_case_3d(current, order))));
 }
 
 } // namespace
 
 // The 3D two-potential solver against the axisymmetric one on the same rod and coil (3 A:
 // peak |B| in the rod ~1.7 T). Measured at this coarse 3D mesh (23k P2 unknowns, ~10 s):
-// linkage 0.7 %, B on the axis 2.3 % of the peak inside the rod and 1.4 % in air; at 116k
+// linkage 0.7 %, B on the axis 2.2 % of the peak inside the rod and 0.14 % in air; at 116k
 // unknowns 0.01 % and < 0.4 %, so the difference is the 3D discretisation. Tolerances 2 % for
 // the linkage and 4 % of the peak for B (about 3 times the measured). The point z = 8 mm (on
 // the rod's end face, where the element B jumps) is left out.
