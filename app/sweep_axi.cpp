@@ -28,26 +28,53 @@ struct Translate {
   }
 };
 
-// The Lorentz request that yields the force on the group: on its current regions, or on the
-// others' (then `reversed`).
+bool carries_current(const RegionSpec& r) {
+  return r.current_density != 0 || r.ampere_turns != 0;
+}
+
+bool in_group(const CaseSpec& spec, const std::string& region, const std::string& group) {
+  for (const auto& r : spec.regions)
+    if (r.name == region)
+      return r.group == group;
+  return false;
+}
+
+// The request that yields the force on the group, in this order: the Lorentz force on its
+// current regions; the Lorentz force on the others' (then `reversed`: the group feels the
+// reaction); the case's own `contour` force on a region of the group (a magnet or iron over a
+// plate: the stress tensor on the revolved box around it, which moves with it, at the case's
+// margin). Otherwise bad input that says which force entry to add.
 ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reversed) {
   ForceSpec f;
   f.name = "sweep";
   f.kind = ForceSpec::Kind::lorentz;
   std::vector<std::string> others;
   for (const auto& r : spec.regions) {
-    if (r.current_density == 0 && r.ampere_turns == 0)
+    if (!carries_current(r))
       continue;
     (r.group == group ? f.regions : others).push_back(r.name);
   }
-  reversed = f.regions.empty();
+  reversed = f.regions.empty() && !others.empty();
   if (reversed)
     f.regions = others;
-  if (f.regions.empty())
+  if (!f.regions.empty())
+    return f;
+  std::vector<const ForceSpec*> contours;
+  for (const auto& c : spec.forces)
+    if (c.kind == ForceSpec::Kind::contour && in_group(spec, c.regions.front(), group))
+      contours.push_back(&c);
+  if (contours.size() == 1)
+    return *contours.front();
+  if (contours.empty())
     throw InputError(cli, 0, "--move",
-                     "no region carries current: the axial sweep takes the force from the "
-                     "Lorentz force on the group's coils or on the others'");
-  return f;
+                     "no region carries current and no `contour` force of " + spec.file +
+                         " is on a region of group '" + group +
+                         "': add one, e.g. forces: [{name: F, type: contour, region: NAME, "
+                         "margin: M}] with M inside the air around it, and the sweep takes "
+                         "the stress-tensor force on it");
+  throw InputError(spec.file, contours[1]->line, "forces",
+                   "two `contour` forces are on regions of group '" + group +
+                       "' and no region carries current: keep one for the sweep");
 }
 
 AxiSweepRow solve_position(const CaseSpec& base, const AxiSweepOptions& o, double dz) {
