@@ -25,6 +25,7 @@
 #include "app/study.hpp"
 #include "app/sweep.hpp"
 #include "app/sweep_axi.hpp"
+#include "app/sweep_planar.hpp"
 #include "app/sweep_plot.hpp"
 #include "app/validate.hpp"
 #include "casefile/case_spec.hpp"
@@ -316,8 +317,10 @@ int run_sweep(const Args& args) {
   o.checkpoint = &checkpoint;
 
   magfem::SweepJobs jobs;
-  const auto rows =
-      magfem::run_sweep(spec, o, args.quiet ? magfem::SweepProgress{} : show_progress, &jobs);
+  const auto progress = args.quiet ? magfem::SweepProgress{} : show_progress;
+  const bool planar = spec.dimension == 2 && !spec.axisymmetric();
+  const auto rows = planar ? magfem::run_sweep_planar(spec, o, progress, &jobs)
+                           : magfem::run_sweep(spec, o, progress, &jobs);
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows));
   std::string why;

@@ -13,6 +13,7 @@
 #include "app/analytic_scene.hpp"
 #include "app/force3d.hpp"
 #include "app/memory_guard.hpp"
+#include "app/position_runner.hpp"
 #include "app/run3d.hpp"
 #include "app/run_checkpoint.hpp"
 #include "core/constants.hpp"
@@ -261,7 +262,7 @@ nlohmann::json row_to_json(const SweepRow& r) {
           {"force_bound", r.force_bound}};
 }
 
-SweepRow row_from_json(const nlohmann::json& j) {
+SweepRow row_from_json(const nlohmann::json& j, double /*angle_deg: stored in j*/) {
   SweepRow r;
   r.angle_deg = j.at("angle_deg").get<double>();
   for (int k = 0; k < 3; ++k)
@@ -275,19 +276,6 @@ SweepRow row_from_json(const nlohmann::json& j) {
   r.force_bound = j.at("force_bound").get<double>();
   r.ok = true;
   return r;
-}
-
-// A position from the checkpoint if an earlier run finished it, else solved (and recorded).
-SweepRow checkpointed_position(const CaseSpec& spec, const SweepOptions& o, const RunOverrides& fe,
-                               double angle_deg) {
-  const std::string key = RunCheckpoint::key_of(angle_deg);
-  if (o.checkpoint)
-    if (const auto saved = o.checkpoint->find(key))
-      return row_from_json(*saved);
-  SweepRow row = solve_position(spec, o, fe, angle_deg);
-  if (o.checkpoint && row.ok) // failed positions are tried again on --resume
-    o.checkpoint->record(key, row_to_json(row));
-  return row;
 }
 
 // Every FE position needs its own memory while it runs: with W at once they share the memory
@@ -480,25 +468,9 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   RunOverrides fe = fe_overrides(options);
   if (workers > 1 && jobs.memory_limit_mb > 0)
     fe.parallel_runs = workers, fe.shared_memory_mb = jobs.memory_limit_mb;
-  std::atomic<int> next{0};
-  int done = 0;
-  std::mutex mutex;
-  auto work = [&] {
-    for (int i; (i = next++) < total;) {
-      rows[i] = checkpointed_position(spec, options, fe, options.angles_deg[i]);
-      const std::lock_guard<std::mutex> lock(mutex);
-      ++done;
-      if (progress)
-        progress(done, total);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w)
-    pool.emplace_back(work);
-  work();
-  for (auto& t : pool)
-    t.join();
-  return rows;
+  return run_positions<SweepRow>(
+      options.angles_deg, workers, options.checkpoint, {row_to_json, row_from_json},
+      [&](double angle_deg) { return solve_position(spec, options, fe, angle_deg); }, progress);
 }
 
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options) {

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <thread>
 
+#include "app/position_runner.hpp"
 #include "app/run2d.hpp"
 #include "app/run_checkpoint.hpp"
 #include "core/input_error.hpp"
@@ -101,23 +102,17 @@ AxiSweepRow solve_position(const CaseSpec& base, const AxiSweepOptions& o, doubl
   return row;
 }
 
-// A position from the checkpoint if an earlier run finished it, else solved (and recorded).
-AxiSweepRow checkpointed_position(const CaseSpec& spec, const AxiSweepOptions& o, double dz) {
-  const std::string key = RunCheckpoint::key_of(dz);
-  if (o.checkpoint)
-    if (const auto saved = o.checkpoint->find(key)) {
-      AxiSweepRow row;
-      row.position_m = dz;
-      row.fz_N = saved->at("fz_N").get<double>();
-      row.seconds = saved->at("seconds").get<double>();
-      row.unknowns = saved->at("unknowns").get<long>();
-      row.ok = true;
-      return row;
-    }
-  AxiSweepRow row = solve_position(spec, o, dz);
-  if (o.checkpoint && row.ok) // failed positions are tried again on --resume
-    o.checkpoint->record(
-        key, {{"fz_N", row.fz_N}, {"seconds", row.seconds}, {"unknowns", row.unknowns}});
+nlohmann::json row_to_json(const AxiSweepRow& row) {
+  return {{"fz_N", row.fz_N}, {"seconds", row.seconds}, {"unknowns", row.unknowns}};
+}
+
+AxiSweepRow row_from_json(const nlohmann::json& saved, double dz) {
+  AxiSweepRow row;
+  row.position_m = dz;
+  row.fz_N = saved.at("fz_N").get<double>();
+  row.seconds = saved.at("seconds").get<double>();
+  row.unknowns = saved.at("unknowns").get<long>();
+  row.ok = true;
   return row;
 }
 
@@ -151,22 +146,9 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const int n_jobs =
       std::clamp(o.jobs > 0 ? o.jobs : static_cast<int>(cores), 1, std::max(total, 1));
-  std::atomic<int> next{0}, done{0};
-  std::mutex report;
-  const auto worker = [&] {
-    for (int i; (i = next++) < total;) {
-      rows[i] = checkpointed_position(spec, o, o.positions_m[i]);
-      const std::lock_guard<std::mutex> lock(report);
-      if (progress)
-        progress(++done, total);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 0; k < n_jobs; ++k)
-    pool.emplace_back(worker);
-  for (auto& t : pool)
-    t.join();
-  return rows;
+  return run_positions<AxiSweepRow>(
+      o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json},
+      [&](double dz) { return solve_position(spec, o, dz); }, progress);
 }
 
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {

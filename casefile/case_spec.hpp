@@ -23,7 +23,7 @@ struct RegionSpec {
   double current_density = 0; // A/m^2 along +z (planar) or +phi (axisymmetric)
   double ampere_turns = 0;    // if non-zero, J = ampere_turns / meshed area of the region
   double turns = 0, current = 0; // when given as turns and current (A); ampere_turns = N I
-  std::string group;             // axisymmetric: sweep group (magfem sweep --move)
+  std::string group;             // sweep group (--move axisymmetric, --rotate planar)
   int line = 0;               // line of the region in the case file
 };
 

@@ -37,14 +37,16 @@ Shape2D read_shape(const YamlNode& r, double s) {
   if (shape == "annulus") {
     r.allow_keys(with_common({"center", "r_inner", "r_outer"}));
     const double ri = r.at("r_inner").as_positive() * s, ro = r.at("r_outer").as_positive() * s;
-    if (ri >= ro) r.at("r_inner").fail("r_inner must be smaller than r_outer");
+    if (ri >= ro)
+      r.at("r_inner").fail("r_inner must be smaller than r_outer");
     return Annulus{center(), ri, ro};
   }
   if (shape == "sector") {
     r.allow_keys(with_common({"center", "r_inner", "r_outer", "angle_start", "angle_end"}));
     const double ri = r.has("r_inner") ? r.at("r_inner").as_non_negative() * s : 0.0;
     const double ro = r.at("r_outer").as_positive() * s;
-    if (ri >= ro) r.at("r_inner").fail("r_inner must be smaller than r_outer");
+    if (ri >= ro)
+      r.at("r_inner").fail("r_inner must be smaller than r_outer");
     const double a0 = r.at("angle_start").as_double(), a1 = r.at("angle_end").as_double();
     if (!(a1 > a0) || a1 - a0 > 360.0)
       r.at("angle_end").fail("angle_end must exceed angle_start by at most 360 degrees");
@@ -58,8 +60,10 @@ Shape2D read_shape(const YamlNode& r, double s) {
   if (shape == "polygon") {
     r.allow_keys(with_common({"points"}));
     Polygon p;
-    for (const auto& pt : r.at("points").items()) p.vertices.push_back(read_point2(pt, s));
-    if (p.vertices.size() < 3) r.at("points").fail("a polygon needs at least 3 points");
+    for (const auto& pt : r.at("points").items())
+      p.vertices.push_back(read_point2(pt, s));
+    if (p.vertices.size() < 3)
+      r.at("points").fail("a polygon needs at least 3 points");
     return p;
   }
   shape_node.fail("unknown shape '" + shape + "' (disk, annulus, sector, rectangle, polygon)");
@@ -74,7 +78,8 @@ Magnetization read_magnetization(const YamlNode& m, double s, bool axi) {
   Magnetization out;
   const std::string type = m.at("type").as_string();
   out.sign = m.get_double("sign", 1.0);
-  if (out.sign != 1.0 && out.sign != -1.0) m.at("sign").fail("sign must be 1 or -1");
+  if (out.sign != 1.0 && out.sign != -1.0)
+    m.at("sign").fail("sign must be 1 or -1");
   if (type == "parallel") {
     out.pattern = Magnetization::Pattern::parallel;
     const double a = (axi && !m.has("angle") ? 90.0 : m.at("angle").as_double()) * deg_to_rad;
@@ -162,18 +167,18 @@ void read_region(const YamlNode& r, double s, const CaseSpec& c, const MaterialL
   part.shape = read_shape(r, s);
   if (axi)
     to_half_plane(r, part.shape, s);
-  if (r.has("mesh_size")) part.max_size = r.at("mesh_size").as_positive() * s;
-  if (r.has("group")) {
-    if (!axi)
-      r.at("group").fail("2D groups exist in axisymmetric cases only (sweep --move)");
+  if (r.has("mesh_size"))
+    part.max_size = r.at("mesh_size").as_positive() * s;
+  if (r.has("group")) // sweep --move (axisymmetric) or --rotate (planar)
     spec.group = r.at("group").as_string();
-  }
   read_region_material(r, c, lib, spec);
   if (r.has("magnetization"))
     spec.magnetization = read_magnetization(r.at("magnetization"), s, axi);
-  if (r.has("current_density")) spec.current_density = r.at("current_density").as_double();
+  if (r.has("current_density"))
+    spec.current_density = r.at("current_density").as_double();
   if (r.has("turns") || r.has("current")) {
-    if (r.has("current_density")) r.fail("give current_density or turns and current, not both");
+    if (r.has("current_density"))
+      r.fail("give current_density or turns and current, not both");
     spec.turns = r.at("turns").as_positive();
     spec.current = r.at("current").as_double();
     spec.ampere_turns = spec.turns * spec.current;
@@ -188,7 +193,8 @@ void read_regions_2d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary
     Part2D part;
     RegionSpec spec;
     read_region(r, c.length_unit, c, lib, part, spec);
-    if (!names.insert(spec.name).second) r.at("name").fail("duplicate region name '" + spec.name + "'");
+    if (!names.insert(spec.name).second)
+      r.at("name").fail("duplicate region name '" + spec.name + "'");
     c.geometry2d.parts.push_back(part);
     c.regions.push_back(spec);
   }
