@@ -232,6 +232,10 @@ void LinearSolver::set_up_krylov(const Eigen::SparseMatrix<double>& lower) {
     throw SolveError("incomplete Cholesky preconditioner failed");
 }
 
+int LinearSolver::smoother_block_factorizations() const {
+  return impl_->amg ? impl_->amg->block_factorizations() : 0;
+}
+
 void LinearSolver::factorize(const Eigen::SparseMatrix<double>& lower) {
   const auto t0 = Clock::now();
   if (!impl_->analyzed) {

@@ -98,6 +98,9 @@ public:
   double solve_seconds() const { return solve_s_; }
   // Why the automatic choice changed course (AMG fallback), for the console and summary.
   const std::vector<std::string>& notes() const { return notes_; }
+  // pmg with a smoother block: how many times the block was factorized (it is reused while
+  // its entries do not change, e.g. the open-boundary shell across Newton steps); 0 otherwise.
+  int smoother_block_factorizations() const;
   // Factorization cost predicted by the automatic choice (0 if it did not look).
   double predicted_gflop() const { return predicted_gflop_; }
   double predicted_factor_gb() const { return predicted_factor_gb_; }

@@ -80,6 +80,9 @@ public:
   // The preconditioner actually in use (the options may have changed it): boomeramg, gamg,
   // or PETSc's name for another one.
   std::string preconditioner_name() const;
+  // pmg with a smoother block: how many times its block was factorized. setup() again with a
+  // block whose entries did not change (Newton: the shell is air) reuses the factorization.
+  int block_factorizations() const;
 
 private:
   struct Impl;
