@@ -11,10 +11,6 @@
 
 namespace magfem {
 
-double SectionSpec::area() const {
-  return kind == Kind::rectangle ? size_u * size_v : pi * radius * radius;
-}
-
 namespace {
 
 using Polygon = std::vector<Eigen::Vector2d>;

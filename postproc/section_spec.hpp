@@ -3,6 +3,7 @@
 // (sides size_u along frame.u and size_v along frame.v, centred on frame.center) or a disk
 // (radius about frame.center). Metres (the case reader converts). The flux is counted along
 // frame.n.
+#include <numbers>
 #include <string>
 
 #include "postproc/plane_frame.hpp"
@@ -19,7 +20,9 @@ struct SectionSpec {
   int line = 0;                  // line in the case file, for messages
 
   // The nominal area in m^2 (a x b, or pi r^2).
-  double area() const;
+  double area() const {
+    return kind == Kind::rectangle ? size_u * size_v : std::numbers::pi * radius * radius;
+  }
 };
 
 } // namespace magfem
