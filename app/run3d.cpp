@@ -382,6 +382,11 @@ std::string describe_run_3d(const Run3D& run) {
       s += buf;
     }
   s += describe_forces(run.forces, false);
+  for (const auto& f : run.sections) {
+    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",
+                  f.name.c_str(), f.total.flux_Wb, f.total.Bn_avg_T(), f.total.B_avg_T());
+    s += buf;
+  }
   s += describe_coils(run.coil_results);
   std::snprintf(buf, sizeof buf,
                 "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post %.2f s, "
