@@ -14,10 +14,11 @@
 // mesh faces reads the tets on its -n side.
 //
 // Disks are integrated over the regular 256-gon of the same area (circumradius
-// r (2 pi / (N sin(2 pi / N)))^(1/2)): the area is pi r^2 to round-off and the polygon's edge
-// stays within 6.4e-5 r of the circle, so for a field smooth across the rim the flux differs
-// from the disk's by less than 1e-4 relative, and by at most |jump of B.n| x 4e-4 pi r^2
-// (the band between polygon and circle) if a material boundary follows the rim.
+// r (2 pi / (N sin(2 pi / N)))^(1/2)): the area is pi r^2 to round-off, the polygon stays
+// within 5.1e-5 r of the circle, and the two differ by 3.9e-5 pi r^2 (symmetric difference).
+// Both are symmetric about the centre, so a field linear across the disk gives the same flux
+// through either; a smooth field differs by far less than 1e-4 relative, and a material
+// boundary along the rim by at most |jump of B.n| x 3.9e-5 pi r^2.
 //
 // Curved tets (order 2 next to spherical interfaces, DofMap3D::curve_to_spheres) are cut as
 // their straight vertex tets and their field is read at the same barycentric coordinates,
