@@ -19,8 +19,8 @@ constexpr std::array<CommandHelp, 8> commands{{
      "                    [--param NAME=VALUE ...] [--quiet]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
-     "  mesh and solver figures, magfem_version and commit), one CSV per probe, forces.csv\n"
-     "  and solution.vtu for ParaView.\n"
+     "  mesh and solver figures, magfem_version and commit), one CSV per probe, forces.csv,\n"
+     "  sections.csv (3D: flux through the case's sections) and solution.vtu for ParaView.\n"
      "  --order 1|2       element order (overrides the case's mesh.order)\n"
      "  --mesh-scale S    multiply every mesh size by S (S > 1 is coarser)\n"
      "  --max-memory GB   3D: refuse (exit 2) a mesh whose estimated peak memory exceeds GB\n"

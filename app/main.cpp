@@ -137,6 +137,8 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
   std::cout << "wrote    " << args.out_dir << "/summary.json";
   for (const auto& p : run->probes)
     std::cout << ", " << p.name << ".csv";
+  if (!run->sections.empty())
+    std::cout << ", sections.csv";
   if (run->spec.write_vtu)
     std::cout << ", solution.vtu";
   std::cout << "\n";

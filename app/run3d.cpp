@@ -14,6 +14,7 @@
 #include "app/memory_guard.hpp"
 #include "app/resource_usage.hpp"
 #include "app/result_checks.hpp"
+#include "app/section_results.hpp"
 #include "app/solver_summary.hpp"
 #include "core/constants.hpp"
 #include "core/output_stage.hpp"
@@ -243,6 +244,11 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(
         sample_probe_3d(*run->field, locator, probe, run->spec.length_unit, &run->recovered_B));
+  // Sections integrate the element field itself: a flux is an integral, which the recovered
+  // (smoothed) B would only approximate, and the element B is exact in B.n per element.
+  for (const auto& section : run->spec.sections)
+    run->sections.push_back(integrate_section_3d(*run->field, section));
+  check_sections_inside(run->sections, run->spec);
   run->forces = compute_forces_3d(*run);
   for (auto& f : coil_lorentz_forces(*run))
     run->forces.push_back(f);
@@ -322,6 +328,10 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   }
   for (const auto& p : run.probes)
     j["probes"].push_back(p.name + ".csv");
+  if (!run.sections.empty()) {
+    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
+    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
+  }
   if (run.coils) {
     j["coils"] = coil_results_json(run.coil_results);
     if (run.coil_results.inductance_H.size() > 0) {
@@ -372,6 +382,11 @@ std::string describe_run_3d(const Run3D& run) {
       s += buf;
     }
   s += describe_forces(run.forces, false);
+  for (const auto& f : run.sections) {
+    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",
+                  f.name.c_str(), f.total.flux_Wb, f.total.Bn_avg_T(), f.total.B_avg_T());
+    s += buf;
+  }
   s += describe_coils(run.coil_results);
   std::snprintf(buf, sizeof buf,
                 "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post %.2f s, "

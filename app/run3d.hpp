@@ -13,6 +13,7 @@
 #include "postproc/energy3d.hpp"
 #include "postproc/field3d.hpp"
 #include "postproc/recovered_b3d.hpp"
+#include "postproc/section_flux3d.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/dof_map3d.hpp"
 #include "solver/problem3d.hpp"
@@ -32,6 +33,7 @@ struct Run3D {
   EnergySummary3D energy;
   RecoveredB3D recovered_B; // nodal B per region, computed once (probes, VTU)
   std::vector<ProbeTable> probes;
+  std::vector<SectionFlux> sections; // parallel to spec.sections
   std::vector<ForceResult> forces;
   CoilResults coil_results;
   std::vector<std::string> warnings; // app/result_checks.hpp

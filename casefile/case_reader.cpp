@@ -9,6 +9,7 @@
 #include "casefile/case_spec.hpp"
 #include "casefile/force_reader.hpp"
 #include "casefile/reader_helpers.hpp"
+#include "casefile/section_reader.hpp"
 #include "core/constants.hpp"
 #include "core/yaml_node.hpp"
 #include "materials/material_library.hpp"
@@ -239,6 +240,27 @@ void read_points_probe(const YamlNode& p, double s, double domain, ProbeSpec& pr
   probe.points = static_cast<int>(probe.point_list.size());
 }
 
+// A u_steps x v_steps grid on a rectangle of a plane (`points: [n_u, n_v]`).
+void read_plane_probe(const YamlNode& p, double s, double domain, ProbeSpec& probe) {
+  p.allow_keys({"name", "type", "center", "normal", "u", "size", "points"});
+  probe.kind = ProbeSpec::Kind::plane;
+  probe.plane = read_plane_frame(p, s);
+  probe.center = probe.plane.center;
+  const Eigen::Vector2d size = read_size2(p.at("size"), s);
+  probe.size_u = size.x();
+  probe.size_v = size.y();
+  const auto steps = p.at("points");
+  if (!steps.is_sequence() || steps.size() != 2)
+    steps.fail("points must be [n_u, n_v], the grid's sample counts along u and v");
+  probe.u_steps = steps[0].as_int();
+  probe.v_steps = steps[1].as_int();
+  if (probe.u_steps < 1 || probe.v_steps < 1)
+    steps.fail("a plane probe needs at least one sample along each side");
+  probe.points = probe.u_steps * probe.v_steps;
+  if (farthest_point(probe.plane, probe.size_u, probe.size_v) > domain)
+    outside(p, probe, domain, s);
+}
+
 ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
   ProbeSpec probe;
   probe.line = p.line();
@@ -257,10 +279,12 @@ ProbeSpec read_probe(const YamlNode& p, const CaseSpec& c) {
     read_sphere_probe(p, s, domain, probe);
   else if (type == "points" && c.dimension == 3)
     read_points_probe(p, s, domain, probe);
+  else if (type == "plane" && c.dimension == 3)
+    read_plane_probe(p, s, domain, probe);
   else
     p.at("type").fail("unknown probe type '" + type + "' for dimension " +
                       std::to_string(c.dimension) +
-                      (c.dimension == 2 ? " (line, circle)" : " (line, sphere, points)"));
+                      (c.dimension == 2 ? " (line, circle)" : " (line, sphere, points, plane)"));
   if (probe.points < 1)
     p.at("points").fail("points must be at least 1");
   return probe;
@@ -282,7 +306,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
   const YamlNode root = YamlNode::load_string(quote_expressions(text), path);
   root.allow_keys({"title", "description", "dimension", "unit", "parameters", "stack_length",
                    "materials", "regions", "coils", "boundary", "mesh", "solver", "probes",
-                   "forces", "output"});
+                   "forces", "sections", "output"});
   CaseSpec c;
   c.file = path;
   // Parameters first: every field below then reads plain numbers (the unit cannot be one).
@@ -338,6 +362,8 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
   }
   if (root.has("forces"))
     read_forces(root.at("forces"), c);
+  if (root.has("sections"))
+    read_sections(root.at("sections"), c);
   if (root.has("output")) {
     const auto o = root.at("output");
     o.allow_keys({"vtu", "inductance", "revolved_vtu"});

@@ -12,6 +12,7 @@
 #include "mesh/geometry3d.hpp"
 #include "postproc/force_spec.hpp"
 #include "postproc/probe_spec.hpp"
+#include "postproc/section_spec.hpp"
 #include "solver/newton.hpp"
 
 namespace magfem {
@@ -40,6 +41,7 @@ struct CaseSpec {
   NewtonOptions newton;
   std::vector<ProbeSpec> probes;
   std::vector<ForceSpec> forces;
+  std::vector<SectionSpec> sections; // 3D: flux through plane sections (sections.csv)
   bool write_vtu = true;
   bool write_revolved_vtu = false; // axisymmetric: also solution_revolved.vtu (3D)
   double stack_length = 0; // metres; 0 = report per unit length

@@ -1,5 +1,8 @@
 #include "casefile/reader_helpers.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/input_error.hpp"
 
 #include "casefile/case_spec.hpp"
@@ -37,6 +40,39 @@ Eigen::Vector3d read_direction3(const YamlNode& node) {
   if (d.norm() == 0)
     node.fail("a direction must not be the zero vector");
   return d.normalized();
+}
+
+PlaneFrame read_plane_frame(const YamlNode& node, double scale) {
+  const Eigen::Vector3d center = read_point3(node.at("center"), scale);
+  const Eigen::Vector3d n = read_direction3(node.at("normal"));
+  if (!node.has("u"))
+    return make_plane_frame(center, n, default_plane_axis(n));
+  const Eigen::Vector3d u = read_direction3(node.at("u"));
+  // 1e-6: the cosine of a direction typed with six digits, e.g. [0.707107, 0.707107, 0].
+  if (std::abs(u.dot(n)) > 1e-6)
+    node.at("u").fail("u must lie in the plane (orthogonal to the normal)");
+  return make_plane_frame(center, n, (u - u.dot(n) * n).normalized());
+}
+
+Eigen::Vector2d read_size2(const YamlNode& node, double scale) {
+  const auto v = node.as_doubles(2);
+  if (!(v[0] > 0 && v[1] > 0))
+    node.fail("both sizes must be positive");
+  return Eigen::Vector2d(v[0], v[1]) * scale;
+}
+
+double farthest_point(const PlaneFrame& f, double size_u, double size_v) {
+  double r = 0;
+  for (double a : {-0.5, 0.5})
+    for (double b : {-0.5, 0.5})
+      r = std::max(r, f.at(a * size_u, b * size_v).norm());
+  return r;
+}
+
+double farthest_point_disk(const PlaneFrame& f, double radius) {
+  const double along = f.center.dot(f.n);
+  const double across = (f.center - along * f.n).norm();
+  return std::hypot(along, across + radius);
 }
 
 std::pair<double, double> read_angle_range(const YamlNode& node, double lo, double hi) {

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "core/yaml_node.hpp"
+#include "postproc/plane_frame.hpp"
 
 namespace magfem {
 
@@ -17,6 +18,16 @@ Eigen::Vector2d read_point2(const YamlNode& node, double scale);
 Eigen::Vector3d read_point3(const YamlNode& node, double scale);
 // A non-zero direction, normalised.
 Eigen::Vector3d read_direction3(const YamlNode& node);
+// The plane of map `node`: `center` (case unit -> metres, scale), `normal` (non-zero) and the
+// optional in-plane direction `u` (non-zero, orthogonal to the normal; default
+// default_plane_axis(normal)).
+PlaneFrame read_plane_frame(const YamlNode& node, double scale);
+// A rectangle's `size: [a, b]` (both > 0, case unit -> metres).
+Eigen::Vector2d read_size2(const YamlNode& node, double scale);
+// The largest distance from the origin of a point of the rectangle size_u x size_v (metres)
+// centred in frame f (a corner), or of the disk of radius `radius` centred in f.
+double farthest_point(const PlaneFrame& f, double size_u, double size_v);
+double farthest_point_disk(const PlaneFrame& f, double radius);
 // [min, max] in degrees -> radians, with min < max and both within [lo, hi] degrees.
 std::pair<double, double> read_angle_range(const YamlNode& node, double lo, double hi);
 

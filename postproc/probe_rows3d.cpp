@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "postproc/probes3d.hpp"
 
 namespace magfem {
 
@@ -10,6 +11,17 @@ ProbeTable tabulate_probe_3d(const ProbeSpec& probe, const std::vector<Eigen::Ve
                              const std::vector<Eigen::Vector3d>& B, double length_unit) {
   ProbeTable t;
   t.name = probe.name;
+  if (probe.kind == ProbeSpec::Kind::plane) {
+    t.columns = {"u", "v", "x", "y", "z", "Bx", "By", "Bz", "Bn"};
+    const std::vector<Eigen::Vector2d> uv = plane_probe_coordinates(probe);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Vector3d x = points[i] / length_unit;
+      const Eigen::Vector2d w = uv[i] / length_unit;
+      t.rows.push_back({w.x(), w.y(), x.x(), x.y(), x.z(), B[i].x(), B[i].y(), B[i].z(),
+                        B[i].dot(probe.plane.n)});
+    }
+    return t;
+  }
   if (probe.kind != ProbeSpec::Kind::sphere) {
     t.columns = {"x", "y", "z", "Bx", "By", "Bz"};
     for (std::size_t i = 0; i < points.size(); ++i) {

@@ -6,10 +6,12 @@
 
 #include <Eigen/Core>
 
+#include "postproc/plane_frame.hpp"
+
 namespace magfem {
 
 struct ProbeSpec {
-  enum class Kind { line, circle, sphere, points };
+  enum class Kind { line, circle, sphere, points, plane };
   std::string name;
   Kind kind = Kind::line;
   // line: `points` samples from start to end inclusive
@@ -25,6 +27,12 @@ struct ProbeSpec {
   // points (3D): an explicit list of sample points
   std::vector<Eigen::Vector3d> point_list;
   int theta_steps = 0, phi_steps = 0;
+  // plane (3D): a u_steps x v_steps grid over the rectangle size_u x size_v centred on
+  // plane.center (sides along plane.u and plane.v), both ends included (one step: the
+  // centre line); u the outer loop
+  PlaneFrame plane;
+  double size_u = 0, size_v = 0;
+  int u_steps = 0, v_steps = 0;
   int line = 0; // line in the case file, for messages
 };
 

@@ -33,6 +33,15 @@ std::vector<SpherePoint> sphere_samples(const ProbeSpec& p) {
 
 } // namespace
 
+std::vector<Eigen::Vector2d> plane_probe_coordinates(const ProbeSpec& p) {
+  std::vector<Eigen::Vector2d> out;
+  for (int i = 0; i < p.u_steps; ++i)
+    for (int j = 0; j < p.v_steps; ++j)
+      out.emplace_back(p.u_steps == 1 ? 0.0 : sample(-p.size_u / 2, p.size_u / 2, i, p.u_steps),
+                       p.v_steps == 1 ? 0.0 : sample(-p.size_v / 2, p.size_v / 2, j, p.v_steps));
+  return out;
+}
+
 std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe) {
   std::vector<Eigen::Vector3d> pts;
   switch (probe.kind) {
@@ -47,6 +56,10 @@ std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe) {
     for (const auto& s : sphere_samples(probe))
       pts.push_back(probe.center + probe.radius * s.e_rho);
     break;
+  case ProbeSpec::Kind::plane:
+    for (const auto& uv : plane_probe_coordinates(probe))
+      pts.push_back(probe.plane.at(uv.x(), uv.y()));
+    break;
   case ProbeSpec::Kind::circle:
     throw std::invalid_argument("probe '" + probe.name + "': circle probes are 2D only");
   }
@@ -60,12 +73,17 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
   ProbeTable table;
   table.name = probe.name;
   const bool sphere = probe.kind == ProbeSpec::Kind::sphere;
+  const bool plane = probe.kind == ProbeSpec::Kind::plane;
   if (sphere)
     table.columns = {"theta_deg", "phi_deg", "x",    "y",      "z",    "Bx",
                      "By",        "Bz",      "Brho", "Btheta", "Bphi", "region_id"};
+  else if (plane)
+    table.columns = {"u", "v", "x", "y", "z", "Bx", "By", "Bz", "Bn", "region_id"};
   else
     table.columns = {"x", "y", "z", "Bx", "By", "Bz", "region_id"};
   const std::vector<SpherePoint> s = sphere ? sphere_samples(probe) : std::vector<SpherePoint>{};
+  const std::vector<Eigen::Vector2d> uv =
+      plane ? plane_probe_coordinates(probe) : std::vector<Eigen::Vector2d>{};
   table.rows.reserve(pts.size());
   for (std::size_t k = 0; k < pts.size(); ++k) {
     const auto loc = locator.locate(pts[k]);
@@ -75,6 +93,12 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
         recovered ? recovered->at(loc->tet, loc->bary) : field.B(loc->tet, loc->bary);
     const double region = field.problem().mesh->tet_part[loc->tet];
     const Eigen::Vector3d x = pts[k] / length_unit;
+    if (plane) {
+      const Eigen::Vector2d w = uv[k] / length_unit;
+      table.rows.push_back(
+          {w.x(), w.y(), x.x(), x.y(), x.z(), b.x(), b.y(), b.z(), b.dot(probe.plane.n), region});
+      continue;
+    }
     if (!sphere) {
       table.rows.push_back({x.x(), x.y(), x.z(), b.x(), b.y(), b.z(), region});
       continue;

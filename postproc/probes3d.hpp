@@ -1,12 +1,15 @@
 #pragma once
-// Sampling of the 3D field on line, point-list and sphere-patch probes. CSV contract (other
-// tools read it; columns are only ever added at the end):
+// Sampling of the 3D field on line, point-list, sphere-patch and plane-grid probes. CSV contract
+// (other tools read it; columns are only ever added at the end):
 //   line, points: x,y,z,Bx,By,Bz,region_id
 //   sphere:       theta_deg,phi_deg,x,y,z,Bx,By,Bz,Brho,Btheta,Bphi,region_id
+//   plane:        u,v,x,y,z,Bx,By,Bz,Bn,region_id
 // Sphere patch: theta polar from +z, phi azimuth from +x, both about probe.center; theta_steps
 // x phi_steps samples over the inclusive ranges, theta the outer loop. Brho, Btheta, Bphi are
-// the components along the local spherical unit vectors. Coordinates in the case's length
-// unit, B in tesla. region_id: the region the point was read in (the mesh tet_part of its
+// the components along the local spherical unit vectors. Plane: u, v the point's in-plane
+// coordinates along plane.u and plane.v from plane.center (u the outer loop), Bn = B.n along
+// plane.n. Coordinates in the case's length unit, B in tesla.
+// region_id: the region the point was read in (the mesh tet_part of its
 // tet: the index of the case's region, -1 for background air), as the VTU's region_id.
 // B is the FE field of the tet containing the point, or, if `recovered` is given, the
 // recovered B of that tet's region (RecoveredB3D: never averaged across materials).
@@ -31,5 +34,7 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
 
 // The sample points of a probe in metres, in CSV row order.
 std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe);
+// A plane probe's in-plane coordinates (u, v) in metres, in CSV row order.
+std::vector<Eigen::Vector2d> plane_probe_coordinates(const ProbeSpec& probe);
 
 } // namespace magfem

@@ -290,3 +290,97 @@ mesh: {size: 5}
     }
   }
 }
+
+namespace {
+
+// case3d (lines 1-34) with sections and a plane probe from line 35 on.
+std::string case3d_sections() {
+  return std::string(case3d) + R"(sections:
+  - {name: plate, type: rectangle, center: [0, 0, 1], normal: [0, 0, 2], size: [3, 2]}
+  - {name: tilted, type: rectangle, center: [1, 0, 0], normal: [1, 1, 0], u: [0, 0, 1],
+     size: [1, 4]}
+  - {name: ring, type: disk, center: [0, 1, 0], normal: [0, 1, 0], radius: 2}
+probes:
+  - {name: grid, type: plane, center: [0, 0, 1], normal: [1, 0, 0], size: [4, 2],
+     points: [5, 3]}
+)";
+}
+
+} // namespace
+
+// Lengths in the case unit (cm here) arrive in metres; normals are normalised; u defaults to
+// the coordinate axis least aligned with the normal, projected (z -> u = x; x -> u = y).
+TEST(CaseReader3D, SectionsAndPlaneProbesArriveInSi) {
+  using Vec3 = Eigen::Vector3d;
+  const auto spec = read_case(write_case("case3d_sections.yaml", case3d_sections()));
+  ASSERT_EQ(spec.sections.size(), 3u);
+  const auto& plate = spec.sections[0];
+  EXPECT_EQ(plate.kind, SectionSpec::Kind::rectangle);
+  EXPECT_EQ(plate.line, 36);
+  EXPECT_LT((plate.frame.center - Vec3(0, 0, 0.01)).norm(), 1e-15);
+  EXPECT_LT((plate.frame.n - Vec3(0, 0, 1)).norm(), 1e-15);
+  EXPECT_LT((plate.frame.u - Vec3(1, 0, 0)).norm(), 1e-15);
+  EXPECT_LT((plate.frame.v - Vec3(0, 1, 0)).norm(), 1e-15);
+  EXPECT_DOUBLE_EQ(plate.size_u, 0.03);
+  EXPECT_DOUBLE_EQ(plate.size_v, 0.02);
+  EXPECT_NEAR(plate.area(), 6e-4, 1e-18);
+  const auto& tilted = spec.sections[1];
+  EXPECT_LT((tilted.frame.u - Vec3(0, 0, 1)).norm(), 1e-15);
+  EXPECT_LT((tilted.frame.n - Vec3(1, 1, 0) / std::sqrt(2.0)).norm(), 1e-15);
+  EXPECT_LT((tilted.frame.v - tilted.frame.n.cross(tilted.frame.u)).norm(), 1e-15);
+  const auto& ring = spec.sections[2];
+  EXPECT_EQ(ring.kind, SectionSpec::Kind::disk);
+  EXPECT_DOUBLE_EQ(ring.radius, 0.02);
+  EXPECT_LT((ring.frame.u - Vec3(1, 0, 0)).norm(), 1e-15);
+  ASSERT_EQ(spec.probes.size(), 1u);
+  const auto& grid = spec.probes[0];
+  EXPECT_EQ(grid.kind, ProbeSpec::Kind::plane);
+  EXPECT_EQ(grid.u_steps, 5);
+  EXPECT_EQ(grid.v_steps, 3);
+  EXPECT_EQ(grid.points, 15);
+  EXPECT_DOUBLE_EQ(grid.size_u, 0.04);
+  EXPECT_LT((grid.plane.u - Vec3(0, 1, 0)).norm(), 1e-15);
+  EXPECT_LT((grid.plane.v - Vec3(0, 0, 1)).norm(), 1e-15);
+}
+
+TEST(CaseReader3D, BadSectionsAndPlaneProbesNameLineAndField) {
+  struct Bad {
+    std::string from, to;
+    int line;
+    std::string field;
+  };
+  const std::vector<Bad> cases{
+      {"normal: [0, 0, 2]", "normal: [0, 0, 0]", 36, "sections[0].normal"},
+      {"size: [3, 2]", "size: [3, -2]", 36, "sections[0].size"},
+      {"size: [3, 2]", "size: [3, 0]", 36, "sections[0].size"},
+      {"size: [3, 2]", "size: [3]", 36, "sections[0].size"},
+      // A corner at |(1.5, 1, 7.9)| = 8.1 cm, beyond the boundary radius 8 cm.
+      {"center: [0, 0, 1], normal: [0, 0, 2]", "center: [0, 0, 7.9], normal: [0, 0, 2]", 36,
+       "sections[0].size"},
+      {"u: [0, 0, 1]", "u: [1, 0, 1]", 37, "sections[1].u"},
+      {"radius: 2}", "radius: 7.95}", 39, "sections[2].radius"},
+      {"radius: 2}", "radius: -2}", 39, "sections[2].radius"},
+      {"type: disk", "type: annulus", 39, "sections[2].type"},
+      {"name: ring", "name: plate", 39, "sections[2].name"},
+      {"name: ring", "name: \"ring,a\"", 39, "sections[2].name"},
+      {"size: [3, 2]}", "size: [3, 2], radius: 1}", 36, "sections[0].radius"},
+      {"points: [5, 3]}", "points: [5, 0]}", 42, "probes[0].points"},
+      {"points: [5, 3]}", "points: [5]}", 42, "probes[0].points"},
+      {"normal: [1, 0, 0], size", "normal: [0, 0, 0], size", 41, "probes[0].normal"},
+      {"size: [4, 2],", "size: [16, 2],", 41, "probes[0]"},
+  };
+  for (const auto& bad : cases) {
+    std::string text = case3d_sections();
+    const auto at = text.find(bad.from);
+    ASSERT_NE(at, std::string::npos) << bad.from;
+    text.replace(at, bad.from.size(), bad.to);
+    try {
+      read_case(write_case("bad_sections.yaml", text));
+      ADD_FAILURE() << "accepted: " << bad.to;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), bad.line) << e.what();
+      EXPECT_EQ(e.field(), bad.field) << e.what();
+      EXPECT_NE(std::string(e.what()).find("bad_sections.yaml"), std::string::npos) << e.what();
+    }
+  }
+}

@@ -1,0 +1,61 @@
+#include "casefile/section_reader.hpp"
+
+#include <regex>
+#include <set>
+
+#include "casefile/reader_helpers.hpp"
+
+namespace magfem {
+namespace {
+
+SectionSpec read_section(const YamlNode& n, const CaseSpec& c) {
+  SectionSpec spec;
+  spec.line = n.line();
+  spec.name = n.at("name").as_string();
+  // Names are CSV fields: no separators or quotes to escape.
+  static const std::regex safe("[A-Za-z0-9_.-]+");
+  if (!std::regex_match(spec.name, safe))
+    n.at("name").fail("section names are CSV fields: use letters, digits, '_', '-', '.'");
+  const std::string type = n.at("type").as_string();
+  const double s = c.length_unit;
+  const double domain = c.geometry3d.outer.radius;
+  double farthest = 0;
+  if (type == "rectangle") {
+    n.allow_keys({"name", "type", "center", "normal", "u", "size"});
+    spec.kind = SectionSpec::Kind::rectangle;
+    spec.frame = read_plane_frame(n, s);
+    const Eigen::Vector2d size = read_size2(n.at("size"), s);
+    spec.size_u = size.x();
+    spec.size_v = size.y();
+    farthest = farthest_point(spec.frame, spec.size_u, spec.size_v);
+  } else if (type == "disk") {
+    n.allow_keys({"name", "type", "center", "normal", "u", "radius"});
+    spec.kind = SectionSpec::Kind::disk;
+    spec.frame = read_plane_frame(n, s);
+    spec.radius = n.at("radius").as_positive() * s;
+    farthest = farthest_point_disk(spec.frame, spec.radius);
+  } else {
+    n.at("type").fail("unknown section type '" + type + "' (rectangle, disk)");
+  }
+  if (farthest >= domain)
+    n.at(type == "disk" ? "radius" : "size")
+        .fail("section '" + spec.name + "' leaves the domain (radius " +
+              std::to_string(domain / s) + "; its farthest point is at " +
+              std::to_string(farthest / s) + ")");
+  return spec;
+}
+
+} // namespace
+
+void read_sections(const YamlNode& list, CaseSpec& c) {
+  if (c.dimension != 3)
+    list.fail("sections apply to 3D cases only");
+  std::set<std::string> names;
+  for (const auto& n : list.items()) {
+    c.sections.push_back(read_section(n, c));
+    if (!names.insert(c.sections.back().name).second)
+      n.at("name").fail("duplicate section name '" + c.sections.back().name + "'");
+  }
+}
+
+} // namespace magfem
