@@ -232,6 +232,12 @@ void LinearSolver::set_up_krylov(const Eigen::SparseMatrix<double>& lower) {
     throw SolveError("incomplete Cholesky preconditioner failed");
 }
 
+void LinearSolver::set_cg_tolerance(double tol) {
+  options_.cg_tolerance = tol;
+  if (impl_->amg)
+    impl_->amg->set_relative_tolerance(tol);
+}
+
 int LinearSolver::smoother_block_factorizations() const {
   return impl_->amg ? impl_->amg->block_factorizations() : 0;
 }

@@ -90,6 +90,10 @@ public:
   // a gauge, a bad material) or the preconditioner cannot be built.
   void factorize(const Eigen::SparseMatrix<double>& lower);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  // Krylov solves from now on stop at this relative residual (LinearSolverOptions::
+  // cg_tolerance until then); direct solves are exact whatever it is.
+  void set_cg_tolerance(double tol);
+  double cg_tolerance() const { return options_.cg_tolerance; }
   std::string name() const;           // cholmod | cg
   std::string preconditioner() const; // none (direct) | ichol | boomeramg | gamg | pmg | ...
   int last_iterations() const { return last_iterations_; }

@@ -88,8 +88,25 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
   }
 
   const TangentKind kind = system.is_linear() ? TangentKind::newton : options.method;
+  const double tight = options.linear.cg_tolerance;
+  double forcing = options.forcing_max, previous_r_norm = r_norm;
   for (int it = 1; it <= options.max_iterations; ++it) {
     t0 = Clock::now();
+    if (!system.is_linear() && options.forcing_max > 0) {
+      if (it > 1) { // Eisenstat-Walker choice 2 (gamma 0.9, alpha 2) with its safeguard
+        const double ratio = r_norm / previous_r_norm;
+        const double safeguard = 0.9 * forcing * forcing;
+        forcing = std::max(0.9 * ratio * ratio, safeguard > 0.1 ? safeguard : 0.0);
+      }
+      // Never tighter than needed to meet Newton's own residual tolerance next step.
+      forcing = std::min(forcing, options.forcing_max);
+      const double needed = 0.5 * options.residual_tol * scale / std::max(r_norm, 1e-300);
+      // The loosest of the two that still meets the target: a tolerance below `needed`
+      // would solve more accurately than the next residual test can tell.
+      linear.set_cg_tolerance(
+          std::max(tight, std::min(options.forcing_max, std::max(forcing, needed))));
+    }
+    previous_r_norm = r_norm;
     linear.factorize(k);
     const Eigen::VectorXd du = linear.solve(-r);
     report.solve_s += seconds_since(t0);

@@ -20,6 +20,12 @@ struct NewtonOptions {
   double update_tol = 1e-9;   // |du| / |u|
   int max_iterations = 40;
   bool line_search = true;
+  // Inexact Newton: far from the solution a Krylov solve to linear.cg_tolerance is wasted
+  // (the next residual is dominated by the linearization, not by the solve), so each step's
+  // tolerance follows the residual's progress (Eisenstat and Walker's second choice), between
+  // linear.cg_tolerance and this ceiling; the last steps, where Newton is quadratic, solve to
+  // linear.cg_tolerance. 0 = every step to linear.cg_tolerance. No effect on direct solves.
+  double forcing_max = 0.1;
   LinearSolverOptions linear;
 };
 

@@ -722,6 +722,14 @@ KrylovOutcome PetscSolver::solve_distributed(Eigen::VectorXd& x) {
   }
 }
 
+void PetscSolver::set_relative_tolerance(double tol) {
+  const std::lock_guard lock(petsc_mutex());
+  impl_->options.relative_tolerance = tol;
+  if (impl_->ksp)
+    check(KSPSetTolerances(impl_->ksp, tol, 0.0, PETSC_DEFAULT, impl_->options.max_iterations),
+          "KSPSetTolerances");
+}
+
 int PetscSolver::block_factorizations() const {
   return impl_->block_factor.factorizations;
 }

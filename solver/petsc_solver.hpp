@@ -60,6 +60,9 @@ public:
   // the preconditioner. Throws SolveError when PETSc refuses (bad options, set-up failure).
   void setup(const Eigen::SparseMatrix<double>& lower);
   KrylovOutcome solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
+  // The relative tolerance of the next solves (inexact Newton loosens it far from the
+  // solution); takes effect at once, set-up or not.
+  void set_relative_tolerance(double tol);
 
   // Distributed mode; every process of MPI_COMM_WORLD calls these collective steps in this
   // order (add_element is local). Rows are owned in contiguous blocks, PETSc's default split
