@@ -46,7 +46,8 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  --param NAME=VALUE        set one of the case file's `parameters:` (repeatable)\n"},
     {"compare", "magfem compare REFERENCE.csv TEST.csv", "compare two probe CSVs",
      "  Per field component: the rms discrepancy of thesis eq. 3.117 and the pointwise rms\n"
-     "  error, in % of the reference.\n"},
+     "  error, in % of the reference (n/a where the reference component is zero), and the\n"
+     "  largest and rms differences in T.\n"},
     {"sweep",
      "magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
      "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"

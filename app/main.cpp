@@ -391,11 +391,20 @@ int run_compare(const Args& args) {
     throw magfem::InputError(args.positional[1], 0, "", e.what());
   }
   std::printf("%zu points; reference %s\n", ref.rows.size(), args.positional[0].c_str());
-  std::printf("%-8s %12s %12s %16s %16s %12s\n", "comp", "rms_ref_T", "rms_test_T", "eq3.117_pct",
-              "pointwise_pct", "max_diff_T");
-  for (const auto& c : rows)
-    std::printf("%-8s %12.6g %12.6g %16.4f %16.4f %12.4g\n", c.component.c_str(), c.rms_reference,
-                c.rms_test, 100 * c.discrepancy_3117, 100 * c.pointwise_rms, c.max_abs_difference);
+  std::printf("%-8s %12s %12s %16s %16s %12s %12s\n", "comp", "rms_ref_T", "rms_test_T",
+              "eq3.117_pct", "pointwise_pct", "max_diff_T", "rms_diff_T");
+  bool undefined = false;
+  for (const auto& c : rows) {
+    std::printf("%-8s %12.6g %12.6g ", c.component.c_str(), c.rms_reference, c.rms_test);
+    if (c.relative_defined)
+      std::printf("%16.4f %16.4f", 100 * c.discrepancy_3117, 100 * c.pointwise_rms);
+    else
+      std::printf("%16s %16s", "n/a", "n/a"), undefined = true;
+    std::printf(" %12.4g %12.4g\n", c.max_abs_difference, c.rms_difference);
+  }
+  if (undefined)
+    std::printf("n/a: the reference component is zero (to round-off); its differences are "
+                "absolute only\n");
   return 0;
 }
 

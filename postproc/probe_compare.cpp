@@ -14,7 +14,8 @@ std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
   std::stringstream ss(line);
   std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(cell);
+  while (std::getline(ss, cell, ','))
+    out.push_back(cell);
   return out;
 }
 
@@ -24,20 +25,24 @@ void strip_carriage_return(std::string& line) {
     line.pop_back();
 }
 
-bool is_field_component(const std::string& c) { return !c.empty() && c[0] == 'B'; }
+bool is_field_component(const std::string& c) {
+  return !c.empty() && c[0] == 'B';
+}
 
 } // namespace
 
 ProbeTable read_probe_csv(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "", "cannot open the file");
+  if (!in)
+    throw InputError(path, 0, "", "cannot open the file");
   return read_probe_csv(in, path);
 }
 
 ProbeTable read_probe_csv(std::istream& in, const std::string& path) {
   ProbeTable t;
   std::string line;
-  if (!std::getline(in, line)) throw InputError(path, 1, "", "empty file");
+  if (!std::getline(in, line))
+    throw InputError(path, 1, "", "empty file");
   strip_carriage_return(line);
   t.columns = split(line);
   if (t.columns.empty())
@@ -54,7 +59,8 @@ ProbeTable read_probe_csv(std::istream& in, const std::string& path) {
   while (std::getline(in, line)) {
     ++n;
     strip_carriage_return(line);
-    if (line.empty()) continue;
+    if (line.empty())
+      continue;
     const auto cells = split(line);
     if (cells.size() != t.columns.size())
       throw InputError(path, n, "", "expected " + std::to_string(t.columns.size()) + " values");
@@ -77,7 +83,8 @@ ProbeTable read_probe_csv(std::istream& in, const std::string& path) {
 std::vector<ComponentComparison> compare_probes(const ProbeTable& ref, const ProbeTable& test) {
   if (ref.rows.size() != test.rows.size())
     throw std::invalid_argument("the probes have different numbers of points (" +
-                                std::to_string(ref.rows.size()) + " and " + std::to_string(test.rows.size()) + ")");
+                                std::to_string(ref.rows.size()) + " and " +
+                                std::to_string(test.rows.size()) + ")");
   // Same sample points: compare the coordinate columns both tables have.
   double extent = 0, mismatch = 0;
   for (const char* c : {"x", "y", "z"}) {
@@ -98,7 +105,8 @@ std::vector<ComponentComparison> compare_probes(const ProbeTable& ref, const Pro
 
   std::vector<ComponentComparison> out;
   for (std::size_t k = 0; k < ref.columns.size(); ++k) {
-    if (!is_field_component(ref.columns[k])) continue;
+    if (!is_field_component(ref.columns[k]))
+      continue;
     std::size_t kt = 0;
     try {
       kt = test.column(ref.columns[k]);
@@ -118,9 +126,18 @@ std::vector<ComponentComparison> compare_probes(const ProbeTable& ref, const Pro
     const double n = static_cast<double>(ref.rows.size());
     c.rms_reference = std::sqrt(sr / n);
     c.rms_test = std::sqrt(st / n);
-    c.discrepancy_3117 = c.rms_reference > 0 ? (c.rms_reference - c.rms_test) / c.rms_reference : 0;
-    c.pointwise_rms = c.rms_reference > 0 ? std::sqrt(sd / n) / c.rms_reference : 0;
+    c.rms_difference = std::sqrt(sd / n);
     out.push_back(c);
+  }
+  double largest = 0;
+  for (const auto& c : out)
+    largest = std::max(largest, c.rms_reference);
+  for (auto& c : out) {
+    c.relative_defined = c.rms_reference > 0 && c.rms_reference > 1e-9 * largest;
+    if (c.relative_defined) {
+      c.discrepancy_3117 = (c.rms_reference - c.rms_test) / c.rms_reference;
+      c.pointwise_rms = c.rms_difference / c.rms_reference;
+    }
   }
   return out;
 }

@@ -21,12 +21,18 @@ ProbeTable read_probe_csv(std::istream& in, const std::string& name);
 struct ComponentComparison {
   std::string component;
   double rms_reference = 0, rms_test = 0;
-  double discrepancy_3117 = 0; // fraction, signed
-  double pointwise_rms = 0;    // fraction
+  double discrepancy_3117 = 0;   // fraction, signed
+  double pointwise_rms = 0;      // fraction
   double max_abs_difference = 0; // tesla
+  double rms_difference = 0;     // tesla: rms(test - ref), defined whatever the reference
+  // False when the reference component is zero, or below 1e-9 of the largest component's
+  // rms (B_phi of an axisymmetric field: round-off): the two fractions would divide by it,
+  // so they are 0 and only the absolute differences mean anything.
+  bool relative_defined = true;
 };
 
 // Throws std::invalid_argument if the tables do not sample the same points.
-std::vector<ComponentComparison> compare_probes(const ProbeTable& reference, const ProbeTable& test);
+std::vector<ComponentComparison> compare_probes(const ProbeTable& reference,
+                                                const ProbeTable& test);
 
 } // namespace magfem
