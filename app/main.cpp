@@ -126,6 +126,14 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
+// "wrote    DIR/summary.json, a.csv, ...": every file the run wrote.
+void print_written(const std::string& out_dir, const std::vector<std::string>& files) {
+  std::cout << "wrote    " << out_dir << "/";
+  for (std::size_t i = 0; i < files.size(); ++i)
+    std::cout << (i ? ", " : "") << files[i];
+  std::cout << "\n";
+}
+
 int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
   auto run = magfem::run_case_3d(std::move(spec), overrides);
   if (!overrides.world.is_root()) { // rank 0 reports and writes, once
@@ -133,15 +141,7 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
     return 0;
   }
   std::cout << magfem::describe_run_3d(*run);
-  magfem::write_outputs_3d(*run, args.out_dir);
-  std::cout << "wrote    " << args.out_dir << "/summary.json";
-  for (const auto& p : run->probes)
-    std::cout << ", " << p.name << ".csv";
-  if (!run->sections.empty())
-    std::cout << ", sections.csv";
-  if (run->spec.write_vtu)
-    std::cout << ", solution.vtu";
-  std::cout << "\n";
+  print_written(args.out_dir, magfem::write_outputs_3d(*run, args.out_dir));
   std::cout.flush();
   magfem::idle_barrier();
   return 0;
@@ -169,17 +169,7 @@ int run_solve(const Args& args) {
     return run_solve_3d(args, std::move(spec), overrides);
   auto run = magfem::run_case_2d(std::move(spec), overrides);
   std::cout << magfem::describe_run_2d(*run);
-  magfem::write_outputs_2d(*run, args.out_dir);
-  std::cout << "wrote    " << args.out_dir << "/summary.json";
-  for (const auto& p : run->probes)
-    std::cout << ", " << p.name << ".csv";
-  if (run->spec.write_vtu)
-    std::cout << ", solution.vtu";
-  if (run->spec.write_vtu && run->spec.write_revolved_vtu)
-    std::cout << ", solution_revolved.vtu";
-  if (!run->forces.empty())
-    std::cout << ", forces.csv";
-  std::cout << "\n";
+  print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
   return 0;
 }
 
@@ -187,11 +177,7 @@ int run_analytic(const Args& args) {
   auto run =
       magfem::run_case_analytic(magfem::read_case(args.case_file, args.parameters), args.analytic);
   std::cout << magfem::describe_analytic(*run);
-  magfem::write_outputs_analytic(*run, args.out_dir);
-  std::cout << "wrote    " << args.out_dir << "/summary.json";
-  for (const auto& p : run->probes)
-    std::cout << ", " << p.name << ".csv";
-  std::cout << "\n";
+  print_written(args.out_dir, magfem::write_outputs_analytic(*run, args.out_dir));
   return 0;
 }
 

@@ -175,7 +175,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   return run;
 }
 
-void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
   for (const auto& p : run.probes)
@@ -253,6 +253,7 @@ void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   j["warnings"] = run.warnings;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
+  return stage.written();
 }
 
 std::string describe_run_2d(const Run2D& run) {

@@ -69,7 +69,7 @@ struct Run2D {
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});
 
 // Writes summary.json, one CSV per probe and solution.vtu, all-or-nothing.
-void write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir);
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir);
 
 // Prints the short human summary.
 std::string describe_run_2d(const Run2D& run);

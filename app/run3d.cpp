@@ -262,7 +262,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   return run;
 }
 
-void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
+std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
   for (const auto& p : run.probes)
@@ -356,6 +356,7 @@ void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   j["warnings"] = run.warnings;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
+  return stage.written();
 }
 
 std::string describe_run_3d(const Run3D& run) {

@@ -56,7 +56,7 @@ double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& overrides = {})
 // --mesh-scale that would fit when the case cannot be solved within the limit. A geometry
 // the mesher rejects throws its MeshError (run_case_3d would name the part).
 void check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
-void write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
+std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
 std::string describe_run_3d(const Run3D& run);
 
 } // namespace magfem

@@ -148,7 +148,8 @@ nlohmann::ordered_json analytic_coils_json(const AnalyticRun& run) {
 
 } // namespace
 
-void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path& out_dir) {
+std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
+                                                const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
   for (const auto& p : run.probes)
@@ -205,6 +206,7 @@ void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path&
   }
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
+  return stage.written();
 }
 
 std::string describe_analytic(const AnalyticRun& run) {

@@ -39,7 +39,8 @@ struct AnalyticRun {
 };
 
 std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOptions& options);
-void write_outputs_analytic(const AnalyticRun& run, const std::filesystem::path& out_dir);
+std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
+                                                const std::filesystem::path& out_dir);
 std::string describe_analytic(const AnalyticRun& run);
 
 } // namespace magfem

@@ -53,6 +53,16 @@ std::vector<std::string> read_manifest(const std::filesystem::path& path) {
 
 } // namespace
 
+std::vector<std::string> OutputStage::written() const {
+  std::vector<std::string> out;
+  if (std::find(names_.begin(), names_.end(), record_) != names_.end())
+    out.push_back(record_);
+  for (const auto& name : names_)
+    if (name != record_ && name.rfind(manifest_name, 0) != 0)
+      out.push_back(name);
+  return out;
+}
+
 void OutputStage::commit() {
   namespace fs = std::filesystem;
   const bool has_record = std::find(names_.begin(), names_.end(), record_) != names_.end();

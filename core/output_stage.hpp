@@ -35,6 +35,9 @@ public:
   static constexpr const char* manifest_name = ".magfem-outputs";
 
   const std::filesystem::path& out_dir() const { return out_dir_; }
+  // The files this run wrote, the record first, then in the order they were staged: what
+  // the console's "wrote" line lists (never a hand-kept list that forgets one).
+  std::vector<std::string> written() const;
 
 private:
   std::filesystem::path out_dir_;

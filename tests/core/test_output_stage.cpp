@@ -101,3 +101,19 @@ TEST(OutputStage, ManifestCannotReachOutsideTheDirectory) {
   EXPECT_TRUE(fs::exists(dir / "sub" / "precious"));
   fs::remove_all(dir);
 }
+
+// The console's "wrote" line lists what the stage wrote: the record first, then the files in
+// the order they were staged, never the manifest (3D solves forgot forces.csv when the line
+// was a hand-kept list).
+TEST(OutputStage, WrittenListsEveryFileTheRecordFirst) {
+  const fs::path dir = fs::temp_directory_path() / "magfem_stage_written";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  magfem::OutputStage stage(dir);
+  stage.write_text("probe.csv", "x\n1\n");
+  stage.write_text("forces.csv", "name\nf\n");
+  stage.write_text("summary.json", "{}");
+  stage.commit();
+  EXPECT_EQ(stage.written(), (std::vector<std::string>{"summary.json", "probe.csv", "forces.csv"}));
+  fs::remove_all(dir);
+}
