@@ -41,7 +41,7 @@ ctest --test-dir build --output-on-failure -L long --output-junit "$PWD/$out/cte
   2>&1 | tee "$out/ctest.log" || ctest_rc=$?
 mid=$(date +%s)
 validate_rc=0
-build/app/magfem validate --tier full --out "$out/validate" 2>&1 | tee "$out/validate.log" ||
+build/magfem validate --tier full --out "$out/validate" 2>&1 | tee "$out/validate.log" ||
   validate_rc=$?
 end=$(date +%s)
 
