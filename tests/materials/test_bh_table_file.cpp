@@ -89,7 +89,7 @@ TEST(BhTableFile, FileTableEqualsTheInlineTableBitForBit) {
   }
 }
 
-// What `magfem materials --export` writes reads back as the same curve.
+// What write_bh_table_file writes (every library curve) reads back as the same curve.
 TEST(BhTableFile, WrittenTableReadsBackBitForBit) {
   const auto dir = test_dir("round_trip");
   for (const auto& name : MaterialLibrary::bundled().names()) {
