@@ -13,7 +13,7 @@ struct CommandHelp {
   const char* details;  // options and outputs
 };
 
-constexpr std::array<CommandHelp, 8> commands{{
+constexpr std::array<CommandHelp, 9> commands{{
     {"solve",
      "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--max-memory GB]\n"
      "                    [--param NAME=VALUE ...] [--quiet]",
@@ -141,6 +141,13 @@ constexpr std::array<CommandHelp, 8> commands{{
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
      "  FE runs show the orientation, stage and solver residual on stderr; --quiet\n"
      "  turns that off.\n"},
+    {"materials", "magfem materials [--export NAME]",
+     "list the bundled materials, or write one's B-H table as CSV",
+     "  Without options: one line per bundled entry (name, kind, other names).\n"
+     "  --export NAME   writes the B-H table of the soft entry NAME to stdout in the format\n"
+     "                  a case's `bh_file:` reads (a '#' line with its source, the header\n"
+     "                  H_Apm,B_T, then H in A/m and B in T), e.g.\n"
+     "                  magfem materials --export steel_1010 > my_steel.csv\n"},
     {"validate",
      "magfem validate [--tier quick|full] [--only ID,...|--source SEED] [--jobs N] [--resume]\n"
      "                [--catalogue FILE] [--out DIR]",

@@ -16,6 +16,7 @@
 #include "app/build_info.hpp"
 #include "app/cli_number.hpp"
 #include "app/command_help.hpp"
+#include "app/materials_command.hpp"
 #include "app/optimize.hpp"
 #include "app/resource_usage.hpp"
 #include "app/run2d.hpp"
@@ -457,6 +458,8 @@ int main(int argc, char** argv) {
   try {
     if (const auto code = answer_help_or_version(argc, argv))
       return *code;
+    if (argc >= 2 && std::strcmp(argv[1], "materials") == 0)
+      return magfem::run_materials_command(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
       return magfem::run_validate(
           magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));

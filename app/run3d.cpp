@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <stdexcept>
 
@@ -177,6 +178,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   stage("meshing");
   run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
   run->timings.mesh = since(t0);
+  // Said now (a solve can take minutes) and again in the summary.
+  if (world.is_root())
+    for (const auto& w : run->mesh.warnings)
+      std::cerr << "magfem: warning: " + w + "\n" << std::flush;
   if (world.distributed())
     check_same_mesh_everywhere(run->mesh);
   check_stress_surfaces_3d(run->spec, run->mesh); // before the solve: fail fast
@@ -256,7 +261,9 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   check_finite(run->recovered_B.values(), "recovered flux density");
   check_finite(run->energy.total_J, "magnetic energy");
   check_forces_finite(run->forces);
-  run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
+  run->warnings = run->mesh.warnings;
+  for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
+    run->warnings.push_back(std::move(w));
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;

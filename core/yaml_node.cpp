@@ -114,17 +114,26 @@ std::string YamlNode::as_string() const {
   return node_.Scalar();
 }
 
-double YamlNode::as_double() const {
-  if (!node_.IsScalar()) fail("expected a number");
-  const std::string text = node_.Scalar();
+std::optional<double> parse_number(const std::string& text) {
   try {
     std::size_t used = 0;
     const double value = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(value)) throw std::invalid_argument(text);
+    if (used != text.size() || !std::isfinite(value))
+      return std::nullopt;
     return value;
   } catch (const std::exception&) {
-    fail("expected a number, got '" + text + "'");
+    return std::nullopt;
   }
+}
+
+double YamlNode::as_double() const {
+  if (!node_.IsScalar())
+    fail("expected a number");
+  const std::string text = node_.Scalar();
+  const auto value = parse_number(text);
+  if (!value)
+    fail("expected a number, got '" + text + "'");
+  return *value;
 }
 
 double YamlNode::as_positive() const {

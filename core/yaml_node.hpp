@@ -14,6 +14,11 @@
 
 namespace magfem {
 
+// The number rule of YamlNode::as_double (the whole text, finite); nullopt otherwise. Shared
+// with table files (bh_file) so that a table read from a file equals the same table written
+// inline, bit for bit.
+std::optional<double> parse_number(const std::string& text);
+
 class YamlNode {
 public:
   YamlNode(YAML::Node node, std::shared_ptr<const std::string> file, std::string path);

@@ -15,6 +15,11 @@ namespace {
 // Slopes within this relative margin below mu0 are accepted: tables are printed to 4-5
 // significant digits, so a saturated segment computed as mu0 * dH is often rounded just under.
 constexpr double slope_rel_tol = 1e-3;
+// No material's polarization J = B - mu0 H exceeds this (FeCo alloys saturate near 2.45 T).
+// J rather than B: a table may run on into saturation, where B keeps growing as mu0 H.
+constexpr double max_polarization_T = 3.0;
+// The likely cause of an implausible table, appended to the messages.
+const char* const units_hint = "B must be in T and H in A/m, as [H, B]";
 // The inverse's bisection fallback stops when the update is this many ulps of the interval end.
 constexpr double inverse_ulps = 4.0;
 constexpr int inverse_max_iter = 200;
@@ -51,7 +56,23 @@ void check_slope(const std::vector<double>& h, const std::vector<double>& b, std
                             : i + 1 == h.size() ? "final slope dB/dH"
                                                 : "slope dB/dH";
   throw BhTableError(i, where + " = " + in_mu0(slope) +
-                            " is below mu0: non-physical (a ferromagnet has dB/dH >= mu0)");
+                            " is below mu0 (by more than the tolerance of 0.1 %): "
+                            "non-physical, a ferromagnet has dB/dH >= mu0 (is the B column "
+                            "the polarization J = B - mu0 H? " +
+                            units_hint + ")");
+}
+
+// A polarization above any material's: mostly a table given as [B, H] (or B in gauss).
+void check_polarization(const std::vector<double>& h, const std::vector<double>& b, std::size_t i) {
+  const double j = b[i] - mu0 * h[i];
+  if (j <= max_polarization_T)
+    return;
+  std::ostringstream s;
+  s.precision(6);
+  s << "B = " << b[i] << " T at H = " << h[i] << " A/m: the polarization B - mu0 H = " << j
+    << " T is above " << max_polarization_T
+    << " T, more than any magnetic material has (columns swapped? " << units_hint << ")";
+  throw BhTableError(i, s.str());
 }
 
 void validate(const std::vector<double>& h, const std::vector<double>& b) {
@@ -67,15 +88,26 @@ void validate(const std::vector<double>& h, const std::vector<double>& b) {
     const double b_prev = i == 0 ? 0.0 : b[i - 1];
     if (i > 0 || h[0] > 0.0) {
       if (!(h[i] > h_prev))
-        throw BhTableError(i, "H must increase strictly from row to row");
+        throw BhTableError(i, std::string("H must increase strictly from row to row (rows out "
+                                          "of order, or repeated? ") +
+                                  units_hint + ")");
       if (!(b[i] > b_prev))
-        throw BhTableError(i, "B must increase strictly from row to row");
+        throw BhTableError(i, std::string("B must increase strictly from row to row: the "
+                                          "curve is not monotone (a branch of a hysteresis "
+                                          "loop, or a typo? give the single-valued normal "
+                                          "magnetization curve; ") +
+                                  units_hint + ")");
     }
     check_slope(h, b, i);
   }
 }
 
 } // namespace
+
+void check_bh_table_plausible(const std::vector<double>& h_Apm, const std::vector<double>& b_T) {
+  for (std::size_t i = 0; i < std::min(h_Apm.size(), b_T.size()); ++i)
+    check_polarization(h_Apm, b_T, i);
+}
 
 BhCurve::BhCurve(std::vector<double> h_Apm, std::vector<double> b_T) {
   validate(h_Apm, b_T);

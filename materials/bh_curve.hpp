@@ -29,13 +29,25 @@ private:
   std::string reason_;
 };
 
+// Physical plausibility of a table a user gives (the case file's `bh`, a `bh_file`), beyond
+// what the interpolation needs (BhCurve's checks): throws BhTableError naming the first row
+// whose polarization B - mu0 H is above 3 T. No material has one (FeCo alloys saturate near
+// 2.45 T); mostly the table was given as [B, H], or B in gauss, and the message says so
+// ("columns swapped? B must be in T and H in A/m, as [H, B]"). The bound is on J, not B,
+// because a table may run on into saturation, where B keeps growing as mu0 H. Curves built
+// in code (tests, straight-line fixtures) may go beyond it.
+void check_bh_table_plausible(const std::vector<double>& h_Apm, const std::vector<double>& b_T);
+
 class BhCurve {
 public:
   // Throws std::invalid_argument with a message naming the first bad row (0-based index into
   // the given vectors) when the table is not usable: sizes differ, fewer than 2 points,
-  // H or B not strictly increasing, negative values, or a slope below mu0 at the end
-  // (non-physical: dB/dH >= mu0 must hold for a ferromagnet). Callers that read the table
-  // from a file turn this into an InputError with file, line and field.
+  // H or B not strictly increasing, negative values, a segment slope below mu0 by more than
+  // 0.1 % (non-physical: dB/dH >= mu0 must hold for a ferromagnet). Messages end with the
+  // likely cause ("... B must be in T and H in A/m, as [H, B]"). Tables a user gives are also
+  // checked by check_bh_table_plausible.
+  // Callers that read the table from a file turn this into an InputError with file, line and
+  // field.
   // Rows with no specific culprit (sizes differ, fewer than 2 points) name row 0.
   // The thrown type is BhTableError (a std::invalid_argument).
   BhCurve(std::vector<double> h_Apm, std::vector<double> b_T);

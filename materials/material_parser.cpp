@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "materials/bh_table_file.hpp"
+
 namespace magfem {
 
 namespace {
@@ -14,7 +16,7 @@ std::vector<std::string> law_keys(MaterialKind kind) {
   case MaterialKind::magnet:
     return {"B_r", "mu_r"};
   case MaterialKind::soft:
-    return {"bh"};
+    return {"bh", "bh_file"};
   }
   return {};
 }
@@ -46,6 +48,20 @@ std::string location(const YamlNode& node) {
   return node.file() + ":" + std::to_string(node.line());
 }
 
+// The curve of a soft material: exactly one of `bh` (inline rows) and `bh_file` (a CSV file).
+std::shared_ptr<const BhCurve> parse_soft_curve(const YamlNode& entry) {
+  const auto bh = entry.find("bh");
+  const auto bh_file = entry.find("bh_file");
+  if (bh && bh_file)
+    bh_file->fail("give either 'bh' (a table) or 'bh_file' (a CSV file), not both");
+  if (bh_file)
+    return load_bh_table_file(*bh_file);
+  if (!bh)
+    entry.fail("a soft material needs its B-H curve: 'bh' (a list of [H A/m, B T] rows) or "
+               "'bh_file' (a CSV file with columns H_Apm,B_T)");
+  return parse_bh_table(*bh);
+}
+
 // Overrides the law parameters of `m` (a library entry) with those given in `entry`.
 std::string apply_overrides(Material& m, const YamlNode& entry) {
   std::string changed;
@@ -58,9 +74,9 @@ std::string apply_overrides(Material& m, const YamlNode& entry) {
       m.mu_r = node->as_positive();
     if (key == "B_r")
       m.B_r = node->as_positive();
-    if (key == "bh")
-      m = Material::make_soft(m.name, parse_bh_table(*node), m.source);
   }
+  if (m.kind == MaterialKind::soft && (entry.has("bh") || entry.has("bh_file")))
+    m = Material::make_soft(m.name, parse_soft_curve(entry), m.source);
   return changed;
 }
 
@@ -106,6 +122,7 @@ std::shared_ptr<const BhCurve> parse_bh_table(const YamlNode& bh) {
     b.push_back(hb[1]);
   }
   try {
+    check_bh_table_plausible(h, b);
     return std::make_shared<const BhCurve>(std::move(h), std::move(b));
   } catch (const BhTableError& e) {
     if (e.row() < rows.size())
@@ -127,7 +144,7 @@ Material parse_material_entry(const std::string& name, const YamlNode& entry,
     return Material::make_magnet(name, entry.at("B_r").as_positive(),
                                  entry.at("mu_r").as_positive(), source);
   case MaterialKind::soft:
-    return Material::make_soft(name, parse_bh_table(entry.at("bh")), source);
+    return Material::make_soft(name, parse_soft_curve(entry), source);
   }
   entry.fail("unhandled material kind");
 }
@@ -139,7 +156,7 @@ std::map<std::string, Material> parse_materials(const YamlNode& materials_map,
   for (const auto& name : materials_map.keys()) {
     const YamlNode entry = materials_map.at(name);
     // Check the spelling of every key first, so a typo is named as such.
-    entry.allow_keys({"kind", "library", "mu_r", "B_r", "bh", "source"});
+    entry.allow_keys({"kind", "library", "mu_r", "B_r", "bh", "bh_file", "source"});
     if (entry.has("library") && entry.has("kind"))
       entry.at("kind").fail("give either 'kind' or 'library', not both");
     if (entry.has("library")) {

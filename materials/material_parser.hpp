@@ -7,6 +7,7 @@
 //   pm:    {kind: magnet, B_r: 1.0, mu_r: 1.05}
 //   core:  {kind: linear, mu_r: 1000}
 //   iron:  {kind: soft, bh: [[0, 0], [100, 0.5], [300, 1.2], [1000, 1.5], [10000, 1.9]]}
+//   iron2: {kind: soft, bh_file: steel.csv}  # the same table in a CSV file (bh_table_file.hpp)
 //   n42:   {library: N42, B_r: 1.30}   # a bundled entry; fields of its kind may be overridden
 //   steel: {library: steel_1010}
 // Optional in every entry: `source: "..."` (where the data come from, shown in reports).
@@ -35,8 +36,8 @@ const Material& resolve_material(const std::string& name,
                                  const MaterialLibrary& library, const YamlNode& where);
 
 // One self-contained entry (`kind` required). Accepted keys: those of its kind (linear:
-// mu_r; magnet: B_r, mu_r; soft: bh) plus `kind` and `extra_keys` (the caller reads those).
-// `source` is taken from the entry when present, else `default_source`.
+// mu_r; magnet: B_r, mu_r; soft: exactly one of bh and bh_file) plus `kind` and `extra_keys` (the
+// caller reads those). `source` is taken from the entry when present, else `default_source`.
 Material parse_material_entry(const std::string& name, const YamlNode& entry,
                               const std::vector<std::string>& extra_keys,
                               const std::string& default_source);

@@ -2,6 +2,7 @@
 // Linear tetrahedral mesh of a 3D domain with a part index per tetrahedron, as built by
 // build_mesh_3d (mesh/mesher3d.hpp). Higher-order nodes are created by the solver's DOF map.
 #include <array>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,6 +27,9 @@ struct Mesh3D {
   double shell_outer_radius = 0;
   MeshQuality3D quality;
   std::vector<double> part_volumes; // per Geometry3D part, m^3 (sum of its tet volumes)
+  // What the mesher could not honour but did not refuse (e.g. an air gap with fewer than one
+  // element across it at a coarse --mesh-scale); the run reports them (summary.json warnings).
+  std::vector<std::string> warnings;
 
   std::size_t n_nodes() const { return nodes.size(); }
   std::size_t n_tets() const { return tets.size(); }

@@ -5,8 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include <tetgen.h>
 
@@ -179,9 +183,16 @@ bool is_air_part(const Geometry3D& geo, const GridFace3D& face) {
   return part >= 0 && geo.parts[static_cast<std::size_t>(part)].air;
 }
 
+// Air gaps the mesh cannot resolve: per pair of parts (lower index first), the narrowest such
+// gap (m) and the element size across it (m).
+using UnresolvedGaps = std::map<std::pair<int, int>, std::pair<double, double>>;
+
 // Adds point sources for every face sample (its intrinsic size) and for narrow air gaps.
+// Gaps across which the size stays above the gap width (fewer than one element across: a
+// --mesh-scale above gap_layers) are recorded in `unresolved` when given.
 void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
-                         const FaceSizing& fs, const FaceSoup3D& soup, SizeField3D& field) {
+                         const FaceSizing& fs, const FaceSoup3D& soup, SizeField3D& field,
+                         UnresolvedGaps* unresolved) {
   const int layers = std::max(1, rules.geo.options.gap_layers);
   const double eps = 1e-7 * rules.geo.outer.radius;
   for (std::size_t f = 0; f < dec.faces.size(); ++f) {
@@ -216,22 +227,33 @@ void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
       double w = soup.distance_to_face(x + eps * n, n, min_gap, &hit, true) + eps;
       if (hit >= 0 && is_air_part(rules.geo, dec.faces[hit]))
         w = std::numeric_limits<double>::infinity();
-      return std::pair{w, n};
+      return std::tuple{w, n, hit};
     };
     // Coarse pass: the narrowest gap seen from this face decides the fine sample spacing.
     double narrowest = std::numeric_limits<double>::infinity();
     for (const Vec3& x : soup.samples()[f].points) {
       check_not_coincident(rules.geo, dec, soup, face, x, side * face_normal(fr, face, x), eps,
                            intrinsic(x));
-      const double w = gap(x).first;
+      const auto [w, n, hit] = gap(x);
       if (rules.scale * w / layers < intrinsic(x))
         narrowest = std::min(narrowest, w);
+      const double across = std::min(rules.scale * w / layers, intrinsic(x));
+      if (unresolved && hit >= 0 && std::isfinite(w) && across > w) {
+        const GridFace3D& other = dec.faces[static_cast<std::size_t>(hit)];
+        const int self = air_high ? face.label_low : face.label_high;
+        const int them = is_air(other.label_low) ? other.label_high : other.label_low;
+        if (them >= 0 && them != self) {
+          auto& seen = (*unresolved)[{std::min(self, them), std::max(self, them)}];
+          if (seen.first == 0 || w < seen.first)
+            seen = {w, across};
+        }
+      }
     }
     if (!std::isfinite(narrowest))
       continue;
     const double step = narrowest / layers;
     for (const Vec3& x : sample_face(fr, face, std::min(step, fs.spacing[f])).points) {
-      const auto [w, n] = gap(x);
+      const auto [w, n, hit] = gap(x);
       const double h = rules.scale * w / layers;
       if (h >= intrinsic(x))
         continue;
@@ -452,6 +474,29 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
   return m;
 }
 
+// One warning per pair of parts with an unresolved gap. A warning, not a refusal: the mesh is
+// valid and the answer usable (a coarse --mesh-scale run is often a deliberate first look or
+// a convergence study's coarsest step), but the field in the gap, and a force across it, are
+// not resolved.
+std::vector<std::string> unresolved_gap_warnings(const Geometry3D& geo, double scale,
+                                                 const UnresolvedGaps& unresolved) {
+  std::vector<std::string> out;
+  const int layers = std::max(1, geo.options.gap_layers);
+  for (const auto& [pair, gap] : unresolved) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the %.3g mm air gap between parts '%s' and '%s' has elements of about %.3g "
+                  "mm across it, fewer than one layer (gap_layers %d at mesh scale %.3g): the "
+                  "field in the gap is not resolved; use a mesh scale of at most %d or a smaller "
+                  "mesh size near the gap",
+                  gap.first * 1e3, geo.parts[static_cast<std::size_t>(pair.first)].name.c_str(),
+                  geo.parts[static_cast<std::size_t>(pair.second)].name.c_str(), gap.second * 1e3,
+                  layers, scale, layers);
+    out.emplace_back(text);
+  }
+  return out;
+}
+
 // The size field capped by the region size of the part (or air) at x: TetGen's volume bound
 // keeps elements inside a part no larger than its region size even far from any surface.
 MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
@@ -473,9 +518,10 @@ MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
 
 SizeField3D build_size_field(const GridDecomposition3D& dec, const SizeRules& rules,
                              const FaceSizing& fs, const FaceSoup3D& soup,
-                             const std::vector<ProbeSurface>& refine) {
+                             const std::vector<ProbeSurface>& refine,
+                             UnresolvedGaps* unresolved = nullptr) {
   SizeField3D field(grading);
-  add_surface_sources(dec, rules, fs, soup, field);
+  add_surface_sources(dec, rules, fs, soup, field, unresolved);
   if (rules.geo.options.probe_size > 0)
     for (const ProbeSurface& p : refine)
       field.add_probe(p, rules.scale * rules.geo.options.probe_size);
@@ -507,7 +553,8 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   const FaceSoup3D soup(dec, fs.soup_spacing);
   soup.check_parts(geo);
 
-  const SizeField3D field = build_size_field(dec, rules, fs, soup, refine);
+  UnresolvedGaps unresolved;
+  const SizeField3D field = build_size_field(dec, rules, fs, soup, refine, &unresolved);
   if (check)
     check(estimate_mesh_size(geo, rules, field),
           [&](double factor) { return estimate_scaled(geo, refine, factor).tetrahedra; });
@@ -518,7 +565,9 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   fill_plc(surf, in);
   add_region_seeds(dec, surf, rules, in);
   run_tetgen(geo, in, out, field);
-  return collect_mesh(geo, dec, surf, out);
+  Mesh3D m = collect_mesh(geo, dec, surf, out);
+  m.warnings = unresolved_gap_warnings(geo, rules.scale, unresolved);
+  return m;
 }
 
 MeshEstimate3D estimate_geometry_mesh_3d(const Geometry3D& geo,

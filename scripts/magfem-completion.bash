@@ -6,7 +6,7 @@ _magfem() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   command="${COMP_WORDS[1]}"
-  local commands="solve analytic compare sweep study optimize actuator validate help"
+  local commands="solve analytic compare sweep study optimize actuator materials validate help"
 
   if ((COMP_CWORD == 1)); then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
@@ -20,6 +20,7 @@ _magfem() {
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
     --mesh-scale | --max-memory | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
       --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature) return ;;
+    --export) COMPREPLY=($(compgen -W "steel_1010 steel_1018 M-19 pure_iron" -- "$cur")); return ;;
     --objective | --maximize | --minimize)
       COMPREPLY=($(compgen -W "peak_torque torque_at:" -- "$cur"))
       return
@@ -31,6 +32,7 @@ _magfem() {
     analytic) options="--out --model --tolerance --n-max --param --help" ;;
     compare) options="--help" ;;
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --help" ;;
+    materials) options="--export --help" ;;
     validate) options="--tier --only --source --jobs --resume --catalogue --out --help" ;;
     study) options="--param --objective --rotate --axis --angles --analytic --fe --mesh-scale --order --jobs --quiet --resume --out --help" ;;
     actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --quiet --out --help" ;;

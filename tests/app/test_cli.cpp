@@ -24,6 +24,8 @@
 
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
+#include "materials/bh_table_file.hpp"
+#include "materials/material_library.hpp"
 #include "run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -455,4 +457,35 @@ probes:
     EXPECT_NE(e.out.find("--param"), std::string::npos) << p << "\n" << e.out;
   }
   EXPECT_FALSE(fs::exists(bad));
+}
+
+// `magfem materials --export NAME` writes what `bh_file:` reads: every bundled curve comes back
+// bit for bit (a lossy number format or a missing origin row would fail); a magnet or an
+// unknown name is refused naming --export.
+TEST(Cli, MaterialsExportReadsBackAsTheLibraryCurve) {
+  const fs::path dir = fs::temp_directory_path() / "magfem_tests" / "materials_export";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto& lib = magfem::MaterialLibrary::bundled();
+  for (const auto& name : lib.names()) {
+    const auto& curve = lib.find(name)->curve;
+    if (!curve)
+      continue;
+    const fs::path csv = dir / (name + ".csv");
+    const Outcome o =
+        magfem::test::run_command(std::string(magfem::test::magfem_binary()) +
+                                  " materials --export " + name + " > " + csv.string());
+    ASSERT_EQ(o.status, 0) << o.out;
+    const auto rows = magfem::read_bh_table_file(csv.string(), "");
+    EXPECT_EQ(rows.h_Apm, curve->h_table()) << name;
+    EXPECT_EQ(rows.b_T, curve->b_table()) << name;
+  }
+  for (const char* bad : {"N42", "unobtainium"}) {
+    const Outcome o = magfem::test::run_cli(std::string("materials --export ") + bad);
+    EXPECT_EQ(o.status, 2) << o.out;
+    EXPECT_NE(o.out.find("--export"), std::string::npos) << o.out;
+  }
+  const Outcome list = magfem::test::run_cli("materials");
+  EXPECT_EQ(list.status, 0);
+  EXPECT_NE(list.out.find("steel_1010    soft"), std::string::npos) << list.out;
 }

@@ -161,5 +161,40 @@ solver: {order: 1}
   }
 }
 
+// Issue 36: `--mesh-scale` above gap_layers leaves fewer than one element across an air gap.
+// The run goes on, and says so on stderr and in summary.json `warnings`, naming the gap's width
+// and both parts (a 1 mm gap between two spheres, gap_layers 2, scale 2.5: 1.25 mm elements).
+// It would fail if the mesher's warnings were dropped on the way to either output.
+TEST(ResultChecks, GapWithoutAnElementAcrossIsWarnedOnStderrAndInTheSummary) {
+  const std::string path = test::write_temp_case("gap_scale.yaml", R"(dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
+  core: {kind: linear, mu_r: 100}
+regions:
+  - {name: magnet, shape: spherical_segment, r_inner: 0, r_outer: 6, material: pm,
+     magnetization: {type: parallel, direction: [1, 0, 0]}}
+  - {name: iron, shape: spherical_segment, r_inner: 0, r_outer: 5, material: core,
+     placement: {translate: [12, 0, 0]}}
+boundary: {type: open, radius: 25, shell_ratio: 1.5}
+mesh: {size: 8, chord_tolerance: 0.1, gap_layers: 2}
+solver: {order: 1}
+)");
+  const fs::path out = fs::temp_directory_path() / "magfem_tests" / "gap_scale";
+  fs::remove_all(out);
+  const auto [status, text] =
+      test::run_cli("solve " + path + " --mesh-scale 2.5 --quiet --out " + out.string());
+  EXPECT_EQ(status, 0) << text;
+  // "magfem: warning:" is the stderr line (the console summary on stdout says "warning  ").
+  EXPECT_NE(text.find("magfem: warning: the 1 mm air gap between parts 'magnet' and 'iron'"),
+            std::string::npos)
+      << text;
+  std::ifstream summary(out / "summary.json");
+  std::stringstream json;
+  json << summary.rdbuf();
+  EXPECT_NE(json.str().find("1 mm air gap between parts 'magnet' and 'iron'"), std::string::npos)
+      << json.str();
+}
+
 } // namespace
 } // namespace magfem

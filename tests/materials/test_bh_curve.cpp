@@ -3,6 +3,9 @@
 
 #include <cfloat>
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/constants.hpp"
@@ -307,4 +310,68 @@ TEST(BhCurve, EnergyDensityIsTheIntegralOfHAcrossTableKnotsAndTheExtrapolation) 
     EXPECT_NEAR(curve.energy_density(b), reference, 1e-6 * reference) << "B " << b;
     EXPECT_DOUBLE_EQ(curve.energy_density(-b), curve.energy_density(b));
   }
+}
+
+namespace {
+
+// The BhTableError a table from a user gives (the parsers' checks); fails the test when none
+// is thrown.
+BhTableError table_error(const std::vector<double>& h, const std::vector<double>& b) {
+  try {
+    magfem::check_bh_table_plausible(h, b);
+    BhCurve c(h, b);
+  } catch (const BhTableError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "table accepted";
+  return BhTableError(0, "");
+}
+
+bool says(const BhTableError& e, const std::string& text) {
+  return e.reason().find(text) != std::string::npos;
+}
+
+} // namespace
+
+// The issue-36 table: a real curve given as [B, H] is monotone and steep, so only the
+// polarization bound catches it.
+TEST(BhCurve, SwappedColumnsAreRefusedWithTheLikelyCause) {
+  const auto& steel = *magfem::MaterialLibrary::bundled().find("steel_1010")->curve;
+  const auto e = table_error(steel.b_table(), steel.h_table());
+  EXPECT_EQ(e.row(), 1u); // row 0 is the origin
+  EXPECT_TRUE(says(e, "columns swapped? B must be in T and H in A/m, as [H, B]")) << e.reason();
+  EXPECT_TRUE(says(e, "above 3 T")) << e.reason();
+  // B in gauss likewise.
+  EXPECT_TRUE(says(table_error({100, 1000}, {5000, 15000}), "columns swapped?"));
+}
+
+// B itself may pass 3 T far in saturation (B = J + mu0 H): the bound is on J = B - mu0 H.
+TEST(BhCurve, SaturatedTablePastThreeTeslaIsAccepted) {
+  const double j = 2.0;
+  EXPECT_NO_THROW(
+      magfem::check_bh_table_plausible({1000, 1e5, 2e6}, {1.5, j + mu0 * 1e5, j + mu0 * 2e6}));
+  EXPECT_TRUE(says(table_error({1000, 1e5}, {1.5, 3.01 + mu0 * 1e5}), "above 3 T"));
+}
+
+TEST(BhCurve, NonMonotoneTableIsRefusedWithTheReason) {
+  const auto e = table_error({0, 100, 200, 300}, {0, 0.5, 1.0, 0.9});
+  EXPECT_EQ(e.row(), 3u);
+  EXPECT_TRUE(says(e, "not monotone")) << e.reason();
+  EXPECT_TRUE(says(e, "B must be in T and H in A/m, as [H, B]")) << e.reason();
+}
+
+// The stated tolerance: a final slope down to 0.1 % below mu0 is rounding in a printed table.
+TEST(BhCurve, FinalSlopeBelowMu0BeyondTheToleranceIsRefused) {
+  const auto table = [](double final_slope) {
+    return std::pair<std::vector<double>, std::vector<double>>{{100, 1000, 101000},
+                                                               {0.5, 1.5, 1.5 + final_slope * 1e5}};
+  };
+  auto [h, b] = table(0.9995 * mu0);
+  EXPECT_NO_THROW(BhCurve(h, b));
+  std::tie(h, b) = table(0.998 * mu0);
+  const auto e = table_error(h, b);
+  EXPECT_EQ(e.row(), 2u);
+  EXPECT_TRUE(says(e, "final slope dB/dH")) << e.reason();
+  EXPECT_TRUE(says(e, "0.1 %")) << e.reason();
+  EXPECT_TRUE(says(e, "polarization J")) << e.reason();
 }

@@ -629,5 +629,26 @@ TEST(Mesher3D, MeshesBuiltOnTwoThreadsAtOnceEqualTheSerialMesh) {
   }
 }
 
+// Issue 36: `--mesh-scale 2.5` with `gap_layers: 2` put elements larger than the gap across
+// it, silently. Two spheres 1 mm apart: at scale 1 the gap has its 2 layers and nothing is
+// said; at 2.5 (1.25 mm across a 1 mm gap) the mesh warns, naming the gap and both parts.
+TEST(Mesher3D, GapWithFewerThanOneElementAcrossIsWarnedAbout) {
+  auto warnings = [](double scale) {
+    Geometry3D g = domain(20 * mm, 8 * mm, 0.1 * mm);
+    g.options.gap_layers = 2;
+    g.options.size_scale = scale;
+    g.parts.push_back(segment("ball", 0, 6 * mm, 0, pi, 0, 2 * pi));
+    Part3D p = segment("other", 0, 5 * mm, 0, pi, 0, 2 * pi);
+    p.placement.translation = Eigen::Vector3d(12 * mm, 0, 0); // 1 mm from "ball"
+    g.parts.push_back(p);
+    return build_mesh_3d(g).warnings;
+  };
+  EXPECT_TRUE(warnings(1.0).empty());
+  const auto coarse = warnings(2.5);
+  ASSERT_EQ(coarse.size(), 1u);
+  for (const char* text : {"1 mm air gap", "'ball'", "'other'", "gap_layers 2", "scale 2.5"})
+    EXPECT_NE(coarse[0].find(text), std::string::npos) << text << " in: " << coarse[0];
+}
+
 } // namespace
 } // namespace magfem
