@@ -12,7 +12,7 @@
 namespace magfem {
 namespace {
 
-// Calibrated (README, "Memory guard"): MB, and kB per tetrahedron by order, fitted to the
+// Calibrated (docs/performance.md, "Memory guard calibration"): MB, and kB per tetrahedron by order, fitted to the
 // measured peaks of the 3D examples (order 2: DOF map, matrix and the incomplete-Cholesky
 // or CHOLMOD factor dominate; order 1: TetGen's structures and the mesh).
 constexpr double base_mb = 50;

@@ -6,7 +6,7 @@
 // Peak memory model: a fixed base (libraries, the size field, the surface mesh) plus a cost
 // per tetrahedron that depends on the element order (TetGen's own structures while meshing;
 // the DOF map, the matrix and the linear solver's factor or preconditioner afterwards).
-// Calibrated on the 3D examples (README, "Memory guard": estimated against measured peak).
+// Calibrated on the 3D examples (docs/performance.md, "Memory guard calibration": estimated against measured peak).
 #include <functional>
 #include <string>
 

@@ -6,7 +6,7 @@
 namespace magfem {
 
 // Calibrated: TetGen made 1 / 0.49 times the tetrahedra a value of 16 predicted (geometric
-// mean over the 3D examples and a box magnet at several mesh scales, README "Memory guard").
+// mean over the 3D examples and a box magnet at several mesh scales, docs/performance.md "Memory guard calibration").
 const double tets_per_h3 = 32.6;
 
 namespace {

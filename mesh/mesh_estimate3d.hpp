@@ -9,7 +9,7 @@
 // integral runs over an octree refined until every cell is no larger than h at its centre;
 // the field grows by at most its grading (0.3) across a cell, so the cell's value is within
 // about 30 % of the exact integral over it. tets_per_h3 is calibrated on the 3D examples
-// (README, "Memory guard").
+// (docs/performance.md, "Memory guard calibration").
 #include <functional>
 
 #include "mesh/geometry3d.hpp"
@@ -18,8 +18,8 @@ namespace magfem {
 
 // Tetrahedra per h^3 of a TetGen quality mesh whose longest edges are bounded by h: a
 // regular tetrahedron of edge h has volume h^3 / (6 sqrt 2) = 0.118 h^3 (8.5 per h^3), and
-// the bound is a maximum, so the mean edge is shorter (calibrated: 32.6, README "Memory
-// guard").
+// the bound is a maximum, so the mean edge is shorter (calibrated: 32.6, docs/performance.md
+// "Memory guard calibration").
 extern const double tets_per_h3;
 
 struct MeshEstimate3D {

@@ -2,7 +2,7 @@
 # Set-up + build + the whole default test suite (what CI runs), then the input readers under
 # AddressSanitizer and UndefinedBehaviorSanitizer: the parsers see every user's input and
 # are built in seconds; the whole suite under sanitizers (bash scripts/sanitize.sh, ~10 min of
-# build and 7 min of tests on 2 cores) is run before each release instead (README).
+# build and 7 min of tests on 2 cores) is run before each release instead (docs/reliability.md).
 #
 #   bash scripts/test.sh          the default suite (every label but `long`), CI
 #   bash scripts/test.sh --long   the long tier: the tests labelled `long` (fine meshes, TEAM 20

@@ -8,7 +8,7 @@
 // assembly and B recovery are bitwise thread-count independent by construction, but OpenBLAS
 // may split its kernels by thread count; such sums differ in their last bits, a relative 1e-16 per
 // operation. Stated tolerance: 1e-12 relative to the largest value of the same quantity
-// (10^4 ulps of headroom); measured: see the README.
+// (10^4 ulps of headroom); measured: see docs/reliability.md.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,7 +1,7 @@
 // The memory guard (app/memory_guard.hpp) through the binary: a 3D case whose estimated peak
 // memory exceeds --max-memory stops with exit 2 before meshing, writes nothing, and names a
 // --mesh-scale; that scale does fit: the run it proposes passes the guard and its measured
-// peak memory stays under the limit (the estimate's calibration, README "Memory guard").
+// peak memory stays under the limit (the estimate's calibration, docs/performance.md "Memory guard calibration").
 // The case is a box magnet: flat faces, so no chord limit stops the mesh from coarsening.
 // A parallel sweep shares the limit among the positions that run at once.
 #include <gtest/gtest.h>
