@@ -29,7 +29,7 @@ constexpr std::array<CommandHelp, 9> commands{{
      "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"
      "  --param NAME=VALUE  set one of the case file's `parameters:` (repeatable)\n"
      "  Linear 3D cases also run distributed: mpirun -n N magfem solve CASE.yaml --out DIR\n"
-     "  (each process meshes, assembles 1/N of the elements; rank 0 writes; README).\n"},
+     "  (each process meshes, assembles 1/N of the elements; rank 0 writes; docs/performance.md).\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
      "[--n-max N]\n"

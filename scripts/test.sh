@@ -8,7 +8,7 @@
 #   bash scripts/test.sh --long   the long tier: the tests labelled `long` (fine meshes, TEAM 20
 #                                 at every excitation, the compensator's FE sweep, the thesis's
 #                                 coil-pitch study) and `magfem validate --tier full`, then a
-#                                 summary; budget about 2 h on 2 cores (docs/long_tier.md)
+#                                 summary; about 50 min of tests + the full validation on 2 cores (docs/development.md)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
