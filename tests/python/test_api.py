@@ -14,10 +14,35 @@ class PackageTest(unittest.TestCase):
         self.assertRegex(magfem.__version__, r"^\d+\.\d+\.\d+$")
 
     def test_exception_hierarchy(self):
-        err = magfem.InputError("bad key", file="<dict>", line=3, field="regions[0].materal")
-        self.assertIsInstance(err, ValueError)
-        self.assertEqual((err.file, err.line, err.field), ("<dict>", 3, "regions[0].materal"))
+        self.assertTrue(issubclass(magfem.InputError, ValueError))
         self.assertTrue(issubclass(magfem.SolveError, RuntimeError))
+
+
+EXAMPLE = os.path.join(os.environ.get("MAGFEM_SOURCE_DIR", "."), "examples/2d/diametric_cylinder.yaml")
+
+
+class CaseTest(unittest.TestCase):
+    def test_load_example(self):
+        case = magfem.Case.load(EXAMPLE)
+        self.assertIn("diametrically magnetized cylinder", case.to_yaml())
+        self.assertEqual(case.with_params().to_yaml(), case.to_yaml())
+
+    def test_from_dict_wrong_key_names_the_field(self):
+        import yaml
+        with open(EXAMPLE, encoding="utf-8") as f:
+            d = yaml.safe_load(f)
+        d["no_such_key"] = 1
+        with self.assertRaises(magfem.InputError) as ctx:
+            magfem.Case.from_dict(d)
+        self.assertIsInstance(ctx.exception, ValueError)
+        self.assertEqual(ctx.exception.file, "<dict>")
+        self.assertIn("no_such_key", str(ctx.exception.field) + str(ctx.exception))
+
+    def test_yaml_syntax_error_carries_the_line(self):
+        with self.assertRaises(magfem.InputError) as ctx:
+            magfem.Case(text="dimension: 2\nregions: [\n  {a: 1\n", name="<text>")
+        self.assertIsNotNone(ctx.exception.line)
+        self.assertGreaterEqual(ctx.exception.line, 2)
 
 
 if __name__ == "__main__":
