@@ -85,7 +85,7 @@ std::vector<Source> axi_sources(const CaseSpec& spec, std::vector<std::string>& 
     const int i = static_cast<int>(n);
     const RegionSpec& region = spec.regions[n];
     const Material& mat = *region.material;
-    const bool carries_current = region.ampere_turns != 0 || region.current_density != 0;
+    const bool carries_current = region.carries_current();
     if (mat.is_magnet()) {
       const Magnetization& m = region.magnetization;
       if (m.pattern != Magnetization::Pattern::parallel || std::abs(m.direction.x()) > 1e-12)

@@ -4,8 +4,11 @@
 // finished them (--resume), else computed on a pool of `workers` threads (the calling thread
 // is one of them) and recorded as each finishes; failed positions are not recorded, so that
 // --resume tries them again. Rows come back in the order of the positions whatever the order
-// they finished in.
+// they finished in. solve(row, position) fills a fresh row; the runner times it, and an
+// exception becomes the row's error (ok false): a failed position never stops the others.
 #include <atomic>
+#include <chrono>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -25,7 +28,7 @@ template <class Row> struct PositionCodec {
 template <class Row>
 std::vector<Row> run_positions(const std::vector<double>& positions, int workers,
                                RunCheckpoint* checkpoint, const PositionCodec<Row>& codec,
-                               const std::function<Row(double)>& solve,
+                               const std::function<void(Row&, double)>& solve,
                                const std::function<void(int done, int total)>& progress) {
   const int total = static_cast<int>(positions.size());
   std::vector<Row> rows(positions.size());
@@ -39,7 +42,16 @@ std::vector<Row> run_positions(const std::vector<double>& positions, int workers
       if (saved) {
         rows[i] = codec.from_json(*saved, positions[i]);
       } else {
-        rows[i] = solve(positions[i]);
+        const auto t0 = std::chrono::steady_clock::now();
+        try {
+          solve(rows[i], positions[i]);
+          rows[i].ok = true;
+        } catch (const std::exception& e) {
+          rows[i].ok = false;
+          rows[i].error = e.what();
+        }
+        rows[i].seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (checkpoint && rows[i].ok)
           checkpoint->record(key, codec.to_json(rows[i]));
       }

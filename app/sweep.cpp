@@ -1,12 +1,9 @@
 #include "app/sweep.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -184,98 +181,61 @@ CaseSpec fe_position_case(CaseSpec spec, const StressSurface& surface) {
 }
 
 // Force and torque (about the origin) on the rotated group at one position.
-SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, const RunOverrides& fe,
-                        double angle_deg) {
-  SweepRow row;
+void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
+                    const RunOverrides& fe, double angle_deg) {
   row.angle_deg = angle_deg;
-  const auto t0 = std::chrono::steady_clock::now();
-  try {
-    CaseSpec spec = rotate_group(base, o.group, o.axis, angle_deg * deg_to_rad, o.point);
-    ForceResult on_group;
-    if (o.analytic) {
-      const AnalyticScene scene = analytic_scene(spec);
-      if (!scene.spheres.empty())
-        throw InputError(spec.file, 0, "regions",
-                         "sweep --analytic: the charge interaction has no permeable boundaries");
-      std::vector<AnalyticMagnet> group, rest;
-      for (const auto& m : scene.magnets) {
-        bool member = false;
-        for (const auto& p : spec.geometry3d.parts)
-          if (p.name == m.name)
-            member = in_group(p, o.group);
-        (member ? group : rest).push_back(m);
-      }
-      if (auto harmonic = harmonic_position(group, rest)) {
-        on_group.force = harmonic->force;
-        on_group.torque = harmonic->torque;
-        row.method = "harmonic_interaction";
-        row.n_max = harmonic->n_max;
-        row.torque_bound = harmonic->torque_bound;
-        row.force_bound = harmonic->force_bound;
-      } else if (auto ext = exterior_position(group, rest, o.analytic_tolerance)) {
-        on_group.force = ext->on.force;
-        on_group.torque = ext->on.torque;
-        row.method = "exterior_field_interaction";
-        row.torque_bound = ext->torque_error;
-        row.force_bound = ext->force_error;
-      } else {
-        PairInteractionOptions popt;
-        popt.tolerance = o.analytic_tolerance;
-        const PairInteraction p = pair_interaction(group, rest, Vec3::Zero(), popt);
-        on_group.force = p.on_A.force;
-        on_group.torque = p.on_A.torque;
-        row.method = "charge_pair_interaction";
-        row.torque_bound = p.torque_error;
-        row.force_bound = p.force_error;
-      }
-    } else {
-      const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
-      const auto run = run_case_3d(fe_position_case(std::move(spec), surface), fe);
-      const ForceResult& inside = run->forces.back();
-      // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
-      // rest of the (isolated) system, torque about the same point included.
-      on_group = inside;
-      if (surface.group_outside)
-        on_group.force = -inside.force, on_group.torque = -inside.torque;
-      row.unknowns = static_cast<long>(run->dofs->n_dofs());
-      row.method = "maxwell_stress_sphere";
+  CaseSpec spec = rotate_group(base, o.group, o.axis, angle_deg * deg_to_rad, o.point);
+  ForceResult on_group;
+  if (o.analytic) {
+    const AnalyticScene scene = analytic_scene(spec);
+    if (!scene.spheres.empty())
+      throw InputError(spec.file, 0, "regions",
+                       "sweep --analytic: the charge interaction has no permeable boundaries");
+    std::vector<AnalyticMagnet> group, rest;
+    for (const auto& m : scene.magnets) {
+      bool member = false;
+      for (const auto& p : spec.geometry3d.parts)
+        if (p.name == m.name)
+          member = in_group(p, o.group);
+      (member ? group : rest).push_back(m);
     }
-    row.force = on_group.force;
-    row.torque = on_group.torque;
-    row.ok = true;
-  } catch (const std::exception& e) {
-    row.error = e.what();
+    if (auto harmonic = harmonic_position(group, rest)) {
+      on_group.force = harmonic->force;
+      on_group.torque = harmonic->torque;
+      row.method = "harmonic_interaction";
+      row.n_max = harmonic->n_max;
+      row.torque_bound = harmonic->torque_bound;
+      row.force_bound = harmonic->force_bound;
+    } else if (auto ext = exterior_position(group, rest, o.analytic_tolerance)) {
+      on_group.force = ext->on.force;
+      on_group.torque = ext->on.torque;
+      row.method = "exterior_field_interaction";
+      row.torque_bound = ext->torque_error;
+      row.force_bound = ext->force_error;
+    } else {
+      PairInteractionOptions popt;
+      popt.tolerance = o.analytic_tolerance;
+      const PairInteraction p = pair_interaction(group, rest, Vec3::Zero(), popt);
+      on_group.force = p.on_A.force;
+      on_group.torque = p.on_A.torque;
+      row.method = "charge_pair_interaction";
+      row.torque_bound = p.torque_error;
+      row.force_bound = p.force_error;
+    }
+  } else {
+    const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
+    const auto run = run_case_3d(fe_position_case(std::move(spec), surface), fe);
+    const ForceResult& inside = run->forces.back();
+    // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
+    // rest of the (isolated) system, torque about the same point included.
+    on_group = inside;
+    if (surface.group_outside)
+      on_group.force = -inside.force, on_group.torque = -inside.torque;
+    row.unknowns = static_cast<long>(run->dofs->n_dofs());
+    row.method = "maxwell_stress_sphere";
   }
-  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return row;
-}
-
-nlohmann::json row_to_json(const SweepRow& r) {
-  return {{"angle_deg", r.angle_deg},
-          {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
-          {"force", {r.force.x(), r.force.y(), r.force.z()}},
-          {"seconds", r.seconds},
-          {"unknowns", r.unknowns},
-          {"method", r.method},
-          {"n_max", r.n_max},
-          {"torque_bound", r.torque_bound},
-          {"force_bound", r.force_bound}};
-}
-
-SweepRow row_from_json(const nlohmann::json& j, double /*angle_deg: stored in j*/) {
-  SweepRow r;
-  r.angle_deg = j.at("angle_deg").get<double>();
-  for (int k = 0; k < 3; ++k)
-    r.torque[k] = j.at("torque").at(k).get<double>(),
-    r.force[k] = j.at("force").at(k).get<double>();
-  r.seconds = j.at("seconds").get<double>();
-  r.unknowns = j.at("unknowns").get<long>();
-  r.method = j.at("method").get<std::string>();
-  r.n_max = j.at("n_max").get<int>();
-  r.torque_bound = j.at("torque_bound").get<double>();
-  r.force_bound = j.at("force_bound").get<double>();
-  r.ok = true;
-  return r;
+  row.force = on_group.force;
+  row.torque = on_group.torque;
 }
 
 // Every FE position needs its own memory while it runs: with W at once they share the memory
@@ -432,6 +392,34 @@ Eigen::Vector3d parse_axis(const std::string& text) {
   return Vec3(v[0], v[1], v[2]).normalized();
 }
 
+nlohmann::json sweep_row_to_json(const SweepRow& r) {
+  return {{"angle_deg", r.angle_deg},
+          {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
+          {"force", {r.force.x(), r.force.y(), r.force.z()}},
+          {"seconds", r.seconds},
+          {"unknowns", r.unknowns},
+          {"method", r.method},
+          {"n_max", r.n_max},
+          {"torque_bound", r.torque_bound},
+          {"force_bound", r.force_bound}};
+}
+
+SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored in j*/) {
+  SweepRow r;
+  r.angle_deg = j.at("angle_deg").get<double>();
+  for (int k = 0; k < 3; ++k)
+    r.torque[k] = j.at("torque").at(k).get<double>(),
+    r.force[k] = j.at("force").at(k).get<double>();
+  r.seconds = j.at("seconds").get<double>();
+  r.unknowns = j.at("unknowns").get<long>();
+  r.method = j.at("method").get<std::string>();
+  r.n_max = j.at("n_max").get<int>();
+  r.torque_bound = j.at("torque_bound").get<double>();
+  r.force_bound = j.at("force_bound").get<double>();
+  r.ok = true;
+  return r;
+}
+
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
                                 const SweepProgress& progress, SweepJobs* jobs_used) {
   // Fail early, on the main thread, for mistakes that every position would repeat.
@@ -469,8 +457,9 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   if (workers > 1 && jobs.memory_limit_mb > 0)
     fe.parallel_runs = workers, fe.shared_memory_mb = jobs.memory_limit_mb;
   return run_positions<SweepRow>(
-      options.angles_deg, workers, options.checkpoint, {row_to_json, row_from_json},
-      [&](double angle_deg) { return solve_position(spec, options, fe, angle_deg); }, progress);
+      options.angles_deg, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
+      progress);
 }
 
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options) {

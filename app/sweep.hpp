@@ -17,6 +17,8 @@
 
 #include <Eigen/Core>
 
+#include <nlohmann/json.hpp>
+
 #include "casefile/case_spec.hpp"
 
 namespace magfem {
@@ -90,6 +92,11 @@ struct SweepJobs {
   double position_memory_mb = 0; // estimated peak of one FE position (0: not estimated)
   double memory_limit_mb = 0;    // the limit they share (0: not estimated)
 };
+
+// A finished row as the checkpoint keeps it (every field, doubles exactly), and back; shared
+// by the 3D and planar sweeps.
+nlohmann::json sweep_row_to_json(const SweepRow& row);
+SweepRow sweep_row_from_json(const nlohmann::json& saved, double angle_deg);
 
 using SweepProgress = std::function<void(int done, int total)>;
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,

@@ -1,10 +1,7 @@
 #include "app/sweep_axi.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <mutex>
 #include <thread>
 
 #include "app/position_runner.hpp"
@@ -29,10 +26,6 @@ struct Translate {
   }
 };
 
-bool carries_current(const RegionSpec& r) {
-  return r.current_density != 0 || r.ampere_turns != 0;
-}
-
 bool in_group(const CaseSpec& spec, const std::string& region, const std::string& group) {
   for (const auto& r : spec.regions)
     if (r.name == region)
@@ -51,7 +44,7 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reve
   f.kind = ForceSpec::Kind::lorentz;
   std::vector<std::string> others;
   for (const auto& r : spec.regions) {
-    if (!carries_current(r))
+    if (!r.carries_current())
       continue;
     (r.group == group ? f.regions : others).push_back(r.name);
   }
@@ -78,28 +71,19 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reve
                        "' and no region carries current: keep one for the sweep");
 }
 
-AxiSweepRow solve_position(const CaseSpec& base, const AxiSweepOptions& o, double dz) {
-  AxiSweepRow row;
+void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOptions& o, double dz) {
   row.position_m = dz;
-  const auto t0 = std::chrono::steady_clock::now();
-  try {
-    CaseSpec spec = move_group_axi(base, o.group, dz);
-    bool reversed = false;
-    spec.forces = {group_force(spec, o.group, reversed)};
-    spec.probes.clear(); // a sweep wants the force only
-    spec.write_vtu = false;
-    RunOverrides ov;
-    ov.order = o.order;
-    ov.mesh_scale = o.mesh_scale;
-    const auto run = run_case_2d(std::move(spec), ov);
-    row.fz_N = (reversed ? -1.0 : 1.0) * run->forces.front().force.z();
-    row.unknowns = static_cast<long>(run->dofs->n_dofs());
-    row.ok = true;
-  } catch (const std::exception& e) {
-    row.error = e.what();
-  }
-  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return row;
+  CaseSpec spec = move_group_axi(base, o.group, dz);
+  bool reversed = false;
+  spec.forces = {group_force(spec, o.group, reversed)};
+  spec.probes.clear(); // a sweep wants the force only
+  spec.write_vtu = false;
+  RunOverrides ov;
+  ov.order = o.order;
+  ov.mesh_scale = o.mesh_scale;
+  const auto run = run_case_2d(std::move(spec), ov);
+  row.fz_N = (reversed ? -1.0 : 1.0) * run->forces.front().force.z();
+  row.unknowns = static_cast<long>(run->dofs->n_dofs());
 }
 
 nlohmann::json row_to_json(const AxiSweepRow& row) {
@@ -148,7 +132,7 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
       std::clamp(o.jobs > 0 ? o.jobs : static_cast<int>(cores), 1, std::max(total, 1));
   return run_positions<AxiSweepRow>(
       o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json},
-      [&](double dz) { return solve_position(spec, o, dz); }, progress);
+      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress);
 }
 
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {

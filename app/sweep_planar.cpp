@@ -1,7 +1,6 @@
 #include "app/sweep_planar.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -37,17 +36,13 @@ struct Turn {
   }
 };
 
-bool carries_current(const RegionSpec& r) {
-  return r.current_density != 0 || r.ampere_turns != 0;
-}
-
 // The force request on the group (see the header), with the torque about the point.
 ForceSpec group_force(const CaseSpec& spec, const std::string& group, const Vec3& point) {
   ForceSpec f;
   f.name = "sweep";
   f.kind = ForceSpec::Kind::lorentz;
   for (const auto& r : spec.regions)
-    if (r.group == group && carries_current(r))
+    if (r.group == group && r.carries_current())
       f.regions.push_back(r.name);
   if (f.regions.empty()) {
     for (const auto kind : {ForceSpec::Kind::band, ForceSpec::Kind::circle}) {
@@ -76,54 +71,24 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, const Vec3
   return f;
 }
 
-SweepRow solve_position(const CaseSpec& base, const SweepOptions& o, double angle_deg) {
-  SweepRow row;
+void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, double angle_deg) {
   row.angle_deg = angle_deg;
   row.method = "planar";
-  const auto t0 = std::chrono::steady_clock::now();
-  try {
-    CaseSpec spec = rotate_group_planar(base, o.group, angle_deg * deg_to_rad, o.point);
-    const ForceSpec f = group_force(spec, o.group, o.point);
-    row.method = f.kind == ForceSpec::Kind::lorentz ? "lorentz"
-                 : f.kind == ForceSpec::Kind::band  ? "arkkio_band"
-                                                    : "stress_circle";
-    spec.forces = {f};
-    spec.probes.clear(); // a sweep wants the force only
-    spec.write_vtu = false;
-    RunOverrides ov;
-    ov.order = o.order;
-    ov.mesh_scale = o.mesh_scale;
-    const auto run = run_case_2d(std::move(spec), ov);
-    row.torque = run->forces.front().torque;
-    row.force = run->forces.front().force;
-    row.unknowns = static_cast<long>(run->dofs->n_dofs());
-    row.ok = true;
-  } catch (const std::exception& e) {
-    row.error = e.what();
-  }
-  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return row;
-}
-
-nlohmann::json row_to_json(const SweepRow& r) {
-  return {{"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
-          {"force", {r.force.x(), r.force.y(), r.force.z()}},
-          {"seconds", r.seconds},
-          {"unknowns", r.unknowns},
-          {"method", r.method}};
-}
-
-SweepRow row_from_json(const nlohmann::json& j, double angle_deg) {
-  SweepRow r;
-  r.angle_deg = angle_deg;
-  for (int k = 0; k < 3; ++k)
-    r.torque[k] = j.at("torque").at(k).get<double>(),
-    r.force[k] = j.at("force").at(k).get<double>();
-  r.seconds = j.at("seconds").get<double>();
-  r.unknowns = j.at("unknowns").get<long>();
-  r.method = j.at("method").get<std::string>();
-  r.ok = true;
-  return r;
+  CaseSpec spec = rotate_group_planar(base, o.group, angle_deg * deg_to_rad, o.point);
+  const ForceSpec f = group_force(spec, o.group, o.point);
+  row.method = f.kind == ForceSpec::Kind::lorentz ? "lorentz"
+               : f.kind == ForceSpec::Kind::band  ? "arkkio_band"
+                                                  : "stress_circle";
+  spec.forces = {f};
+  spec.probes.clear(); // a sweep wants the force only
+  spec.write_vtu = false;
+  RunOverrides ov;
+  ov.order = o.order;
+  ov.mesh_scale = o.mesh_scale;
+  const auto run = run_case_2d(std::move(spec), ov);
+  row.torque = run->forces.front().torque;
+  row.force = run->forces.front().force;
+  row.unknowns = static_cast<long>(run->dofs->n_dofs());
 }
 
 } // namespace
@@ -174,8 +139,8 @@ std::vector<SweepRow> run_sweep_planar(const CaseSpec& spec, const SweepOptions&
   if (jobs)
     jobs->requested = jobs->used = workers;
   return run_positions<SweepRow>(
-      o.angles_deg, workers, o.checkpoint, {row_to_json, row_from_json},
-      [&](double angle_deg) { return solve_position(spec, o, angle_deg); }, progress);
+      o.angles_deg, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      [&](SweepRow& row, double angle_deg) { solve_position(row, spec, o, angle_deg); }, progress);
 }
 
 } // namespace magfem

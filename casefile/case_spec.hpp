@@ -21,11 +21,13 @@ struct RegionSpec {
   std::string name;
   const Material* material = nullptr; // resolved: case materials or the bundled library
   Magnetization magnetization;
-  double current_density = 0; // A/m^2 along +z (planar) or +phi (axisymmetric)
-  double ampere_turns = 0;    // if non-zero, J = ampere_turns / meshed area of the region
+  double current_density = 0;    // A/m^2 along +z (planar) or +phi (axisymmetric)
+  double ampere_turns = 0;       // if non-zero, J = ampere_turns / meshed area of the region
   double turns = 0, current = 0; // when given as turns and current (A); ampere_turns = N I
   std::string group;             // sweep group (--move axisymmetric, --rotate planar)
-  int line = 0;               // line of the region in the case file
+  int line = 0;                  // line of the region in the case file
+
+  bool carries_current() const { return current_density != 0 || ampere_turns != 0; }
 };
 
 struct CaseSpec {
@@ -44,7 +46,7 @@ struct CaseSpec {
   std::vector<SectionSpec> sections; // 3D: flux through plane sections (sections.csv)
   bool write_vtu = true;
   bool write_revolved_vtu = false; // axisymmetric: also solution_revolved.vtu (3D)
-  double stack_length = 0; // metres; 0 = report per unit length
+  double stack_length = 0;         // metres; 0 = report per unit length
   int boundary_line = 0;
   std::vector<int> coil_lines;           // parallel to geometry3d.coils
   bool coil_inductance = true;           // 3D: the inductance matrix (one extra solve per coil)

@@ -12,7 +12,7 @@ build/magfem validate --tier quick --out "$out" > "$out/console.txt" 2>&1 || rc=
 if [[ ! -s "$out/report.md" ]]; then
   cat "$out/console.txt" >&2
   echo "validation_docs: magfem validate wrote no report (exit $rc)" >&2
-  exit "${rc/#0/1}"
+  exit $((rc == 0 ? 1 : rc))
 fi
 commit=$(git rev-parse --short=12 HEAD)
 dirty=$(git diff --quiet HEAD -- . ':!docs' && echo "" || echo " (with uncommitted changes)")

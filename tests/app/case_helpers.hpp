@@ -3,7 +3,9 @@
 // fields.
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/run2d.hpp"
 #include "tests/test_paths.hpp"
@@ -21,6 +23,15 @@ inline std::string write_temp_case(const std::string& name, const std::string& t
   const auto path = dir / name;
   std::ofstream(path) << text;
   return path.string();
+}
+
+// The entry called `name` of a run's forces (or anything with a `name`); throws if none.
+template <class Named>
+const Named& named(const std::vector<Named>& entries, const std::string& name) {
+  for (const auto& e : entries)
+    if (e.name == name)
+      return e;
+  throw std::runtime_error("no entry named " + name);
 }
 
 inline const ProbeTable& probe(const Run2D& run, const std::string& name) {

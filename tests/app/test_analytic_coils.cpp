@@ -24,10 +24,7 @@ using namespace magfem;
 namespace {
 
 const ForceResult& force(const std::vector<ForceResult>& forces, const std::string& name) {
-  for (const auto& f : forces)
-    if (f.name == name)
-      return f;
-  throw std::runtime_error("no force " + name);
+  return test::named(forces, name);
 }
 
 const ProbeTable& probe(const std::vector<ProbeTable>& probes, const std::string& name) {

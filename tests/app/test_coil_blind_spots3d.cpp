@@ -31,10 +31,7 @@ using namespace magfem;
 namespace {
 
 const ForceResult& force(const std::vector<ForceResult>& forces, const std::string& name) {
-  for (const auto& f : forces)
-    if (f.name == name)
-      return f;
-  throw std::runtime_error("no force " + name);
+  return test::named(forces, name);
 }
 
 std::string format(const char* pattern, double a, double b = 0, double c = 0) {

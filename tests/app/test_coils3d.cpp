@@ -6,7 +6,7 @@
 //   - action = reaction between a magnet (stress tensor) and a coil (Lorentz force);
 //   - bad coil input: exit-2 errors naming file, line and field.
 // The coil-over-plate tests share one solve of the example at mesh scale 2 (116k P2
-// unknowns, ~20 s with the inductance solve). They were DISABLED_ for minutes of CG until the
+// unknowns, ~20 s with the inductance solve). They were switched off for minutes of CG until the
 // example's air cylinder was lifted from 0.5 mm to 2 mm above the plate with one gap layer
 // (at 0.5 mm and 3 layers the gap alone asked for 12 M tetrahedra).
 #include <gtest/gtest.h>

@@ -14,6 +14,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "../solver/structured_mesh3d.hpp"
+#include "box_field3d.hpp"
 #include "core/constants.hpp"
 #include "postproc/energy3d.hpp"
 #include "postproc/field3d.hpp"
@@ -27,47 +28,12 @@ namespace {
 
 constexpr double mm = 1e-3;
 
-// Harmonic quadratic potential (A) and its field H = -grad phi (A/m); x in metres.
-double phi_exact(const Eigen::Vector3d& x) {
-  return 1e6 * (x.x() * x.x() - x.y() * x.y() + 3 * x.y() * x.z()) + 2e3 * x.z();
-}
-Eigen::Vector3d h_exact(const Eigen::Vector3d& x) {
-  return -Eigen::Vector3d(2e6 * x.x(), 1e6 * (-2 * x.y() + 3 * x.z()), 3e6 * x.y() + 2e3);
-}
+using test::h_exact;
+using test::phi_exact;
 
-struct BoxField {
-  Material air = Material::make_linear("air", 1.0, "test");
-  Material iron = Material::make_linear("iron", 10.0, "test");
-  Material magnet = Material::make_magnet("magnet", 1.0, 1.1, "test");
-  Mesh3D mesh = test::structured_box({-5 * mm, -5 * mm, -5 * mm}, {5 * mm, 5 * mm, 5 * mm}, 6);
-  Problem3D problem;
-  std::unique_ptr<DofMap3D> dofs;
-  std::unique_ptr<Field3D> field;
-
-  explicit BoxField(int order, bool regions = false) {
-    if (regions)
-      for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-        Eigen::Vector3d c = Eigen::Vector3d::Zero();
-        for (int k = 0; k < 4; ++k)
-          c += 0.25 * mesh.nodes[mesh.tets[t][k]];
-        mesh.tet_part[t] = c.z() < 0 ? 0 : (c.x() < 0 ? 1 : region_background_3d);
-      }
-    problem.mesh = &mesh;
-    problem.order = order;
-    problem.boundary = OuterKind3D::dirichlet;
-    problem.air.material = &air;
-    Magnetization m;
-    m.pattern = Magnetization::Pattern::parallel;
-    m.direction = Eigen::Vector3d::UnitX();
-    problem.parts = {{&magnet, m}, {&iron, {}}};
-    if (!regions)
-      problem.parts = {{&air, {}}};
-    dofs = std::make_unique<DofMap3D>(mesh, order);
-    Eigen::VectorXd phi(dofs->n_dofs());
-    for (int d = 0; d < dofs->n_dofs(); ++d)
-      phi[d] = phi_exact(dofs->dof_points()[d]);
-    field = std::make_unique<Field3D>(problem, *dofs, phi);
-  }
+// The box of box_field3d.hpp holding phi_exact.
+struct BoxField : test::BoxField3D {
+  explicit BoxField(int order, bool regions = false) : BoxField3D(order, regions, phi_exact) {}
 };
 
 TEST(Field3D, P2FieldAndRecoveryAreExactForQuadraticPotential) {
