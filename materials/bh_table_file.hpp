@@ -1,6 +1,6 @@
 #pragma once
 // B-H tables in CSV files: `bh_file: steel.csv` in a case's material, and the export of a
-// curve in the same format (`magfem materials --export NAME`, app/materials_command.hpp).
+// curve in the same format (`magfem materials --export NAME`, cli/materials_command.hpp).
 //
 // Format: one row per line, two comma-separated columns. Either a header naming them,
 // `H_Apm,B_T` or `B_T,H_Apm` (H in A/m, B in T), or no header and the columns H, B in that

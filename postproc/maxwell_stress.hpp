@@ -1,7 +1,7 @@
 #pragma once
 // Force and torque from the Maxwell stress tensor on a closed surface in air, as pure
 // quadrature on a field callback (no FE types): the FE wrappers (maxwell_stress2d.hpp,
-// maxwell_stress3d.hpp) and the analytic references (validation/analytic_force.hpp) share it.
+// maxwell_stress3d.hpp) and the analytic references (analytic/analytic_force.hpp) share it.
 //
 //   T_ij = (1/mu0) (B_i B_j - delta_ij |B|^2 / 2),   T.n = (1/mu0) (B (B.n) - n |B|^2 / 2),
 //   F = oint T.n dS,   torque about p = oint (x - p) x (T.n) dS   (thesis eqs. 3.41-3.44).

@@ -5,7 +5,7 @@
 // linkages all integrate H_s with that rule over the whole mesh; finding each point again in a
 // memo (hashing, locks, recomputation past the memo's cap) cost more than the Biot-Savart
 // evaluation itself. Stored in single precision: a relative rounding of 6e-8, far below the
-// 1e-4 to which the FE stages evaluate the source field (app/coil_run3d.hpp).
+// 1e-4 to which the FE stages evaluate the source field (pipeline/coil_run3d.hpp).
 // Shell tets hold H_s at the mapped (physical) point shell.map(x), as the shell terms use it.
 // The same at the DOF points, for B at element nodes.
 #include <cstddef>

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app/run2d.hpp"
+#include "pipeline/run2d.hpp"
 #include "tests/test_paths.hpp"
 
 namespace magfem::test {

@@ -23,9 +23,9 @@
 
 #include <Eigen/SVD>
 
-#include "app/actuator.hpp"
-#include "app/actuator_plot.hpp"
-#include "app/sweep.hpp"
+#include "studies/actuator.hpp"
+#include "studies/actuator_plot.hpp"
+#include "studies/sweep.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"

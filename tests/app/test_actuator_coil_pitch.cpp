@@ -17,7 +17,7 @@
 #include <string>
 #include <sys/wait.h>
 
-#include "app/actuator_coil_pitch.hpp"
+#include "studies/actuator_coil_pitch.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
@@ -89,7 +89,7 @@ TEST(CoilPitch, ArrayFollowsTheThesisRule) {
 // 2 and 1 deg (measured 8e-4 and 7e-5 of the largest constant; 0.5 deg gives 6e-6 but costs
 // 30 s here); asserted for the default step (1 deg) at 2e-4: a cubic rule's error falls 16x
 // per halving, so a table off by an index or a pole continuation would not pass, and 2e-4 is
-// below the coil quadrature's own 1e-3 (app/torque_constants.hpp). Asserted for the 2 deg step
+// below the coil quadrature's own 1e-3 (analytic/torque_constants.hpp). Asserted for the 2 deg step
 // of the tests below at 2e-3: far below the tens of percent their losses differ by.
 TEST(CoilPitch, TableMatchesDirectTorqueConstants) {
   const CaseSpec spec = topology_case(1, 1);

@@ -11,13 +11,13 @@
 #include <filesystem>
 #include <sys/wait.h>
 
-#include "app/run_analytic.hpp"
+#include "pipeline/run_analytic.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "tests/test_paths.hpp"
-#include "validation/coil_closed_forms.hpp"
-#include "validation/rotor_coil_pair.hpp"
+#include "analytic/coil_closed_forms.hpp"
+#include "analytic/rotor_coil_pair.hpp"
 
 using namespace magfem;
 
@@ -269,7 +269,7 @@ regions:
 // magnet on its motor's rotor, 10 deg from the stator coil): the torque about the rotor centre
 // on the coil (charge model of the magnet, bundle quadrature over the coil) against minus the
 // torque on the magnet's current sheet in the coil's exact loop field
-// (validation/rotor_coil_pair.hpp): the roles of source and target swapped, no shared field
+// (analytic/rotor_coil_pair.hpp): the roles of source and target swapped, no shared field
 // code. Measured: 7.6e-7 apart in torque, 6.7e-7 in force (0.165025 N m);
 // tolerance 1e-3. A sign or factor-2 error in the coil's Lorentz torque fails it.
 TEST(AnalyticCoils, OffAxisCoilTorqueIsMinusTheMagnetsTorque) {

@@ -11,7 +11,7 @@
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "tests/test_paths.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;
 

@@ -17,9 +17,9 @@
 #include "core/constants.hpp"
 #include "postproc/vtu_export_revolved.hpp"
 #include "sources/axisymmetric_bundle.hpp"
-#include "validation/coil_closed_forms.hpp"
-#include "validation/equivalent_single_layer.hpp"
-#include "validation/rotor_coil_pair.hpp"
+#include "analytic/coil_closed_forms.hpp"
+#include "analytic/equivalent_single_layer.hpp"
+#include "analytic/rotor_coil_pair.hpp"
 
 using namespace magfem;
 
@@ -206,7 +206,7 @@ TEST(AxiCoils, VoiceCoilExampleForceEqualsTheCurrentSheetModel) {
             << (f_magnet + f) / std::abs(f) << ")\n";
   EXPECT_NEAR(f_magnet, -f, 3e-3 * std::abs(f));
   EXPECT_LT(exact, 0); // coaxial like dipoles attract: the coil is pulled towards the magnet
-  // The voice-coil models' path (validation/rotor_coil_pair.hpp at separation angle 0, the same
+  // The voice-coil models' path (analytic/rotor_coil_pair.hpp at separation angle 0, the same
   // pair): the Lorentz force on the magnet's surface current in the exact field of the coil's
   // loops, the reaction to the FE force on the coil. Same tolerance as above (1e-4).
   const RotorCoilPair pair;

@@ -9,11 +9,11 @@
 #include <iterator>
 #include <string>
 
-#include "app/sweep_axi.hpp"
+#include "studies/sweep_axi.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 #include "core/input_error.hpp"
 #include "tests/test_paths.hpp"

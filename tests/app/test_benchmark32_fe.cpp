@@ -7,12 +7,12 @@
 
 #include <cstdio>
 
-#include "app/analytic_scene.hpp"
-#include "app/run3d.hpp"
-#include "app/run_analytic.hpp"
+#include "pipeline/analytic_scene.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
 #include "case_helpers.hpp"
 #include "postproc/probe_compare.hpp"
-#include "validation/axisymmetric_interaction.hpp"
+#include "analytic/axisymmetric_interaction.hpp"
 
 using namespace magfem;
 

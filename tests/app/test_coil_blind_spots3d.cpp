@@ -18,13 +18,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/run3d.hpp"
-#include "app/run_analytic.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "sources/coil_field.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;
 

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 

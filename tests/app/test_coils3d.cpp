@@ -13,12 +13,12 @@
 
 #include <cmath>
 
-#include "app/run3d.hpp"
-#include "app/run_analytic.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;
 
@@ -84,7 +84,7 @@ TEST(Coils3D, EnergyFluxLinkageAndInductanceAgree) {
 
 // A thick solenoid in air (r 10..15 mm, length 30 mm, 500 turns, 2 A): its inductance from the
 // sensitivity solve against Maxwell's formula integrated over the cross-section
-// (validation/coil_closed_forms.hpp, converged to 1e-13). In air the reduced potential is zero
+// (analytic/coil_closed_forms.hpp, converged to 1e-13). In air the reduced potential is zero
 // and the field is the source field, so the FE inductance measures the energy and linkage
 // quadratures of H_s over the mesh and the shell (and the source field's own 1e-4 tolerance
 // near the bundle), not a discretisation of phi. Measured against the exact 3.148399 mH:

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/sweep.hpp"
+#include "studies/sweep.hpp"
 #include "case_helpers.hpp"
 
 using namespace magfem;

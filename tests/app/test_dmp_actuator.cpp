@@ -2,7 +2,7 @@
 // magnets inside the electromagnets) against design B (32: the same plus magnets outside them),
 // examples/3d/dmp_actuator_{a,b}.yaml, whose headers list every assumption. The torque about y
 // of the energized EM pair (+2 / -2 A) against the rotor's inclination about y, by the
-// Lorentz torque in the charge model's field (app/torque_constants.hpp).
+// Lorentz torque in the charge model's field (analytic/torque_constants.hpp).
 //
 // The paper's "about twice" (Fig. 4) is a finding, not asserted (validation/catalogue.yaml
 // dmp.fig4.design_b_torque): the sizes it leaves out set the ratio. Asserted:
@@ -14,15 +14,15 @@
 //   orientations sample different points;
 // - the outer magnets add torque in the same direction at the peak (B's peak above A's), what
 //   design B is for (with the outer polarity assumed the other way round it would fall).
-// The FE path (app/actuator.hpp fe_rotor_field) is tested on two magnets of design B below.
+// The FE path (studies/actuator.hpp fe_rotor_field) is tested on two magnets of design B below.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "app/actuator.hpp"
-#include "app/run3d.hpp"
-#include "app/sweep.hpp"
+#include "studies/actuator.hpp"
+#include "pipeline/run3d.hpp"
+#include "studies/sweep.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
@@ -133,7 +133,7 @@ TEST(DmpActuator, FeTorqueEqualsChargeModel) {
 
 // Leaving the coils out of the FE, as fe_rotor_field does, against FE the way `magfem solve`
 // does it: the rotor turned into place, the energized pair as coil sources, the Lorentz torque
-// on the coils (app/coil_run3d.cpp, 6 x 6 x 64 points per coil). It must be minus the rotor
+// on the coils (pipeline/coil_run3d.cpp, 6 x 6 x 64 points per coil). It must be minus the rotor
 // torque (the reaction; in air of mu_r 1 the pair's own field exerts no net torque on it),
 // here with a converged coil quadrature (16 x 16 x 32: the 4 x 4 x 8 rule of before was 0.6 % off
 // design A's converged torque at 10 deg). Tolerance 1 %: two meshes, each a few tenths of a

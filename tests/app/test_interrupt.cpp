@@ -1,7 +1,7 @@
 // Ctrl-C and kill during a run (core/interrupt.hpp): the binary exits with the shell's code
 // for the signal (130 for SIGINT, 143 for SIGTERM), says so, and leaves no outputs: no
 // sweep.csv or summary.json, no staging folder; only the sweep's checkpoint, from which
-// --resume continues (app/run_checkpoint.hpp; sweep, validate and study). The signal goes to
+// --resume continues (pipeline/run_checkpoint.hpp; sweep, validate and study). The signal goes to
 // an axisymmetric sweep of remeshed positions once some are reported, while meshing and
 // solving are under way, and to a study once some designs are in its checkpoint.
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@
 #include <unistd.h>
 #include <vector>
 
-#include "app/run_checkpoint.hpp"
+#include "pipeline/run_checkpoint.hpp"
 #include "case_helpers.hpp"
 #include "tests/test_paths.hpp"
 

@@ -1,4 +1,4 @@
-// The memory guard (app/memory_guard.hpp) through the binary: a 3D case whose estimated peak
+// The memory guard (pipeline/memory_guard.hpp) through the binary: a 3D case whose estimated peak
 // memory exceeds --max-memory stops with exit 2 before meshing, writes nothing, and names a
 // --mesh-scale; that scale does fit: the run it proposes passes the guard and its measured
 // peak memory stays under the limit (the estimate's calibration, docs/performance.md "Memory guard calibration").

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "app/run2d.hpp"
-#include "app/run3d.hpp"
+#include "pipeline/run2d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 
 using namespace magfem;

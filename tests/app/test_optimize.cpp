@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/optimize.hpp"
+#include "studies/optimize.hpp"
 #include "core/input_error.hpp"
 
 using namespace magfem;

@@ -12,7 +12,7 @@
 
 #include <cstdio>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 
 using namespace magfem;

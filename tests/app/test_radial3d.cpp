@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "app/run3d.hpp"
-#include "app/run_analytic.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 

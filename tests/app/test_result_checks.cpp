@@ -1,4 +1,4 @@
-// Numerical guards (app/result_checks.hpp, issue 15): a solution with NaN or Inf stops the run
+// Numerical guards (pipeline/result_checks.hpp, issue 15): a solution with NaN or Inf stops the run
 // (exit 3, nothing written); a B-H curve used beyond its table is reported in summary.json
 // `warnings`; a stress-tensor surface that cuts a magnet or iron region is an input error
 // naming the force and the region, found on the mesh before the solve.
@@ -16,7 +16,7 @@
 
 #include <sys/wait.h>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"

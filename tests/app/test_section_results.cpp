@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/run3d.hpp"
-#include "app/section_results.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/section_results.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/gauss_legendre.hpp"

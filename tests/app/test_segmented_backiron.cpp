@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "mesh/mesher3d.hpp"

@@ -12,12 +12,12 @@
 #include <iterator>
 #include <string>
 
-#include "app/analytic_scene.hpp"
-#include "app/study.hpp"
+#include "pipeline/analytic_scene.hpp"
+#include "studies/study.hpp"
 #include "case_helpers.hpp"
 #include "core/input_error.hpp"
-#include "validation/exterior_field_interaction.hpp"
-#include "validation/interaction_cases.hpp"
+#include "analytic/exterior_field_interaction.hpp"
+#include "analytic/interaction_cases.hpp"
 
 using namespace magfem;
 
@@ -182,7 +182,7 @@ TEST(Study, OneParameterIsPlottedAsLines) {
 TEST(Study, PrototypeHeightExampleIsTheDocumentedLayout) {
   // examples/3d/compensator_prototype_height_study.yaml builds the layout its comments state
   // (180 cylinders, pitch 5.14 mm on the 27.9 mm sphere, B_r 1.305 / 1.345 T), which
-  // validation/interaction_cases.cpp builds in code: the study's torque at 90 deg equals the
+  // analytic/interaction_cases.cpp builds in code: the study's torque at 90 deg equals the
   // exterior-field interaction on that arrangement to round-off and tolerance (1e-8).
   const std::string file = test::example("3d/compensator_prototype_height_study.yaml");
   const AnalyticScene scene = analytic_scene(read_case(file, {{"height", 12.5}}));

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "app/sweep.hpp"
+#include "studies/sweep.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/sweep_planar.hpp"
+#include "studies/sweep_planar.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"

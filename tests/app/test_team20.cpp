@@ -27,7 +27,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 
 using namespace magfem;

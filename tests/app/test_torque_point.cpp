@@ -18,7 +18,7 @@
 
 #include <Eigen/Geometry>
 
-#include "app/run3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "case_helpers.hpp"
 
 using namespace magfem;

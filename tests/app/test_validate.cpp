@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/validate.hpp"
-#include "app/validate_report.hpp"
+#include "validation/validate.hpp"
+#include "validation/validate_report.hpp"
 #include "case_helpers.hpp"
 #include "core/input_error.hpp"
 #include "tests/test_paths.hpp"
@@ -223,7 +223,7 @@ TEST(Validate, QuickSubsetPassesWithTheContractColumns) {
       << "no network resources";
 }
 
-// Thesis sec. 5.3.3 through `magfem validate` (app/validate_eval_thesis_ch5.cpp): the peak
+// Thesis sec. 5.3.3 through `magfem validate` (validation/validate_eval_thesis_ch5.cpp): the peak
 // mid-gap B_r with back-iron behind the magnets (+26 %) and behind magnets and coils (+80 %)
 // by the charge model with imaging; both within paper_targets D's 3 points (measured +24.8 %
 // and +82.1 %). Seconds.
@@ -246,7 +246,7 @@ TEST(Validate, ActuatorBackIronFieldIncrease) {
 }
 
 TEST(Validate, VoiceCoilTable1ByThePapersLineModel) {
-  // Seed 002's Table 1 through `magfem validate` (app/validate_eval_voicecoil.cpp): with the
+  // Seed 002's Table 1 through `magfem validate` (validation/validate_eval_voicecoil.cpp): with the
   // paper's 2D line model and an integration range of 3 l, the a_i/a_o = 0.5 error at 1 um
   // (13.4 %) and eq. 6's sheet current of the thin coil (136.2 A/mm) pass, the thin coil's
   // 1.3 % at 1 um is a finding (no range gets below 2.17 %). Milliseconds per entry.

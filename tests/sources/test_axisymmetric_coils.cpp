@@ -13,7 +13,7 @@
 #include "core/constants.hpp"
 #include "core/gauss_legendre.hpp"
 #include "sources/coil_field.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 namespace magfem {
 namespace {

@@ -1,4 +1,4 @@
-// Closed forms for coaxial coils (validation/coil_closed_forms.hpp) against published tables
+// Closed forms for coaxial coils (analytic/coil_closed_forms.hpp) against published tables
 // and against each other: Nagaoka's coefficients, the Brooks coil, Wheeler's approximation,
 // the current sheet as the thin limit of the thick coil, the on-axis field against direct
 // integration of the loops, and mutual inductance and force (finite difference, action and
@@ -10,7 +10,7 @@
 
 #include "core/constants.hpp"
 #include "core/gauss_legendre.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 namespace magfem {
 namespace {

@@ -11,7 +11,7 @@
 #include "core/constants.hpp"
 #include "sources/coil_field.hpp"
 #include "sources/coil_set.hpp"
-#include "validation/coil_closed_forms.hpp"
+#include "analytic/coil_closed_forms.hpp"
 
 namespace magfem {
 namespace {

@@ -1,0 +1,43 @@
+#include "casefile/cli_number.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/input_error.hpp"
+
+namespace magfem {
+
+double parse_cli_number(const std::string& option, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(v))
+      return v;
+  } catch (const std::exception&) {
+    // stod's own message ("stod") says nothing useful: fall through to ours
+  }
+  throw InputError("<command line>", 0, option, "expected a finite number, got '" + text + "'");
+}
+
+double parse_cli_mesh_scale(const std::string& text) {
+  const double scale = parse_cli_number("--mesh-scale", text);
+  if (!(scale > 0))
+    throw InputError("<command line>", 0, "--mesh-scale", "must be positive");
+  return scale;
+}
+
+int parse_cli_order(const std::string& text) {
+  const double order = parse_cli_number("--order", text);
+  if (order != 1 && order != 2)
+    throw InputError("<command line>", 0, "--order", "must be 1 or 2");
+  return static_cast<int>(order);
+}
+
+void parse_cli_parameter(const std::string& text, ParameterOverrides& parameters) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("<command line>", 0, "--param", "expected NAME=VALUE, got '" + text + "'");
+  parameters[text.substr(0, eq)] = parse_cli_number("--param", text.substr(eq + 1));
+}
+
+} // namespace magfem

@@ -1,0 +1,494 @@
+// magfem command-line front end. Exit codes: 0 success, 1 internal error, 2 bad input
+// (case file, options), 3 the solver did not converge.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "studies/actuator.hpp"
+#include "pipeline/build_info.hpp"
+#include "casefile/cli_number.hpp"
+#include "cli/command_help.hpp"
+#include "cli/materials_command.hpp"
+#include "studies/optimize.hpp"
+#include "pipeline/resource_usage.hpp"
+#include "pipeline/run2d.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "studies/study.hpp"
+#include "studies/sweep.hpp"
+#include "studies/sweep_axi.hpp"
+#include "studies/sweep_planar.hpp"
+#include "studies/sweep_plot.hpp"
+#include "validation/validate.hpp"
+#include "casefile/case_spec.hpp"
+#include "core/input_error.hpp"
+#include "core/interrupt.hpp"
+#include "core/output_stage.hpp"
+#include "postproc/probe_compare.hpp"
+#include "solver/mpi_context.hpp"
+
+namespace {
+
+struct Args {
+  std::string command;
+  std::string case_file;
+  std::string out_dir;
+  std::vector<std::string> positional;
+  magfem::RunOverrides overrides;
+  magfem::AnalyticOptions analytic;
+  magfem::ParameterOverrides parameters; // --param NAME=VALUE (solve, analytic)
+  std::string rotate, axis, angles, point, surface_radius, move, positions;
+  bool analytic_sweep = false;
+  bool resume = false; // sweep: continue from the checkpoint in --out
+  bool quiet = false;  // no progress lines on stderr
+  int jobs = 0;
+};
+
+Args parse_args(int argc, char** argv) {
+  if (argc < 2)
+    throw magfem::InputError("<command line>", 0, "",
+                             std::string("missing command\n") + magfem::usage_overview());
+  Args a;
+  a.command = argv[1];
+  std::vector<std::string> positional;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc)
+        throw magfem::InputError("<command line>", 0, arg, "missing value");
+      return argv[++i];
+    };
+    if (arg == "--out")
+      a.out_dir = value();
+    else if (arg == "--order")
+      a.overrides.order = magfem::parse_cli_order(value());
+    else if (arg == "--mesh-scale") // 0 would silently mean "as in the case": refused
+      a.overrides.mesh_scale = magfem::parse_cli_mesh_scale(value());
+    else if (arg == "--max-memory") {
+      a.overrides.max_memory_gb = magfem::parse_cli_number(arg, value());
+      if (!(a.overrides.max_memory_gb > 0))
+        throw magfem::InputError("<command line>", 0, arg, "must be positive (GB)");
+    } else if (arg == "--param" && (a.command == "solve" || a.command == "analytic"))
+      magfem::parse_cli_parameter(value(), a.parameters);
+    else if (arg == "--model")
+      a.analytic.model = value();
+    else if (arg == "--tolerance")
+      a.analytic.tolerance = magfem::parse_cli_number(arg, value());
+    else if (arg == "--n-max")
+      a.analytic.n_max = static_cast<int>(magfem::parse_cli_number(arg, value()));
+    else if (arg == "--rotate")
+      a.rotate = value();
+    else if (arg == "--axis")
+      a.axis = value();
+    else if (arg == "--angles")
+      a.angles = value();
+    else if (arg == "--move")
+      a.move = value();
+    else if (arg == "--positions")
+      a.positions = value();
+    else if (arg == "--point")
+      a.point = value();
+    else if (arg == "--surface-radius")
+      a.surface_radius = value();
+    else if (arg == "--jobs") {
+      a.jobs = static_cast<int>(magfem::parse_cli_number(arg, value()));
+      if (a.jobs < 1)
+        throw magfem::InputError("<command line>", 0, arg, "must be at least 1");
+    } else if (arg == "--analytic")
+      a.analytic_sweep = true;
+    else if (arg == "--quiet")
+      a.quiet = true;
+    else if (arg == "--resume")
+      a.resume = true;
+    else if (arg.rfind("--", 0) == 0)
+      throw magfem::InputError("<command line>", 0, arg, "unknown option");
+    else
+      positional.push_back(arg);
+  }
+  a.positional = positional;
+  const std::size_t wanted = a.command == "compare" ? 2 : 1;
+  if (positional.size() != wanted)
+    throw magfem::InputError(
+        "<command line>", 0, "",
+        std::string("wrong number of arguments\n") +
+            magfem::command_usage(a.command).value_or(magfem::usage_overview()));
+  a.case_file = positional[0];
+  if (a.out_dir.empty())
+    a.out_dir = (std::filesystem::path("out") / std::filesystem::path(a.case_file).stem()).string();
+  return a;
+}
+
+// "wrote    DIR/summary.json, a.csv, ...": every file the run wrote.
+void print_written(const std::string& out_dir, const std::vector<std::string>& files) {
+  std::cout << "wrote    " << out_dir << "/";
+  for (std::size_t i = 0; i < files.size(); ++i)
+    std::cout << (i ? ", " : "") << files[i];
+  std::cout << "\n";
+}
+
+int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
+  auto run = magfem::run_case_3d(std::move(spec), overrides);
+  if (!overrides.world.is_root()) { // rank 0 reports and writes, once
+    magfem::idle_barrier();
+    return 0;
+  }
+  std::cout << magfem::describe_run_3d(*run);
+  print_written(args.out_dir, magfem::write_outputs_3d(*run, args.out_dir));
+  std::cout.flush();
+  magfem::idle_barrier();
+  return 0;
+}
+
+int run_solve(const Args& args) {
+  // Under mpirun: MPI starts here, before anything can fail on one process only.
+  const magfem::MpiWorld world = magfem::join_mpi_world();
+  auto spec = magfem::read_case(args.case_file, args.parameters);
+  magfem::Progress progress;
+  magfem::RunOverrides overrides = args.overrides;
+  if (!args.quiet && world.is_root())
+    overrides.progress = &progress;
+  if (world.distributed()) {
+    if (spec.dimension != 3)
+      throw magfem::InputError(spec.file, 0, "dimension",
+                               "2D and axisymmetric cases are solved on one process (CHOLMOD); "
+                               "run this case without mpirun");
+    overrides.world = world;
+    // The memory guard: every process holds the whole mesh, and those on one machine share
+    // its memory.
+    overrides.parallel_runs = world.size_on_node;
+  }
+  if (spec.dimension == 3)
+    return run_solve_3d(args, std::move(spec), overrides);
+  auto run = magfem::run_case_2d(std::move(spec), overrides);
+  std::cout << magfem::describe_run_2d(*run);
+  print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
+  return 0;
+}
+
+int run_analytic(const Args& args) {
+  auto run =
+      magfem::run_case_analytic(magfem::read_case(args.case_file, args.parameters), args.analytic);
+  std::cout << magfem::describe_analytic(*run);
+  print_written(args.out_dir, magfem::write_outputs_analytic(*run, args.out_dir));
+  return 0;
+}
+
+void show_progress(int done, int total) {
+  if (isatty(STDERR_FILENO)) {
+    constexpr int width = 30;
+    const int filled = width * done / total;
+    std::fprintf(stderr, "\r[%s%s] %d/%d positions", std::string(filled, '#').c_str(),
+                 std::string(width - filled, ' ').c_str(), done, total);
+    if (done == total)
+      std::fputc('\n', stderr);
+  } else {
+    std::fprintf(stderr, "position %d/%d done\n", done, total);
+  }
+}
+
+void report_restored(const magfem::RunCheckpoint& checkpoint) {
+  if (checkpoint.n_restored())
+    std::fprintf(stderr, "magfem: --resume: %zu finished positions from the checkpoint\n",
+                 checkpoint.n_restored());
+}
+
+// Axial sweep of an axisymmetric case (studies/sweep_axi.hpp).
+int run_sweep_axi(const Args& args) {
+  using magfem::InputError;
+  const std::string cli = "<command line>";
+  if (args.axis != "z")
+    throw InputError(cli, 0, "--axis", "an axisymmetric group moves along z: give --axis z");
+  if (args.positions.empty())
+    throw InputError(cli, 0, "--positions", "give the positions (mm)");
+  const auto spec = magfem::read_case(args.case_file);
+  magfem::AxiSweepOptions o;
+  o.group = args.move;
+  for (const double p : magfem::parse_angle_list(args.positions, "--positions"))
+    o.positions_m.push_back(1e-3 * p);
+  o.jobs = args.jobs;
+  o.order = args.overrides.order;
+  o.mesh_scale = args.overrides.mesh_scale;
+  magfem::RunCheckpoint checkpoint(
+      args.out_dir,
+      magfem::checkpoint_identity("sweep --move", args.case_file,
+                                  o.group + " order " + std::to_string(o.order) + " mesh-scale " +
+                                      magfem::RunCheckpoint::key_of(o.mesh_scale)),
+      args.resume);
+  report_restored(checkpoint);
+  o.checkpoint = &checkpoint;
+  const auto rows =
+      magfem::run_sweep_axi(spec, o, args.quiet ? magfem::AxiSweepProgress{} : show_progress);
+
+  magfem::OutputStage stage(args.out_dir);
+  stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
+  nlohmann::ordered_json j;
+  j["case"] = spec.file;
+  j["method"] = "lorentz";
+  j["group"] = o.group;
+  int failed = 0;
+  double total_s = 0;
+  for (const auto& r : rows) {
+    nlohmann::ordered_json p = {{"position_mm", 1e3 * r.position_m},
+                                {"ok", r.ok},
+                                {"seconds", r.seconds},
+                                {"unknowns", r.unknowns}};
+    if (!r.ok)
+      p["error"] = r.error, ++failed;
+    total_s += r.seconds;
+    j["positions"].push_back(p);
+  }
+  j["failed_positions"] = failed;
+  j["peak_memory_MB"] = magfem::peak_memory_mb();
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+  checkpoint.remove();
+  std::printf("%12s %14s %9s\n", "position_mm", "Fz_N", "time_s");
+  for (const auto& r : rows)
+    if (r.ok)
+      std::printf("%12.4f %14.6g %9.2f\n", 1e3 * r.position_m, r.fz_N, r.seconds);
+    else
+      std::printf("%12.4f FAILED: %s\n", 1e3 * r.position_m, r.error.c_str());
+  std::printf("wrote    %s/sweep.csv, summary.json (%.1f s of position time)\n",
+              args.out_dir.c_str(), total_s);
+  if (failed) {
+    std::cerr << "magfem: " << failed << " of " << rows.size() << " positions failed\n";
+    return 3;
+  }
+  return 0;
+}
+
+int run_sweep(const Args& args) {
+  using magfem::InputError;
+  const std::string cli = "<command line>";
+  if (!args.move.empty())
+    return run_sweep_axi(args);
+  if (args.rotate.empty())
+    throw InputError(cli, 0, "--rotate", "name the group to rotate");
+  if (args.axis.empty())
+    throw InputError(cli, 0, "--axis", "give the rotation axis");
+  if (args.angles.empty())
+    throw InputError(cli, 0, "--angles", "give the angles");
+  const auto spec = magfem::read_case(args.case_file);
+  const double s = spec.length_unit;
+  magfem::SweepOptions o;
+  o.group = args.rotate;
+  o.axis = magfem::parse_axis(args.axis);
+  o.angles_deg = magfem::parse_angle_list(args.angles);
+  if (!args.point.empty())
+    o.point = s * magfem::parse_vector3("--point", args.point);
+  if (!args.surface_radius.empty())
+    o.surface_radius =
+        s * magfem::parse_cli_number("--surface-radius", args.surface_radius.c_str());
+  o.analytic = args.analytic_sweep;
+  o.jobs = args.jobs;
+  o.order = args.overrides.order;
+  o.mesh_scale = args.overrides.mesh_scale;
+  o.max_memory_gb = args.overrides.max_memory_gb;
+  magfem::RunCheckpoint checkpoint(
+      args.out_dir,
+      magfem::checkpoint_identity("sweep --rotate", args.case_file,
+                                  o.group + " axis " + args.axis + " point " + args.point +
+                                      " surface-radius " + args.surface_radius +
+                                      (o.analytic ? " analytic" : " fe") + " order " +
+                                      std::to_string(o.order) + " mesh-scale " +
+                                      magfem::RunCheckpoint::key_of(o.mesh_scale)),
+      args.resume);
+  report_restored(checkpoint);
+  o.checkpoint = &checkpoint;
+
+  magfem::SweepJobs jobs;
+  const auto progress = args.quiet ? magfem::SweepProgress{} : show_progress;
+  const bool planar = spec.dimension == 2 && !spec.axisymmetric();
+  const auto rows = planar ? magfem::run_sweep_planar(spec, o, progress, &jobs)
+                           : magfem::run_sweep(spec, o, progress, &jobs);
+  magfem::OutputStage stage(args.out_dir);
+  stage.write_text("sweep.csv", magfem::sweep_csv(rows));
+  std::string why;
+  const bool plotted = magfem::plot_sweep(rows, spec.file + (o.analytic ? " (analytic)" : " (FE)"),
+                                          stage.path_for("sweep.png"), why);
+  if (!plotted)
+    std::cerr << "magfem: note: no sweep.png: " << why << "\n";
+  nlohmann::ordered_json j;
+  magfem::add_provenance(j);
+  j["case"] = spec.file;
+  j["method"] = magfem::sweep_method(rows, o);
+  j["group"] = o.group;
+  j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
+  int failed = 0;
+  double total_s = 0;
+  for (const auto& r : rows) {
+    nlohmann::ordered_json p = {{"angle_deg", r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
+    if (r.unknowns)
+      p["unknowns"] = r.unknowns;
+    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
+      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
+      p["force_bound_N"] = r.force_bound;
+    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
+      p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
+    if (!r.ok)
+      p["error"] = r.error, ++failed;
+    total_s += r.seconds;
+    j["positions"].push_back(p);
+  }
+  j["failed_positions"] = failed;
+  j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
+  if (jobs.position_memory_mb > 0)
+    j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
+    j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
+  j["peak_memory_MB"] = magfem::peak_memory_mb();
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+  checkpoint.remove();
+
+  std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", "angle_deg", "Tx_Nm", "Ty_Nm", "Tz_Nm",
+              "Fx_N", "Fy_N", "Fz_N", "time_s");
+  for (const auto& r : rows)
+    if (r.ok)
+      std::printf("%10.3f %12.5g %12.5g %12.5g %12.5g %12.5g %12.5g %9.2f\n", r.angle_deg,
+                  r.torque.x(), r.torque.y(), r.torque.z(), r.force.x(), r.force.y(), r.force.z(),
+                  r.seconds);
+    else
+      std::printf("%10.3f FAILED: %s\n", r.angle_deg, r.error.c_str());
+  std::printf("%s\n", magfem::sweep_method_note(rows, o).c_str());
+  std::printf("wrote    %s/sweep.csv%s, summary.json (%.1f s of position time)\n",
+              args.out_dir.c_str(), plotted ? ", sweep.png" : "", total_s);
+  if (failed) {
+    std::cerr << "magfem: " << failed << " of " << rows.size() << " positions failed\n";
+    return 3;
+  }
+  return 0;
+}
+
+int run_compare(const Args& args) {
+  const auto ref = magfem::read_probe_csv(args.positional[0]);
+  const auto test = magfem::read_probe_csv(args.positional[1]);
+  std::vector<magfem::ComponentComparison> rows;
+  try {
+    rows = magfem::compare_probes(ref, test);
+  } catch (const std::invalid_argument& e) {
+    throw magfem::InputError(args.positional[1], 0, "", e.what());
+  }
+  std::printf("%zu points; reference %s\n", ref.rows.size(), args.positional[0].c_str());
+  std::printf("%-8s %12s %12s %16s %16s %12s %12s\n", "comp", "rms_ref_T", "rms_test_T",
+              "eq3.117_pct", "pointwise_pct", "max_diff_T", "rms_diff_T");
+  bool undefined = false;
+  for (const auto& c : rows) {
+    std::printf("%-8s %12.6g %12.6g ", c.component.c_str(), c.rms_reference, c.rms_test);
+    if (c.relative_defined)
+      std::printf("%16.4f %16.4f", 100 * c.discrepancy_3117, 100 * c.pointwise_rms);
+    else
+      std::printf("%16s %16s", "n/a", "n/a"), undefined = true;
+    std::printf(" %12.4g %12.4g\n", c.max_abs_difference, c.rms_difference);
+  }
+  if (undefined)
+    std::printf("n/a: the reference component is zero (to round-off); its differences are "
+                "absolute only\n");
+  return 0;
+}
+
+bool is_help(const char* arg) {
+  return std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0;
+}
+
+// --help, --version, `help [COMMAND]` and `COMMAND --help`: printed to stdout, exit 0.
+std::optional<int> answer_help_or_version(int argc, char** argv) {
+  if (argc < 2)
+    return std::nullopt;
+  const std::string first = argv[1];
+  if (first == "--version" || first == "-V") {
+    std::cout << "magfem " << magfem::magfem_version() << " (commit " << magfem::magfem_git_commit()
+              << ")\n";
+    return 0;
+  }
+  if (is_help(argv[1]) || (first == "help" && argc == 2)) {
+    std::cout << magfem::usage_overview();
+    return 0;
+  }
+  const std::string command = first == "help" ? argv[2] : first;
+  const bool asked = first == "help" || (argc >= 3 && is_help(argv[2]));
+  if (!asked)
+    return std::nullopt;
+  if (const auto page = magfem::command_usage(command)) {
+    std::cout << *page;
+    return 0;
+  }
+  throw magfem::InputError("<command line>", 0, "",
+                           "unknown command '" + command + "'\n" + magfem::usage_overview());
+}
+
+// Only `solve` runs distributed; any other command under mpirun with several processes would
+// run once per process, each writing the same outputs.
+void refuse_other_commands_under_mpirun(int argc, char** argv) {
+  if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
+    return;
+  if (magfem::join_mpi_world().distributed())
+    throw magfem::InputError("<command line>", 0, "",
+                             std::string("only `magfem solve` runs distributed; run `magfem ") +
+                                 argv[1] + "` without mpirun");
+}
+
+// The error line on stderr and the exit code. Under mpirun with several processes every
+// process that fails says which it is and ends them all: the others may be waiting for it in
+// a collective call and would otherwise hang.
+int fail(int code, const std::string& line) {
+  const magfem::MpiWorld world = magfem::started_mpi_world();
+  std::string text = "magfem: ";
+  if (world.distributed()) // one write per line: the processes share the terminal
+    text += "rank " + std::to_string(world.rank) + " of " + std::to_string(world.size) + ": ";
+  std::cerr << text + line + "\n" << std::flush;
+  if (world.distributed())
+    magfem::abort_mpi_world(code);
+  return code;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  // Before any thread starts: Ctrl-C and kill then leave no partial outputs (exit 130/143).
+  magfem::install_interrupt_handler();
+  try {
+    if (const auto code = answer_help_or_version(argc, argv))
+      return *code;
+    if (argc >= 2 && std::strcmp(argv[1], "materials") == 0)
+      return magfem::run_materials_command(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
+      return magfem::run_validate(
+          magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
+      return magfem::run_optimize_command(
+          magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "actuator") == 0)
+      return magfem::run_actuator_command(
+          magfem::parse_actuator_options(std::vector<std::string>(argv + 2, argv + argc)));
+    if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
+      return magfem::run_study_command(
+          magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
+    refuse_other_commands_under_mpirun(argc, argv);
+    const Args args = parse_args(argc, argv);
+    if (args.command == "solve")
+      return run_solve(args);
+    if (args.command == "analytic")
+      return run_analytic(args);
+    if (args.command == "compare")
+      return run_compare(args);
+    if (args.command == "sweep")
+      return run_sweep(args);
+    throw magfem::InputError("<command line>", 0, "",
+                             "unknown command '" + args.command + "'\n" + magfem::usage_overview());
+  } catch (const magfem::InputError& e) {
+    return fail(2, std::string("error: ") + e.what());
+  } catch (const magfem::SolveError& e) {
+    return fail(3, std::string("solver failed: ") + e.what());
+  } catch (const std::exception& e) {
+    return fail(1, std::string("internal error: ") + e.what());
+  }
+}

@@ -1,0 +1,62 @@
+#include "cli/materials_command.hpp"
+
+#include <iostream>
+
+#include "core/input_error.hpp"
+#include "materials/bh_table_file.hpp"
+#include "materials/material_library.hpp"
+
+namespace magfem {
+
+namespace {
+
+const std::string cli = "<command line>";
+
+void list_entries(const MaterialLibrary& lib) {
+  for (const auto& name : lib.names()) {
+    std::string line = name;
+    line.resize(14, ' ');
+    line += to_string(lib.find(name)->kind);
+    std::string aliases;
+    for (const auto& [alias, entry] : lib.aliases())
+      if (entry == name)
+        aliases += (aliases.empty() ? "" : ", ") + alias;
+    std::cout << line << (aliases.empty() ? "" : "  (also " + aliases + ")") << "\n";
+  }
+}
+
+void export_curve(const MaterialLibrary& lib, const std::string& name) {
+  const Material* m = lib.find(name);
+  if (!m) {
+    std::string names;
+    for (const auto& n : lib.names())
+      names += (names.empty() ? "" : ", ") + n;
+    throw InputError(cli, 0, "--export",
+                     "unknown library material '" + name + "' (library: " + names + ")");
+  }
+  if (!m->curve)
+    throw InputError(cli, 0, "--export",
+                     "'" + name + "' is a " + to_string(m->kind) +
+                         " material: only soft materials have a B-H table");
+  std::cout << "# " << m->name << ": " << m->source << "\n";
+  write_bh_table_file(std::cout, *m->curve);
+}
+
+} // namespace
+
+int run_materials_command(const std::vector<std::string>& args) {
+  const MaterialLibrary& lib = MaterialLibrary::bundled();
+  if (args.empty()) {
+    list_entries(lib);
+    return 0;
+  }
+  if (args[0] == "--export" && args.size() == 2) {
+    export_curve(lib, args[1]);
+    return 0;
+  }
+  throw InputError(cli, 0, args[0],
+                   args[0] == "--export" ? "give one library name: --export NAME"
+                                         : "unknown option (magfem materials [--export NAME])");
+}
+
+} // namespace magfem

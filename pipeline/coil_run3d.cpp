@@ -1,0 +1,254 @@
+#include "pipeline/coil_run3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <stdexcept>
+
+#include "pipeline/run3d.hpp"
+#include "core/input_error.hpp"
+#include "postproc/coil_linkage3d.hpp"
+#include "postproc/lorentz3d.hpp"
+#include "postproc/point_locator3d.hpp"
+#include "solver/assembler3d.hpp"
+#include "solver/current_sensitivity3d.hpp"
+#include "sources/coil_field.hpp"
+
+namespace magfem {
+namespace {
+
+// The sensitivity solves (one per coil) stop at a relative residual of 1e-9 unless the case
+// asks for a looser one: on the 12-coil actuator design (mesh scale 3) the inductance matrix
+// moves by 1.6e-9 of its largest entry against 1e-12, far below its discretization error,
+// and the post-processing takes 27 s instead of 36 s.
+LinearSolverOptions sensitivity_solver_options(LinearSolverOptions options) {
+  options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
+  return options;
+}
+
+// Gauss order of the coil volume quadrature for the Lorentz force: B is smooth across the
+// bundle (its own field is subtracted), so a few points per direction suffice there. Along a
+// ring coil's azimuth it is not: a multipole magnet array under the coil puts high harmonics
+// on the ring, and 12 azimuths (2 x order) left 1 % of the largest torque in a component that
+// symmetry makes zero (a 6-coil actuator over a 2 x 4 segment array); 64 take it below the
+// FE's own error.
+constexpr int lorentz_order = 6;
+constexpr int lorentz_azimuths = 64;
+
+std::vector<CoilVolumePoint> volume_points(const CaseCoils& coils, int k, int order) {
+  std::vector<CoilVolumePoint> out;
+  for (const auto& q : coils.field(k).volume_quadrature(order, lorentz_azimuths))
+    out.push_back({q.x, q.weight, coils.current(k) * q.j_per_ampere});
+  return out;
+}
+
+int coil_index(const Run3D& run, const std::string& name) {
+  const auto& coils = run.spec.geometry3d.coils;
+  for (std::size_t k = 0; k < coils.size(); ++k)
+    if (coils[k].name == name)
+      return static_cast<int>(k);
+  throw std::logic_error("no coil named " + name);
+}
+
+} // namespace
+
+CoilFieldOptions fe_source_options() {
+  CoilFieldOptions o;
+  o.tolerance = 1e-4;
+  o.near_order = 4;
+  return o;
+}
+
+// Points memoised per run: ~56 bytes of key and index plus 24 per coil, at most
+// coil_field_cache_limit_mb in all. (A cap of 16 M points, meant as 1.3 GB for one coil,
+// let 12 coils take 2.9 GB on a 423k-tetrahedron actuator, 3x the rest of the run.)
+std::size_t max_cached_points(std::size_t n_coils) {
+  return static_cast<std::size_t>(coil_field_cache_limit_mb * 1024 * 1024) / (56 + 24 * n_coils);
+}
+
+CaseCoils::CaseCoils(const std::vector<Coil3D>& coils, const CoilFieldOptions& options)
+    : coils_(coils), cache_(static_cast<int>(coils.size()), max_cached_points(coils.size())) {
+  for (const auto& c : coils_)
+    fields_.push_back(std::make_unique<CoilField>(c, options));
+}
+
+CaseCoils::~CaseCoils() = default;
+
+void CaseCoils::H_per_ampere_all(const Eigen::Vector3d& x, Eigen::Vector3d* out) const {
+  cache_.get(
+      x, [this](const Eigen::Vector3d& p, Eigen::Vector3d* h) { H_per_ampere_all_once(p, h); },
+      out);
+}
+
+void CaseCoils::H_per_ampere_all_once(const Eigen::Vector3d& x, Eigen::Vector3d* out) const {
+  for (std::size_t k = 0; k < fields_.size(); ++k)
+    out[k] = fields_[k]->H_per_ampere(x);
+}
+
+namespace {
+
+// The per-point queries run at every quadrature point of several passes: a buffer on the
+// stack for the usual coil counts instead of a heap allocation per call.
+template <class Use>
+auto with_all_per_ampere(const CaseCoils& coils, const Eigen::Vector3d& x, const Use& use) {
+  constexpr int on_stack = 32;
+  const int nc = coils.n_coils();
+  if (nc <= on_stack) {
+    std::array<Eigen::Vector3d, on_stack> h;
+    coils.H_per_ampere_all(x, h.data());
+    return use(h.data());
+  }
+  std::vector<Eigen::Vector3d> h(nc);
+  coils.H_per_ampere_all(x, h.data());
+  return use(h.data());
+}
+
+} // namespace
+
+Eigen::Vector3d CaseCoils::H(const Eigen::Vector3d& x) const {
+  return with_all_per_ampere(*this, x, [this](const Eigen::Vector3d* h) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < fields_.size(); ++k)
+      sum += coils_[k].current * h[k];
+    return sum;
+  });
+}
+
+Eigen::Vector3d CaseCoils::H_per_ampere(int coil, const Eigen::Vector3d& x) const {
+  return with_all_per_ampere(*this, x, [coil](const Eigen::Vector3d* h) { return h[coil]; });
+}
+
+Eigen::Vector3d CaseCoils::J(const Eigen::Vector3d& x) const {
+  Eigen::Vector3d j = Eigen::Vector3d::Zero();
+  for (const auto& f : fields_)
+    j += f->current_density(x);
+  return j;
+}
+
+void check_coils_in_air(const Run3D& run) {
+  if (!run.coils)
+    return;
+  const PointLocator3D locator(run.mesh);
+  const auto& spec = run.spec;
+  for (int k = 0; k < run.coils->n_coils(); ++k) {
+    const std::string field = "coils." + run.coils->coil(k).name;
+    for (const auto& q : run.coils->field(k).volume_quadrature(4)) {
+      const auto loc = locator.locate(q.x);
+      if (!loc || run.problem.is_shell(loc->tet))
+        throw InputError(spec.file, spec.coil_lines[k], field, "the coil leaves the meshed domain");
+      const int part = run.mesh.tet_part[loc->tet];
+      // Air regions (mesh aids) may hold coils; magnets and iron may not.
+      const Material* m = part >= 0 ? spec.regions[part].material : nullptr;
+      if (m && (m->is_magnet() || m->is_nonlinear() || m->mu_r != 1.0))
+        throw InputError(spec.file, spec.coil_lines[k], field,
+                         "the coil overlaps region '" + spec.regions[part].name +
+                             "'; coils must lie in air");
+    }
+  }
+}
+
+CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
+                                 const Eigen::VectorXd& u) {
+  CoilResults out;
+  if (!run.coils)
+    return out;
+  const CaseCoils& coils = *run.coils;
+  const int nc = coils.n_coils();
+  const std::vector<double> linkage = flux_linkages_3d(*run.field);
+  const PointLocator3D locator(run.mesh);
+  for (int k = 0; k < nc; ++k) {
+    CoilResult r;
+    const Coil3D& c = coils.coil(k);
+    r.name = c.name;
+    r.turns = c.turns;
+    r.current_A = c.current;
+    r.resistance_ohm = coils.field(k).resistance();
+    r.power_W = r.resistance_ohm * c.current * c.current;
+    r.flux_linkage_Wb = linkage[k];
+    try {
+      const ForceTorque ft = lorentz_force_3d(
+          *run.field, locator, k, volume_points(coils, k, lorentz_order), Eigen::Vector3d::Zero());
+      r.force_N = ft.force;
+      r.torque_Nm = ft.torque;
+    } catch (const std::invalid_argument& e) {
+      throw InputError(run.spec.file, run.spec.coil_lines[k], "coils." + c.name, e.what());
+    }
+    out.coils.push_back(r);
+  }
+  if (run.spec.coil_inductance) {
+    const auto sens = current_sensitivities_3d(assembler, u, nc,
+                                               sensitivity_solver_options(run.spec.newton.linear));
+    std::vector<Eigen::VectorXd> full;
+    for (const auto& s : sens)
+      full.push_back(assembler.expand(s));
+    out.inductance_H = inductance_matrix_3d(*run.field, full);
+  }
+  out.warnings = run.coil_source.warnings;
+  return out;
+}
+
+std::vector<ForceResult> coil_lorentz_forces(const Run3D& run) {
+  std::vector<ForceResult> out;
+  if (!run.coils)
+    return out;
+  const PointLocator3D locator(run.mesh);
+  for (const auto& f : run.spec.forces) {
+    if (f.kind != ForceSpec::Kind::lorentz)
+      continue;
+    ForceResult r;
+    r.name = f.name;
+    r.method = "lorentz";
+    for (const auto& name : f.regions) {
+      const int k = coil_index(run, name);
+      const ForceTorque ft = lorentz_force_3d(
+          *run.field, locator, k, volume_points(*run.coils, k, lorentz_order), f.torque_point);
+      r.force += ft.force;
+      r.torque += ft.torque;
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+nlohmann::ordered_json coil_results_json(const CoilResults& results) {
+  nlohmann::ordered_json coils = nlohmann::ordered_json::array();
+  for (const auto& c : results.coils)
+    coils.push_back({{"name", c.name},
+                     {"turns", c.turns},
+                     {"current_A", c.current_A},
+                     {"resistance_ohm", c.resistance_ohm},
+                     {"power_W", c.power_W},
+                     {"flux_linkage_Wb", c.flux_linkage_Wb},
+                     {"force_N", {c.force_N.x(), c.force_N.y(), c.force_N.z()}},
+                     {"torque_Nm", {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()}}});
+  return coils;
+}
+
+std::string describe_coils(const CoilResults& results) {
+  std::string s;
+  char buf[320];
+  for (const auto& c : results.coils) {
+    std::snprintf(buf, sizeof buf,
+                  "coil     %-12s %g turns x %g A: R %.4g ohm, %.4g W, linkage %.6g Wb, "
+                  "F (%.4g, %.4g, %.4g) N, T (%.4g, %.4g, %.4g) N m\n",
+                  c.name.c_str(), c.turns, c.current_A, c.resistance_ohm, c.power_W,
+                  c.flux_linkage_Wb, c.force_N.x(), c.force_N.y(), c.force_N.z(), c.torque_Nm.x(),
+                  c.torque_Nm.y(), c.torque_Nm.z());
+    s += buf;
+  }
+  if (results.inductance_H.size() > 0 && results.inductance_H.rows() <= 4) {
+    for (Eigen::Index i = 0; i < results.inductance_H.rows(); ++i) {
+      s += i == 0 ? "L (H)   " : "        ";
+      for (Eigen::Index j = 0; j < results.inductance_H.cols(); ++j) {
+        std::snprintf(buf, sizeof buf, " %12.6g", results.inductance_H(i, j));
+        s += buf;
+      }
+      s += "\n";
+    }
+  }
+  for (const auto& w : results.warnings)
+    s += "warning  " + w + "\n";
+  return s;
+}
+
+} // namespace magfem

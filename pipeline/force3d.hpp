@@ -1,0 +1,23 @@
+#pragma once
+// Forces of a 3D run: the Maxwell stress tensor on spheres in air (case `forces:` entries of
+// type sphere, and the sweep's separating sphere).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "pipeline/force_results.hpp"
+#include "casefile/case_spec.hpp"
+
+namespace magfem {
+
+struct Run3D;
+
+// Maxwell stress tensor on every `sphere` force of the case, from the air-only recovered B
+// (postproc/maxwell_stress3d.hpp); a sphere that crosses matter is an InputError.
+std::vector<ForceResult> compute_forces_3d(const Run3D& run);
+
+// The case with a stress sphere about the origin added to its forces (named `name`), so that
+// the mesh is refined on it like on a sphere probe.
+CaseSpec with_stress_sphere(CaseSpec spec, double radius, const std::string& name);
+
+} // namespace magfem

@@ -1,0 +1,294 @@
+#include "pipeline/run2d.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/build_info.hpp"
+#include "pipeline/force2d.hpp"
+#include "pipeline/resource_usage.hpp"
+#include "pipeline/result_checks.hpp"
+#include "pipeline/solver_summary.hpp"
+#include "core/output_stage.hpp"
+#include "materials/material_library.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesher2d.hpp"
+#include "postproc/coil_linkage_axi.hpp"
+#include "postproc/point_locator2d.hpp"
+#include "postproc/probes2d.hpp"
+#include "postproc/vtu_export2d.hpp"
+#include "postproc/vtu_export_revolved.hpp"
+#include "solver/assembler2d.hpp"
+#include "solver/triangle_lagrange.hpp"
+
+namespace magfem {
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Mesh2D mesh_case(const CaseSpec& spec) {
+  try {
+    return build_mesh_2d(spec.geometry2d);
+  } catch (const MeshError& e) {
+    throw_mesh_error_2d(spec, e);
+  }
+}
+
+std::vector<double> part_areas(const Mesh2D& mesh, std::size_t n_parts) {
+  std::vector<double> area(n_parts, 0.0);
+  for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
+    const int p = mesh.triangle_part[t];
+    if (p < 0)
+      continue;
+    const auto& tri = mesh.triangles[t];
+    area[p] +=
+        TriangleGeometry::of(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]).area;
+  }
+  return area;
+}
+
+Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
+  Problem2D p;
+  p.mesh = &mesh;
+  p.order = spec.order;
+  p.boundary = spec.geometry2d.outer.kind;
+  p.symmetry = spec.geometry2d.symmetry;
+  p.air.material = MaterialLibrary::bundled().find("air");
+  const auto areas = part_areas(mesh, spec.regions.size());
+  for (std::size_t i = 0; i < spec.regions.size(); ++i) {
+    const auto& r = spec.regions[i];
+    RegionPhysics2D phys{r.material, r.magnetization, r.current_density};
+    // Ampere-turns over the meshed area, so the total current is exactly N I.
+    if (r.ampere_turns != 0)
+      phys.current_density = r.ampere_turns / areas[i];
+    p.parts.push_back(phys);
+  }
+  return p;
+}
+
+std::vector<CoilResult2D> coil_results(const Run2D& run) {
+  std::vector<CoilResult2D> out;
+  if (!run.spec.axisymmetric())
+    return out;
+  for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
+    const RegionSpec& r = run.spec.regions[i];
+    if (r.turns == 0)
+      continue;
+    CoilResult2D c{r.name, r.turns, r.current, 0, 0};
+    c.flux_linkage_Wb = flux_linkage_axi(*run.field, static_cast<int>(i), r.turns);
+    c.inductance_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
+    out.push_back(c);
+  }
+  return out;
+}
+
+nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
+  auto j = nlohmann::ordered_json::array();
+  for (const auto& c : coils)
+    j.push_back({{"name", c.name},
+                 {"turns", c.turns},
+                 {"current_A", c.current_A},
+                 {"flux_linkage_Wb", c.flux_linkage_Wb},
+                 {"inductance_H", c.inductance_H}});
+  return j;
+}
+
+} // namespace
+
+void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e) {
+  // Point at the region that caused it when we know it, else at the mesh settings. The
+  // mesher's polygon `vertices` are the case file's `points`.
+  const std::string field = e.field == "vertices" ? "points" : e.field;
+  for (std::size_t i = 0; i < spec.regions.size(); ++i)
+    if (const auto& r = spec.regions[i]; r.name == e.part)
+      throw InputError(spec.file, r.line,
+                       "regions[" + std::to_string(i) + "]" + (field.empty() ? "" : "." + field),
+                       e.reason);
+  throw InputError(spec.file, spec.boundary_line, e.field.empty() ? "mesh" : "mesh." + e.field,
+                   e.reason);
+}
+
+std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
+  const auto t_start = Clock::now();
+  auto run = std::make_unique<Run2D>();
+  if (ov.order)
+    spec.order = ov.order;
+  if (ov.mesh_scale > 0)
+    spec.geometry2d.options.size_scale *= ov.mesh_scale;
+  if (ov.domain_radius > 0)
+    spec.geometry2d.outer.radius = ov.domain_radius;
+  run->spec = std::move(spec);
+  run->spec.newton.linear.progress = ov.progress;
+  // A planar or axisymmetric factor stays affordable up to the direct limit (nested
+  // dissection fill grows like n log n in 2D), so the cost prediction, a second AMD ordering
+  // of the whole matrix, is not run (it was a tenth of a 100k-unknown axisymmetric solve).
+  run->spec.newton.linear.direct_max_gflop = 0;
+  auto stage = [&](const std::string& what) {
+    if (ov.progress)
+      ov.progress->stage(what);
+  };
+
+  auto t0 = Clock::now();
+  stage("meshing");
+  run->mesh = mesh_case(run->spec);
+  run->timings.mesh = since(t0);
+  check_stress_surfaces_2d(run->spec, run->mesh); // before the solve: fail fast
+
+  run->problem = build_problem(run->spec, run->mesh);
+  t0 = Clock::now();
+  stage("assembly: " + std::to_string(run->mesh.n_triangles()) + " triangles, order " +
+        std::to_string(run->spec.order));
+  run->dofs = std::make_unique<DofMap2D>(run->mesh, run->spec.order);
+  Assembler2D assembler(run->problem, *run->dofs);
+  const double setup = since(t0);
+
+  Eigen::VectorXd u;
+  run->report = solve_nonlinear(assembler, u, run->spec.newton);
+  run->timings.assemble = setup + run->report.assemble_s;
+  run->timings.solve = run->report.solve_s;
+  if (!run->report.converged)
+    throw SolveError("the solver did not converge: " + run->report.message);
+
+  check_finite(u, "solution");
+
+  t0 = Clock::now();
+  stage("post-processing");
+  run->field = std::make_unique<Field2D>(run->problem, *run->dofs, assembler.expand(u));
+  std::vector<std::string> names;
+  for (const auto& r : run->spec.regions)
+    names.push_back(r.name);
+  run->energy = summarize_energy_2d(*run->field, names);
+  const PointLocator2D locator(run->mesh);
+  for (const auto& probe : run->spec.probes)
+    run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
+  run->forces = compute_forces_2d(*run);
+  run->coils = coil_results(*run);
+  check_finite(run->energy.total_J_per_m, "magnetic energy");
+  check_forces_finite(run->forces);
+  run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
+  run->timings.postprocess = since(t0);
+  run->timings.total = since(t_start);
+  return run;
+}
+
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
+
+  if (run.spec.write_vtu) {
+    std::vector<std::string> material_names = {"air"};
+    std::map<std::string, int> index = {{"air", 0}};
+    std::vector<int> material_of_part;
+    for (const auto& r : run.spec.regions) {
+      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
+      if (fresh)
+        material_names.push_back(r.material->name);
+      material_of_part.push_back(it->second);
+    }
+    write_vtu(stage.path_for("solution.vtu").string(),
+              make_vtu_2d(*run.field, material_of_part, 0, material_names));
+    if (run.spec.write_revolved_vtu)
+      write_vtu(stage.path_for("solution_revolved.vtu").string(),
+                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
+  }
+
+  nlohmann::ordered_json j;
+  add_provenance(j);
+  j["case"] = run.spec.file;
+  const bool axi = run.spec.axisymmetric();
+  if (axi)
+    j["dimension"] = "axi";
+  else
+    j["dimension"] = 2;
+  j["order"] = run.spec.order;
+  j["elements"] = run.mesh.n_triangles();
+  j["nodes"] = run.mesh.n_nodes();
+  j["unknowns"] = run.dofs->n_dofs();
+  j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
+  j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
+  const double length = run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
+  j["energy_J"] = run.energy.total_J_per_m * length;
+  j["energy_per"] = axi                         ? "body of revolution"
+                    : run.spec.stack_length > 0 ? "stack"
+                                                : "metre of length";
+  j["converged"] = run.report.converged;
+  j["iterations"] = run.report.iterations;
+  j["residual_history"] = run.report.residual_history;
+  add_solver_summary(j, run.report, 1);
+  j["timings_s"] = {{"mesh", run.timings.mesh},
+                    {"assemble", run.timings.assemble},
+                    {"solve", run.timings.solve},
+                    {"linear_setup", run.report.linear_setup_s},
+                    {"linear_solve", run.report.linear_solve_s},
+                    {"postprocess", run.timings.postprocess},
+                    {"total", run.timings.total}};
+  j["peak_memory_MB"] = peak_memory_mb();
+  auto& regions = j["regions"];
+  for (const auto& r : run.energy.regions) {
+    if (r.area_m2 == 0)
+      continue;
+    regions.push_back({{"name", r.name},
+                       {"area_m2", r.area_m2},
+                       {"energy_J", r.energy_J_per_m * length},
+                       {"peak_B_T", r.peak_B_T},
+                       {"nonlinear", r.nonlinear}});
+  }
+  for (const auto& p : run.probes)
+    j["probes"].push_back(p.name + ".csv");
+  if (!run.forces.empty()) {
+    j["forces_per"] = axi                         ? "body of revolution"
+                      : run.spec.stack_length > 0 ? "stack"
+                                                  : "metre of length";
+    j["forces"] = forces_json(run.forces);
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  }
+  if (!run.coils.empty())
+    j["coils"] = coils_json(run.coils);
+  j["warnings"] = run.warnings;
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+  return stage.written();
+}
+
+std::string describe_run_2d(const Run2D& run) {
+  char buf[512];
+  std::string s;
+  std::snprintf(buf, sizeof buf,
+                "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
+                "solve    order %d, %d unknowns, %s, residual %.2e\n",
+                run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
+                run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
+                run.report.residual_history.back());
+  s += buf;
+  std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
+                run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
+  s += buf;
+  for (const auto& r : run.energy.regions)
+    if (r.nonlinear && r.area_m2 > 0) {
+      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                    r.peak_B_T);
+      s += buf;
+    }
+  s += describe_forces(run.forces, run.spec.stack_length <= 0 && !run.spec.axisymmetric());
+  for (const auto& c : run.coils) {
+    std::snprintf(buf, sizeof buf, "coil     %-20s linkage %.6g Wb, L = linkage / I = %.6g H\n",
+                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf,
+                "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
+                run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
+                run.timings.total);
+  s += buf;
+  for (const auto& w : run.warnings)
+    s += "warning  " + w + "\n";
+  return s;
+}
+
+} // namespace magfem

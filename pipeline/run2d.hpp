@@ -1,0 +1,77 @@
+#pragma once
+// The 2D pipeline, stage by stage: case -> mesh -> problem -> assemble/solve -> postprocess.
+// A library (not just main) so that tests run whole cases in-process.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pipeline/force_results.hpp"
+#include "casefile/case_spec.hpp"
+#include "core/progress.hpp"
+#include "mesh/mesh2d.hpp"
+#include "mesh/mesh_error.hpp"
+#include "postproc/energy2d.hpp"
+#include "postproc/field2d.hpp"
+#include "postproc/probe_table.hpp"
+#include "solver/dof_map2d.hpp"
+#include "solver/mpi_context.hpp"
+#include "solver/newton.hpp"
+#include "solver/problem2d.hpp"
+
+namespace magfem {
+
+struct Timings {
+  double mesh = 0, assemble = 0, solve = 0, postprocess = 0, total = 0;
+};
+
+// Command-line overrides of case settings (refinement studies, quick checks).
+struct RunOverrides {
+  int order = 0;                // 0 = as in the case
+  double mesh_scale = 0;        // 0 = as in the case; multiplies every mesh size
+  double domain_radius = 0;     // metres; 0 = as in the case
+  double max_memory_gb = 0;     // 3D memory guard limit; 0 = the memory available now
+  Progress* progress = nullptr; // console progress (not owned); null = silent
+  // 3D memory guard, for runs that go on at once (sweep --jobs): their number and the limit
+  // they share, fixed once for all (MB; 0 = measured at the check). Each gets its share.
+  int parallel_runs = 1;
+  double shared_memory_mb = 0;
+  // The processes of an mpirun solving this case together (3D linear cases only; run3d.hpp).
+  MpiWorld world{};
+};
+
+// An axisymmetric coil (region with turns and current): its flux linkage with the total field
+// and linkage / current (the self-inductance when it is the only source in linear media).
+struct CoilResult2D {
+  std::string name;
+  double turns = 0, current_A = 0, flux_linkage_Wb = 0, inductance_H = 0;
+};
+
+struct Run2D {
+  CaseSpec spec;
+  Mesh2D mesh;
+  std::unique_ptr<DofMap2D> dofs;
+  Problem2D problem;
+  std::unique_ptr<Field2D> field;
+  NewtonReport report;
+  EnergySummary2D energy;
+  std::vector<ProbeTable> probes;
+  std::vector<ForceResult> forces;
+  std::vector<CoilResult2D> coils;   // axisymmetric only
+  std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  Timings timings;
+};
+
+// A mesher error (bad part) as the InputError naming the case file's region and field.
+[[noreturn]] void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e);
+
+// Meshes and solves; throws InputError (bad case), SolveError (no convergence).
+std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});
+
+// Writes summary.json, one CSV per probe and solution.vtu, all-or-nothing.
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir);
+
+// Prints the short human summary.
+std::string describe_run_2d(const Run2D& run);
+
+} // namespace magfem

@@ -1,0 +1,62 @@
+#pragma once
+// The 3D pipeline: case -> TetGen mesh -> scalar-potential problem -> Newton -> probes,
+// energy, VTU. Mirrors run2d.hpp.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pipeline/coil_run3d.hpp"
+#include "pipeline/run2d.hpp"
+#include "mesh/mesh3d.hpp"
+#include "mesh/mesh_estimate3d.hpp"
+#include "postproc/energy3d.hpp"
+#include "postproc/field3d.hpp"
+#include "postproc/recovered_b3d.hpp"
+#include "postproc/section_flux3d.hpp"
+#include "solver/coil_source3d.hpp"
+#include "solver/dof_map3d.hpp"
+#include "solver/problem3d.hpp"
+
+namespace magfem {
+
+struct Run3D {
+  CaseSpec spec;
+  Mesh3D mesh;
+  MeshEstimate3D mesh_estimate; // before meshing (the memory guard's)
+  std::unique_ptr<DofMap3D> dofs;
+  Problem3D problem;
+  std::unique_ptr<CaseCoils> coils; // null without coils
+  CoilSource3D coil_source;         // problem.source points here when there are coils
+  std::unique_ptr<Field3D> field;
+  NewtonReport report;
+  EnergySummary3D energy;
+  RecoveredB3D recovered_B; // nodal B per region, computed once (probes, VTU)
+  std::vector<ProbeTable> probes;
+  std::vector<SectionFlux> sections; // parallel to spec.sections
+  std::vector<ForceResult> forces;
+  CoilResults coil_results;
+  std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  Timings timings;
+  int threads = 1; // element-loop threads of the assembly
+  int ranks = 1;   // processes that solved it (MPI_COMM_WORLD under mpirun)
+};
+
+// Under mpirun (overrides.world.distributed()) every process calls this: each meshes the
+// case (the meshes must agree bit for bit, else an internal error on all), assembles its
+// share of the elements and takes part in the solve (solver/distributed_solve3d.hpp); rank 0
+// alone gets the solution and post-processes; the others return a Run3D without field and
+// results, to be neither described nor written. Nonlinear materials and coils are refused
+// (InputError) before meshing.
+std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides = {});
+// The memory guard's estimate of the peak memory (MB) run_case_3d would need for this case,
+// from the size field alone (no mesh is made; seconds on large cases).
+double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& overrides = {});
+// The memory guard of run_case_3d without meshing: InputError (exit 2) naming the
+// --mesh-scale that would fit when the case cannot be solved within the limit. A geometry
+// the mesher rejects throws its MeshError (run_case_3d would name the part).
+void check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
+std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
+std::string describe_run_3d(const Run3D& run);
+
+} // namespace magfem

@@ -1,0 +1,293 @@
+#include "studies/optimize.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+#include <nlopt.hpp>
+
+#include "pipeline/build_info.hpp"
+#include "casefile/cli_number.hpp"
+#include "casefile/parameter_expression.hpp"
+#include "core/input_error.hpp"
+#include "core/output_stage.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+OptimizeVariable parse_variable(const std::string& text) {
+  const auto eq = text.find('='), colon = text.find(':');
+  if (eq == std::string::npos || eq == 0 || colon == std::string::npos || colon < eq)
+    throw InputError(cli, 0, "--vary", "expected NAME=LO:HI, got '" + text + "'");
+  OptimizeVariable v{text.substr(0, eq), 0, 0};
+  v.lower = parse_cli_number("--vary", text.substr(eq + 1, colon - eq - 1));
+  v.upper = parse_cli_number("--vary", text.substr(colon + 1));
+  if (!(v.lower < v.upper))
+    throw InputError(cli, 0, "--vary", "expected LO < HI in '" + text + "'");
+  return v;
+}
+
+OptimizeConstraint parse_constraint(const std::string& text) {
+  const auto le = text.find("<="), ge = text.find(">=");
+  if ((le == std::string::npos) == (ge == std::string::npos) ||
+      text.find('<', (le == std::string::npos ? ge : le) + 2) != std::string::npos ||
+      text.find('>', (le == std::string::npos ? ge : le) + 2) != std::string::npos)
+    throw InputError(cli, 0, "--constraint",
+                     "expected one inequality EXPR <= EXPR or EXPR >= EXPR, got '" + text + "'");
+  const auto at = le == std::string::npos ? ge : le;
+  return {text, text.substr(0, at), text.substr(at + 2), le != std::string::npos};
+}
+
+// The constraint as g(x) <= 0, for NLopt.
+double constraint_value(const OptimizeConstraint& c, const std::vector<OptimizeVariable>& vars,
+                        const double* x) {
+  auto lookup = [&](const std::string& name) -> double {
+    for (std::size_t i = 0; i < vars.size(); ++i)
+      if (vars[i].name == name)
+        return x[i];
+    throw ExpressionError(ExpressionError::Kind::undefined_name,
+                          "'" + name + "' is not a --vary parameter", name);
+  };
+  const double lhs = evaluate_expression(c.lhs, lookup), rhs = evaluate_expression(c.rhs, lookup);
+  return c.at_most ? lhs - rhs : rhs - lhs;
+}
+
+// Names and syntax are checked once, at the centre of the box, before any model run.
+void check_constraints(const OptimizeOptions& o) {
+  std::vector<double> centre;
+  for (const auto& v : o.variables)
+    centre.push_back(0.5 * (v.lower + v.upper));
+  for (const auto& c : o.constraints) {
+    try {
+      (void)constraint_value(c, o.variables, centre.data());
+    } catch (const ExpressionError& e) {
+      throw InputError(cli, 0, "--constraint", "'" + c.text + "': " + e.what());
+    }
+  }
+}
+
+} // namespace
+
+OptimizeOptions parse_optimize_options(const std::vector<std::string>& args) {
+  OptimizeOptions o;
+  // The sweep and objective options are study's: collect them and let study parse them.
+  std::vector<std::string> study_args;
+  int senses = 0;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size())
+        throw InputError(cli, 0, arg, "missing value");
+      return args[++i];
+    };
+    if (arg == "--vary")
+      o.variables.push_back(parse_variable(value()));
+    else if (arg == "--maximize" || arg == "--minimize") {
+      o.maximize = arg == "--maximize";
+      study_args.push_back("--objective");
+      study_args.push_back(value());
+      ++senses;
+    } else if (arg == "--xtol") {
+      o.xtol = parse_cli_number(arg, value());
+      if (!(o.xtol > 0))
+        throw InputError(cli, 0, arg, "must be positive");
+    } else if (arg == "--constraint")
+      o.constraints.push_back(parse_constraint(value()));
+    else if (arg == "--verify-fe")
+      o.verify_fe = true;
+    else if (arg == "--param" || arg == "--objective" || arg == "--fe")
+      throw InputError(cli, 0, arg, "not an optimize option (use --vary, --maximize/--minimize)");
+    else
+      study_args.push_back(arg);
+  }
+  if (o.variables.empty())
+    throw InputError(cli, 0, "--vary", "give at least one --vary NAME=LO:HI");
+  if (senses != 1)
+    throw InputError(cli, 0, "--maximize", "give one --maximize or --minimize OBJECTIVE");
+  check_constraints(o);
+  for (const auto& v : o.variables) // study wants parameters; their values are ours
+    study_args.push_back("--param"), study_args.push_back(v.name + "=" + std::to_string(v.lower));
+  o.study = parse_study_options(study_args);
+  if (o.study.out_dir.find("_study") != std::string::npos) {
+    auto& dir = o.study.out_dir;
+    dir.replace(dir.rfind("_study"), 6, "_optimize");
+  }
+  return o;
+}
+
+OptimizeResult run_optimize(const OptimizeOptions& options) {
+  OptimizeResult result;
+  const auto& vars = options.variables;
+  const std::size_t n = vars.size();
+  StudyOptions analytic = options.study;
+  analytic.sweep.analytic = true;
+  analytic.objectives.resize(1);
+  // Fail early on names and options (the grid run does the same check).
+  {
+    StudyOptions check = analytic;
+    check.quiet = true;
+    for (std::size_t i = 0; i < n; ++i)
+      check.parameters[i].values = {0.5 * (vars[i].lower + vars[i].upper)};
+    (void)run_study(check);
+  }
+  auto model = [&](const std::vector<double>& x) {
+    const StudyDesign d = evaluate_study_design(analytic, x);
+    if (!d.ok)
+      throw SolveError("optimize: the model failed at a point inside the bounds: " + d.error);
+    ++result.evaluations;
+    result.method = d.method;
+    return d.objectives[0];
+  };
+  using Model = decltype(model);
+  // COBYLA: derivative-free, honours bounds, works in one dimension (BOBYQA needs two).
+  nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(n));
+  std::vector<double> lower(n), upper(n), x(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    lower[i] = vars[i].lower, upper[i] = vars[i].upper;
+    x[i] = 0.5 * (lower[i] + upper[i]);
+  }
+  opt.set_lower_bounds(lower);
+  opt.set_upper_bounds(upper);
+  // NLopt turns an exception in a callback into a bare "nlopt failure": keep the model's own
+  // message and stop the optimizer with it.
+  struct Context {
+    Model* model;
+    std::string error;
+  } context{&model, {}};
+  auto call = [](unsigned dim, const double* p, double*, void* data) -> double {
+    auto* c = static_cast<Context*>(data);
+    try {
+      return (*c->model)(std::vector<double>(p, p + dim));
+    } catch (const std::exception& e) {
+      c->error = e.what();
+      throw nlopt::forced_stop();
+    }
+  };
+  if (options.maximize)
+    opt.set_max_objective(call, &context);
+  else
+    opt.set_min_objective(call, &context);
+  struct ConstraintContext {
+    const OptimizeConstraint* constraint;
+    const std::vector<OptimizeVariable>* variables;
+  };
+  std::vector<ConstraintContext> constraint_contexts;
+  for (const auto& c : options.constraints)
+    constraint_contexts.push_back({&c, &vars});
+  auto constraint = [](unsigned, const double* p, double*, void* data) -> double {
+    const auto* c = static_cast<const ConstraintContext*>(data);
+    return constraint_value(*c->constraint, *c->variables, p);
+  };
+  for (auto& c : constraint_contexts)
+    opt.add_inequality_constraint(constraint, &c, 0.0);
+  opt.set_xtol_rel(options.xtol);
+  opt.set_maxeval(options.max_evaluations);
+  // Initial step: a quarter of each range, so that the first simplex spans the box.
+  std::vector<double> step(n);
+  for (std::size_t i = 0; i < n; ++i)
+    step[i] = 0.25 * (upper[i] - lower[i]);
+  opt.set_initial_step(step);
+  double best = 0;
+  nlopt::result why{};
+  try {
+    why = opt.optimize(x, best);
+  } catch (const nlopt::forced_stop&) {
+    throw SolveError(context.error);
+  }
+  result.optimum = x;
+  result.objective = best;
+  // COBYLA ends on a point it judges feasible; one that is not (an empty feasible set, or a
+  // stop on the evaluation limit) must not be reported as the constrained optimum. The slack
+  // is round-off of the variables' scale.
+  double scale = 0;
+  for (const auto& v : vars)
+    scale = std::max({scale, std::abs(v.lower), std::abs(v.upper)});
+  for (const auto& c : options.constraints) {
+    result.violations.push_back(constraint_value(c, vars, x.data()));
+    if (result.violations.back() > 1e-8 * scale)
+      throw SolveError("optimize: no point inside the bounds satisfies --constraint '" + c.text +
+                       "' (it is violated by " + std::to_string(result.violations.back()) +
+                       " at the best point found)");
+  }
+  switch (why) {
+  case nlopt::XTOL_REACHED:
+    result.stop = "xtol reached";
+    break;
+  case nlopt::FTOL_REACHED:
+    result.stop = "ftol reached";
+    break;
+  case nlopt::MAXEVAL_REACHED:
+    result.stop = "maximum evaluations reached";
+    break;
+  default:
+    result.stop = "nlopt code " + std::to_string(static_cast<int>(why));
+  }
+  if (options.verify_fe) {
+    if (!options.study.quiet)
+      std::fprintf(stderr, "optimize: %d analytic evaluations, %s; FE check at the optimum...\n",
+                   result.evaluations, result.stop.c_str());
+    StudyOptions fe = analytic;
+    fe.sweep.analytic = false;
+    const StudyDesign d = evaluate_study_design(fe, x);
+    if (!d.ok)
+      throw SolveError("optimize --verify-fe: the FE check failed: " + d.error);
+    result.fe_objective = d.objectives[0];
+    result.fe_seconds = d.seconds;
+  }
+  return result;
+}
+
+int run_optimize_command(const OptimizeOptions& options) {
+  const OptimizeResult r = run_optimize(options);
+  const auto& vars = options.variables;
+  const std::string& objective = options.study.objectives.front().name;
+  std::filesystem::create_directories(options.study.out_dir);
+  OutputStage stage(options.study.out_dir);
+  nlohmann::ordered_json j;
+  add_provenance(j);
+  j["case"] = options.study.case_file;
+  j["method"] = r.method;
+  j["optimizer"] = "nlopt LN_COBYLA";
+  j["sense"] = options.maximize ? "maximize" : "minimize";
+  j["objective"] = objective;
+  for (std::size_t i = 0; i < vars.size(); ++i)
+    j["optimum"].push_back({{"name", vars[i].name},
+                            {"value", r.optimum[i]},
+                            {"lower", vars[i].lower},
+                            {"upper", vars[i].upper}});
+  for (std::size_t i = 0; i < options.constraints.size(); ++i)
+    j["constraints"].push_back(
+        {{"constraint", options.constraints[i].text}, {"slack", 0.0 - r.violations[i]}});
+  j["analytic_value"] = r.objective;
+  j["evaluations"] = r.evaluations;
+  j["stop"] = r.stop;
+  if (r.fe_objective) {
+    j["fe_value"] = *r.fe_objective;
+    j["fe_minus_analytic"] = *r.fe_objective - r.objective;
+    j["fe_relative_difference"] = (*r.fe_objective - r.objective) / std::abs(r.objective);
+    j["fe_seconds"] = r.fe_seconds;
+  }
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+
+  for (std::size_t i = 0; i < vars.size(); ++i)
+    std::printf("optimum  %s = %.6g (bounds %g..%g)\n", vars[i].name.c_str(), r.optimum[i],
+                vars[i].lower, vars[i].upper);
+  std::printf("analytic %s = %.8g (%s, %d evaluations, %s)\n", objective.c_str(), r.objective,
+              r.method.c_str(), r.evaluations, r.stop.c_str());
+  for (std::size_t i = 0; i < options.constraints.size(); ++i)
+    std::printf("subject  %s: slack %.4g (0: the constraint is active)\n",
+                options.constraints[i].text.c_str(), 0.0 - r.violations[i]);
+  if (r.fe_objective)
+    std::printf("FE       %s = %.8g, FE - analytic = %.4g (%.3g %%), %.0f s\n", objective.c_str(),
+                *r.fe_objective, *r.fe_objective - r.objective,
+                100 * (*r.fe_objective - r.objective) / std::abs(r.objective), r.fe_seconds);
+  std::printf("wrote    %s/summary.json\n", options.study.out_dir.c_str());
+  return 0;
+}
+
+} // namespace magfem

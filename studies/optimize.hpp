@@ -1,0 +1,61 @@
+#pragma once
+// `magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ..] --maximize|--minimize OBJECTIVE
+//  --rotate GROUP --axis A [--angles LIST] [--constraint "EXPR <= EXPR" ..] [--xtol T]
+//  [--verify-fe] [--out DIR]`:
+// a bounded derivative-free optimizer (NLopt's COBYLA) over case-file parameters with the
+// analytic sweep as the model (studies/study.hpp objectives), then, with --verify-fe, one FE
+// sweep at the optimum that reports the FE objective beside the analytic one. A constraint
+// is an inequality between two expressions of the varied parameters (the case file's
+// expression syntax, in the parameters' own units), e.g. "R_out - R_in >= 10".
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "studies/study.hpp"
+
+namespace magfem {
+
+struct OptimizeVariable {
+  std::string name;
+  double lower = 0, upper = 0; // in the parameter's own unit
+};
+
+struct OptimizeConstraint {
+  std::string text; // as given, for messages and summary.json
+  std::string lhs, rhs;
+  bool at_most = true; // lhs <= rhs; false: lhs >= rhs
+};
+
+struct OptimizeOptions {
+  StudyOptions study; // case file, objective (the first), sweep; its parameters are the vars
+  std::vector<OptimizeVariable> variables;
+  std::vector<OptimizeConstraint> constraints;
+  bool maximize = true;
+  double xtol = 1e-4; // relative tolerance on the variables (NLopt xtol_rel)
+  int max_evaluations = 500;
+  bool verify_fe = false;
+};
+
+struct OptimizeResult {
+  std::vector<double> optimum;    // parallel to variables
+  std::vector<double> violations; // per constraint at the optimum: > 0 violated, 0 active
+  double objective = 0;           // analytic, at the optimum
+  int evaluations = 0;
+  std::string method; // of the analytic sweeps
+  std::string stop;   // NLopt's reason
+  std::optional<double> fe_objective;
+  double fe_seconds = 0;
+};
+
+// Parses the arguments after `optimize`; throws InputError naming the option.
+OptimizeOptions parse_optimize_options(const std::vector<std::string>& args);
+
+// Runs the optimizer (and the FE check if asked). Throws InputError for bad options, and
+// SolveError if the model fails at a point the optimizer asks for or no point satisfies the
+// constraints.
+OptimizeResult run_optimize(const OptimizeOptions& options);
+
+// The command: prints the optimum, writes summary.json (all or nothing); exit code.
+int run_optimize_command(const OptimizeOptions& options);
+
+} // namespace magfem

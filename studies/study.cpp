@@ -1,0 +1,429 @@
+#include "studies/study.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/build_info.hpp"
+#include "casefile/cli_number.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "studies/study_plot.hpp"
+#include "core/input_error.hpp"
+#include "core/output_stage.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+// NAME=START:STEP:END (END included within round-off) or NAME=A,B,C.
+StudyParameter parse_parameter(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(cli, 0, "--param",
+                     "expected NAME=START:STEP:END or NAME=A,B,C, got '" + text + "'");
+  StudyParameter p{text.substr(0, eq), {}};
+  const std::string list = text.substr(eq + 1);
+  std::vector<double> v;
+  const char sep = list.find(':') != std::string::npos ? ':' : ',';
+  for (std::size_t start = 0;;) {
+    const auto end = list.find(sep, start);
+    v.push_back(parse_cli_number("--param", list.substr(start, end - start)));
+    if (end == std::string::npos)
+      break;
+    start = end + 1;
+  }
+  if (sep == ',') {
+    p.values = v;
+    return p;
+  }
+  if (v.size() != 3 || !(v[1] > 0) || v[2] < v[0])
+    throw InputError(cli, 0, "--param",
+                     "expected " + p.name + "=START:STEP:END with STEP > 0 and END >= START");
+  const int n = static_cast<int>(std::floor((v[2] - v[0]) / v[1] + 1e-9));
+  for (int i = 0; i <= n; ++i)
+    p.values.push_back(v[0] + i * v[1]);
+  return p;
+}
+
+} // namespace
+
+StudyObjective parse_study_objective(const std::string& text) {
+  StudyObjective o;
+  if (text == "peak_torque") {
+    o.name = "peak_torque_Nm";
+    return o;
+  }
+  if (text.rfind("torque_at:", 0) == 0) {
+    o.kind = StudyObjective::Kind::torque_at;
+    o.angle_deg = parse_cli_number("--objective", text.substr(10));
+    char name[64];
+    std::snprintf(name, sizeof name, "torque_at_%gdeg_Nm", o.angle_deg);
+    o.name = name;
+    return o;
+  }
+  throw InputError(cli, 0, "--objective",
+                   "unknown objective '" + text + "' (peak_torque, torque_at:DEG)");
+}
+
+namespace {
+
+// The angles one design needs: --angles for peak_torque, plus every torque_at angle.
+std::vector<double> design_angles(const StudyOptions& o) {
+  std::vector<double> angles;
+  for (const auto& obj : o.objectives)
+    if (obj.kind == StudyObjective::Kind::peak_torque)
+      angles = o.sweep.angles_deg;
+  for (const auto& obj : o.objectives)
+    if (obj.kind == StudyObjective::Kind::torque_at)
+      angles.push_back(obj.angle_deg);
+  return angles;
+}
+
+} // namespace
+
+StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<double>& values) {
+  StudyDesign d;
+  d.parameters = values;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    ParameterOverrides overrides;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      overrides[o.parameters[i].name] = values[i];
+    const CaseSpec spec = read_case(o.case_file, overrides);
+    SweepOptions so = o.sweep;
+    so.angles_deg = design_angles(o);
+    const auto rows = run_sweep(spec, so);
+    const Eigen::Vector3d axis = so.axis.normalized();
+    const std::size_t n_peak = rows.size() - [&] {
+      std::size_t n = 0;
+      for (const auto& obj : o.objectives)
+        n += obj.kind == StudyObjective::Kind::torque_at;
+      return n;
+    }();
+    for (const auto& r : rows)
+      if (!r.ok)
+        throw std::runtime_error("at " + std::to_string(r.angle_deg) + " deg: " + r.error);
+    std::size_t next_at = n_peak;
+    for (const auto& obj : o.objectives) {
+      if (obj.kind == StudyObjective::Kind::peak_torque) {
+        double peak = 0;
+        for (std::size_t i = 0; i < n_peak; ++i)
+          peak = std::max(peak, std::abs(rows[i].torque.dot(axis)));
+        d.objectives.push_back(peak);
+      } else {
+        d.objectives.push_back(rows[next_at++].torque.dot(axis));
+      }
+    }
+    d.method = sweep_method(rows, so);
+    for (const auto& r : rows)
+      d.torque_accuracy = std::max(d.torque_accuracy, r.torque_bound);
+    d.ok = true;
+  } catch (const InputError& e) {
+    // Options and names are the same for every design: report them once, as bad input.
+    if (e.file() == cli)
+      throw;
+    d.error = e.what();
+  } catch (const std::exception& e) {
+    d.error = e.what();
+  }
+  d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return d;
+}
+
+StudyOptions parse_study_options(const std::vector<std::string>& args) {
+  StudyOptions o;
+  o.sweep.analytic = true;
+  std::string axis, angles;
+  bool analytic = false, fe = false;
+  std::vector<std::string> positional;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size())
+        throw InputError(cli, 0, arg, "missing value");
+      return args[++i];
+    };
+    if (arg == "--param")
+      o.parameters.push_back(parse_parameter(value()));
+    else if (arg == "--objective")
+      o.objectives.push_back(parse_study_objective(value()));
+    else if (arg == "--rotate")
+      o.sweep.group = value();
+    else if (arg == "--axis")
+      axis = value();
+    else if (arg == "--angles")
+      angles = value();
+    else if (arg == "--analytic")
+      analytic = true;
+    else if (arg == "--quiet")
+      o.quiet = true;
+    else if (arg == "--resume")
+      o.resume = true;
+    else if (arg == "--fe")
+      fe = true;
+    else if (arg == "--jobs") {
+      o.sweep.jobs = static_cast<int>(parse_cli_number(arg, value()));
+      if (o.sweep.jobs < 1)
+        throw InputError(cli, 0, arg, "must be at least 1");
+    } else if (arg == "--mesh-scale")
+      o.sweep.mesh_scale = parse_cli_mesh_scale(value());
+    else if (arg == "--order")
+      o.sweep.order = parse_cli_order(value());
+    else if (arg == "--out")
+      o.out_dir = value();
+    else if (arg.rfind("--", 0) == 0)
+      throw InputError(cli, 0, arg, "unknown option for study");
+    else
+      positional.push_back(arg);
+  }
+  if (positional.size() != 1)
+    throw InputError(cli, 0, "", "study takes one case file");
+  o.case_file = positional[0];
+  if (analytic && fe)
+    throw InputError(cli, 0, "--fe", "give --analytic or --fe, not both");
+  o.sweep.analytic = !fe;
+  if (o.parameters.empty())
+    throw InputError(cli, 0, "--param", "give at least one --param NAME=START:STEP:END");
+  if (o.objectives.empty())
+    throw InputError(cli, 0, "--objective", "give at least one objective");
+  if (o.sweep.group.empty())
+    throw InputError(cli, 0, "--rotate", "name the group whose torque the objectives take");
+  if (axis.empty())
+    throw InputError(cli, 0, "--axis", "give the rotation axis");
+  o.sweep.axis = parse_axis(axis);
+  bool needs_angles = false;
+  for (const auto& obj : o.objectives)
+    needs_angles |= obj.kind == StudyObjective::Kind::peak_torque;
+  if (needs_angles && angles.empty())
+    throw InputError(cli, 0, "--angles", "peak_torque needs the angles of its sweep");
+  if (!angles.empty())
+    o.sweep.angles_deg = parse_angle_list(angles);
+  if (o.out_dir.empty())
+    o.out_dir = (std::filesystem::path("out") /
+                 (std::filesystem::path(o.case_file).stem().string() + "_study"))
+                    .string();
+  return o;
+}
+
+namespace {
+
+// A design's checkpoint key: its parameter values, exactly.
+std::string design_key(const std::vector<double>& values) {
+  std::string key;
+  for (double v : values) {
+    if (!key.empty())
+      key += ',';
+    key += RunCheckpoint::key_of(v);
+  }
+  return key;
+}
+
+// What study.csv and summary.json need of a finished design (doubles exact: nlohmann::json
+// writes the shortest text that reads back as the same double).
+nlohmann::json design_to_json(const StudyDesign& d) {
+  return {{"parameters", d.parameters},
+          {"objectives", d.objectives},
+          {"method", d.method},
+          {"torque_accuracy", d.torque_accuracy},
+          {"seconds", d.seconds}};
+}
+
+// A recorded design, if its record has the shape this build writes (else it is evaluated
+// again, as a line cut short by the interrupt is).
+std::optional<StudyDesign> design_from_json(const nlohmann::json& j, std::size_t n_objectives) {
+  try {
+    StudyDesign d;
+    d.parameters = j.at("parameters").get<std::vector<double>>();
+    d.objectives = j.at("objectives").get<std::vector<double>>();
+    d.method = j.at("method").get<std::string>();
+    d.torque_accuracy = j.at("torque_accuracy").get<double>();
+    d.seconds = j.at("seconds").get<double>();
+    d.ok = true;
+    if (d.objectives.size() != n_objectives)
+      return std::nullopt;
+    return d;
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
+
+} // namespace
+
+std::string study_checkpoint_identity(const StudyOptions& o) {
+  const auto exact = [](double v) { return RunCheckpoint::key_of(v); };
+  std::string text;
+  for (const auto& p : o.parameters) {
+    text += "param " + p.name + "=";
+    for (double v : p.values)
+      text += exact(v) + ",";
+    text += " ";
+  }
+  for (const auto& obj : o.objectives)
+    text += "objective " + obj.name + "@" + exact(obj.angle_deg) + " ";
+  text += "rotate " + o.sweep.group + " axis " + exact(o.sweep.axis.x()) + "," +
+          exact(o.sweep.axis.y()) + "," + exact(o.sweep.axis.z()) + " angles ";
+  for (double a : o.sweep.angles_deg)
+    text += exact(a) + ",";
+  text += o.sweep.analytic ? " analytic tolerance " + exact(o.sweep.analytic_tolerance)
+                           : " fe order " + std::to_string(o.sweep.order) + " mesh-scale " +
+                                 exact(o.sweep.mesh_scale);
+  return checkpoint_identity("study", o.case_file, text);
+}
+
+std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* checkpoint) {
+  // Fail early for names the file does not declare (read_case names them as --param); the
+  // first design's own problems (crossing radii) are that design's, reported with it.
+  try {
+    ParameterOverrides check;
+    for (const auto& p : options.parameters)
+      check[p.name] = p.values.front();
+    (void)read_case(options.case_file, check);
+  } catch (const InputError& e) {
+    if (e.file() == cli || e.line() == 0) // an option, or a file that cannot be opened
+      throw;
+  }
+  std::vector<std::vector<double>> grid{{}};
+  for (const auto& p : options.parameters) {
+    std::vector<std::vector<double>> next;
+    for (const auto& g : grid)
+      for (double v : p.values) {
+        next.push_back(g);
+        next.back().push_back(v);
+      }
+    grid = std::move(next);
+  }
+  std::vector<StudyDesign> designs;
+  // A line every 2 s at most (an analytic grid of hundreds of designs takes seconds; an FE
+  // design takes minutes and gets its own line).
+  auto last = std::chrono::steady_clock::now();
+  for (const auto& values : grid) {
+    const std::string key = design_key(values);
+    std::optional<StudyDesign> restored;
+    if (checkpoint)
+      if (const auto saved = checkpoint->find(key))
+        restored = design_from_json(*saved, options.objectives.size());
+    if (restored) {
+      designs.push_back(std::move(*restored));
+    } else {
+      designs.push_back(evaluate_study_design(options, values));
+      if (checkpoint && designs.back().ok) // failed designs are tried again on --resume
+        checkpoint->record(key, design_to_json(designs.back()));
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (!options.quiet && (now - last > std::chrono::seconds(2) || designs.size() == grid.size())) {
+      std::fprintf(stderr, "study: design %zu/%zu done (%.1f s)%s\n", designs.size(), grid.size(),
+                   designs.back().seconds, designs.back().ok ? "" : ", failed");
+      last = now;
+    }
+  }
+  return designs;
+}
+
+std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs) {
+  std::string out;
+  for (const auto& p : options.parameters)
+    out += p.name + ",";
+  for (std::size_t i = 0; i < options.objectives.size(); ++i)
+    out += options.objectives[i].name + (i + 1 < options.objectives.size() ? "," : "\n");
+  char cell[64];
+  for (const auto& d : designs) {
+    if (!d.ok)
+      continue;
+    std::string line;
+    for (double v : d.parameters)
+      std::snprintf(cell, sizeof cell, "%.10g,", v), line += cell;
+    for (std::size_t i = 0; i < d.objectives.size(); ++i)
+      std::snprintf(cell, sizeof cell, "%.10g%s", d.objectives[i],
+                    i + 1 < d.objectives.size() ? "," : "\n"),
+          line += cell;
+    out += line;
+  }
+  return out;
+}
+
+int run_study_command(const StudyOptions& options) {
+  RunCheckpoint checkpoint(options.out_dir, study_checkpoint_identity(options), options.resume);
+  if (checkpoint.n_restored())
+    std::fprintf(stderr, "magfem: --resume: %zu finished designs from the checkpoint\n",
+                 checkpoint.n_restored());
+  const auto designs = run_study(options, &checkpoint);
+  std::filesystem::create_directories(options.out_dir);
+  OutputStage stage(options.out_dir);
+  stage.write_text("study.csv", study_csv(options, designs));
+  std::string why;
+  const bool plotted = plot_study(options, designs, stage.path_for("study.png"), why);
+  if (!plotted)
+    std::cerr << "magfem: note: no study.png: " << why << "\n";
+
+  nlohmann::ordered_json j;
+  add_provenance(j);
+  j["case"] = options.case_file;
+  std::string method;
+  int failed = 0;
+  double seconds = 0, accuracy = 0;
+  for (const auto& d : designs) {
+    if (d.ok)
+      method = method.empty() || method == d.method ? d.method : "mixed";
+    failed += !d.ok;
+    seconds += d.seconds;
+    accuracy = std::max(accuracy, d.torque_accuracy);
+  }
+  j["method"] = method.empty() ? (options.sweep.analytic ? "analytic" : "fe") : method;
+  j["group"] = options.sweep.group;
+  j["axis"] = {options.sweep.axis.x(), options.sweep.axis.y(), options.sweep.axis.z()};
+  j["angles_deg"] = options.sweep.angles_deg;
+  for (const auto& p : options.parameters) {
+    nlohmann::ordered_json pj = {{"name", p.name}, {"values", p.values}};
+    j["parameters"].push_back(pj);
+  }
+  for (const auto& o : options.objectives)
+    j["objectives"].push_back(o.name);
+  j["designs"] = designs.size();
+  j["failed_designs"] = failed;
+  for (const auto& d : designs)
+    if (!d.ok)
+      j["failures"].push_back({{"parameters", d.parameters}, {"error", d.error}});
+  j["seconds"] = seconds;
+  // Harmonic form: rigorous truncation bound; the other analytic methods: estimated error.
+  if (options.sweep.analytic)
+    j["max_torque_error_Nm"] = accuracy;
+  stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.commit();
+  checkpoint.remove();
+
+  for (const auto& p : options.parameters)
+    std::printf("%14s", p.name.c_str());
+  for (const auto& o : options.objectives)
+    std::printf(" %22s", o.name.c_str());
+  std::printf("\n");
+  for (const auto& d : designs) {
+    for (double v : d.parameters)
+      std::printf("%14.6g", v);
+    if (d.ok)
+      for (double v : d.objectives)
+        std::printf(" %22.8g", v);
+    else
+      std::printf(" FAILED: %s", d.error.c_str());
+    std::printf("\n");
+  }
+  std::printf("method   %s, %zu designs in %.2f s\n", j["method"].get<std::string>().c_str(),
+              designs.size(), seconds);
+  if (options.sweep.analytic)
+    std::printf("accuracy torque error <= %.2g N m (largest over the designs: %s)\n", accuracy,
+                method == "harmonic_interaction" ? "truncation bound" : "estimate");
+  std::printf("wrote    %s/study.csv%s, summary.json\n", options.out_dir.c_str(),
+              plotted ? ", study.png" : "");
+  if (failed) {
+    std::cerr << "magfem: " << failed << " of " << designs.size() << " designs failed\n";
+    return 3;
+  }
+  return 0;
+}
+
+} // namespace magfem

@@ -1,0 +1,92 @@
+#pragma once
+// `magfem study CASE.yaml --param NAME=START:STEP:END [--param ..] --objective Q [..]
+//  [--rotate GROUP --axis A --angles LIST] [--analytic|--fe] [--mesh-scale S] [--order 1|2]
+//  [--jobs N] [--resume] [--out DIR]`: (--mesh-scale and --order are the FE sweep's, as in
+//  `solve`)
+// a grid over case-file parameters (casefile/case_parameters.hpp), each design evaluated by a
+// sweep (studies/sweep.hpp: analytic by default, the harmonic form where it applies), writing
+// DIR/study.csv (one column per parameter, one per objective), study.png and summary.json.
+//
+// Objectives (torque about the rotation axis, on the rotated group, N m):
+//   peak_torque      max over --angles of |T . axis|
+//   torque_at:DEG    T . axis at DEG (one position; --angles not needed)
+//
+// Every finished design is kept in DIR/.magfem-checkpoint.jsonl as it finishes
+// (pipeline/run_checkpoint.hpp, the sweep's); --resume restores them and evaluates the rest.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "studies/sweep.hpp"
+#include "casefile/case_spec.hpp"
+
+namespace magfem {
+
+class RunCheckpoint;
+
+struct StudyParameter {
+  std::string name;
+  std::vector<double> values; // in the parameter's own unit (as --param gives them)
+};
+
+struct StudyObjective {
+  enum class Kind { peak_torque, torque_at };
+  Kind kind = Kind::peak_torque;
+  double angle_deg = 0; // torque_at
+  std::string name;     // the column: "peak_torque_Nm", "torque_at_90deg_Nm"
+};
+
+struct StudyOptions {
+  std::string case_file;
+  std::vector<StudyParameter> parameters;
+  std::vector<StudyObjective> objectives;
+  SweepOptions sweep; // group, axis, angles, analytic, jobs (angles: peak_torque only)
+  std::string out_dir;
+  bool quiet = false;  // no progress lines on stderr
+  bool resume = false; // continue from the checkpoint in out_dir
+};
+
+// Parses the arguments after `study`; throws InputError naming the option.
+StudyOptions parse_study_options(const std::vector<std::string>& args);
+
+struct StudyDesign {
+  std::vector<double> parameters; // parallel to StudyOptions::parameters
+  std::vector<double> objectives; // parallel to StudyOptions::objectives
+  bool ok = false;
+  std::string error;
+  std::string method; // sweep_method() of its sweep
+  // Largest torque accuracy figure of its positions, N m: the truncation bound of the harmonic
+  // form or the estimated quadrature error of the face-pair interaction (0 for FE).
+  double torque_accuracy = 0;
+  double seconds = 0;
+};
+
+// One objective from its command-line text (peak_torque, torque_at:DEG); InputError if unknown.
+StudyObjective parse_study_objective(const std::string& text);
+
+// One design: the case read with `values` for options.parameters (in their own units) and
+// swept; failures other than bad options are recorded in the design, not thrown.
+StudyDesign evaluate_study_design(const StudyOptions& options, const std::vector<double>& values);
+
+// Every design of the grid (the last parameter varies fastest). A design whose case cannot be
+// read (e.g. the radii cross) or whose sweep fails is recorded with its message; a bad option
+// or a case that fails for every design (unknown parameter, group) throws InputError.
+// With a checkpoint, a design it holds is restored instead of evaluated, and every design
+// that succeeds is recorded in it as it finishes (failed ones are evaluated again on resume).
+std::vector<StudyDesign> run_study(const StudyOptions& options,
+                                   RunCheckpoint* checkpoint = nullptr);
+
+// The identity line of a study's checkpoint: the case file's hash, the commit and every
+// option that changes a result (values with 17 significant digits; not --jobs, --quiet).
+std::string study_checkpoint_identity(const StudyOptions& options);
+
+// study.csv: the parameter names, then the objective names; successful designs only.
+std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs);
+
+// The command: runs, writes study.csv, study.png (if gnuplot is there) and summary.json
+// through one OutputStage, prints a table; returns the exit code (3 if any design failed).
+// Keeps the checkpoint while it runs (options.resume: continues from it), removes it after.
+int run_study_command(const StudyOptions& options);
+
+} // namespace magfem

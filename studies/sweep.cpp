@@ -1,0 +1,512 @@
+#include "studies/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "pipeline/analytic_scene.hpp"
+#include "pipeline/force3d.hpp"
+#include "pipeline/memory_guard.hpp"
+#include "studies/position_runner.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+#include "mesh/mesh_error.hpp"
+#include "analytic/axisymmetric_interaction.hpp"
+#include "analytic/exterior_field_interaction.hpp"
+#include "analytic/pair_interaction.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+bool in_group(const Part3D& part, const std::string& group) {
+  return part.group == group;
+}
+
+// Radial range [min, max] about the origin of a part, from its surface sampled on a fine grid
+// in the local frame. Sampling can only miss the extreme by about one grid step, which the
+// margin covers. Exact for spherical segments centred on the origin.
+// Distances from the origin that a coil's bundle spans (conservative for off-centre coils).
+std::pair<double, double> coil_radial_range(const Coil3D& coil) {
+  const double c = coil.placement.translation.norm();
+  if (const auto* s = std::get_if<SphericalCoil>(&coil.shape); s && c == 0)
+    return {s->r_inner, s->r_outer};
+  double reach = 0;
+  if (const auto* s = std::get_if<SphericalCoil>(&coil.shape))
+    reach = s->r_outer;
+  else if (const auto* s = std::get_if<Solenoid>(&coil.shape))
+    reach = std::hypot(s->r_outer, 0.5 * s->length);
+  else if (const auto* s = std::get_if<Racetrack>(&coil.shape))
+    reach = std::hypot(std::hypot(0.5 * s->straight_x + s->inner_radius + s->width,
+                                  0.5 * s->straight_y + s->inner_radius + s->width),
+                       0.5 * s->height);
+  return {std::max(0.0, c - reach), c + reach};
+}
+
+std::pair<double, double> radial_range(const Part3D& part) {
+  if (const auto* seg = std::get_if<SphericalSegment>(&part.shape))
+    if (part.placement.translation.norm() == 0)
+      return {seg->r_inner, seg->r_outer};
+  std::vector<Vec3> local;
+  constexpr int n = 48;
+  std::visit(
+      [&](const auto& s) {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, SphericalSegment>) {
+          for (double r : {s.r_inner, s.r_outer})
+            for (int i = 0; i <= n; ++i)
+              for (int j = 0; j <= n; ++j) {
+                const double t = s.theta_min + (s.theta_max - s.theta_min) * i / n;
+                const double p = s.phi_min + (s.phi_max - s.phi_min) * j / n;
+                local.emplace_back(r * std::sin(t) * std::cos(p), r * std::sin(t) * std::sin(p),
+                                   r * std::cos(t));
+              }
+          for (int i = 0; i <= n; ++i) // the flat faces reach inward along every ray
+            for (int k = 0; k <= n; ++k) {
+              const double r = s.r_inner + (s.r_outer - s.r_inner) * k / n;
+              const double t = s.theta_min + (s.theta_max - s.theta_min) * i / n;
+              local.emplace_back(r * std::sin(t) * std::cos(s.phi_min),
+                                 r * std::sin(t) * std::sin(s.phi_min), r * std::cos(t));
+            }
+        } else if constexpr (std::is_same_v<T, Cylinder>) {
+          for (double r : {s.r_inner, s.r_outer})
+            for (int i = 0; i <= n; ++i)
+              for (int j = 0; j < n; ++j) {
+                const double p = 2 * pi * j / n;
+                local.emplace_back(r * std::cos(p), r * std::sin(p), s.height * i / n);
+              }
+          for (double z : {0.0, s.height})
+            for (int k = 0; k <= n; ++k)
+              for (int j = 0; j < n; ++j) {
+                const double r = s.r_inner + (s.r_outer - s.r_inner) * k / n, p = 2 * pi * j / n;
+                local.emplace_back(r * std::cos(p), r * std::sin(p), z);
+              }
+        } else {
+          for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+              for (int k = 0; k <= n; ++k)
+                if (i == 0 || i == n || j == 0 || j == n || k == 0 || k == n)
+                  local.emplace_back(s.size.x() * (double(i) / n - 0.5),
+                                     s.size.y() * (double(j) / n - 0.5),
+                                     s.size.z() * (double(k) / n - 0.5));
+        }
+      },
+      part.shape);
+  double lo = std::numeric_limits<double>::max(), hi = 0, extent = 0;
+  for (const auto& x : local) {
+    const double r = part.placement.to_global(x).norm();
+    lo = std::min(lo, r), hi = std::max(hi, r), extent = std::max(extent, x.norm());
+  }
+  const double margin = extent / n;
+  return {std::max(0.0, lo - margin), hi + margin};
+}
+
+std::vector<double> parse_list(const std::string& option, const std::string& text, char sep) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, sep)) {
+    try {
+      std::size_t used = 0;
+      out.push_back(std::stod(item, &used));
+      if (used != item.size())
+        throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError(cli, 0, option, "expected a number, got '" + item + "' in '" + text + "'");
+    }
+  }
+  return out;
+}
+
+// The harmonic-form interaction if the magnets qualify (concentric axisymmetric bodies,
+// groups separated by a sphere), otherwise nothing: the caller falls back to the charge
+// interaction by face pairs (analytic/pair_interaction.hpp), which covers any arrangement.
+std::optional<AxisymmetricInteraction> harmonic_position(const std::vector<AnalyticMagnet>& group,
+                                                         const std::vector<AnalyticMagnet>& rest) {
+  try {
+    return axisymmetric_interaction(group, rest);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt; // not covered
+  } catch (const std::domain_error&) {
+    return std::nullopt; // gap too thin for the series
+  }
+}
+
+// Magnets of any shape around (or inside) concentric axisymmetric bodies that a sphere
+// separates from them: the exterior harmonic field of the bodies at the charges of the others
+// (analytic/exterior_field_interaction.hpp). Force and torque on `group`, or nothing.
+std::optional<ExteriorFieldInteraction> exterior_position(const std::vector<AnalyticMagnet>& group,
+                                                          const std::vector<AnalyticMagnet>& rest,
+                                                          double tolerance) {
+  ExteriorFieldOptions o;
+  o.tolerance = tolerance;
+  for (const bool group_outside : {true, false}) {
+    try {
+      ExteriorFieldInteraction r = group_outside
+                                       ? exterior_field_interaction(group, rest, Vec3::Zero(), o)
+                                       : exterior_field_interaction(rest, group, Vec3::Zero(), o);
+      if (!group_outside) // action = reaction, torques about the same point
+        r.on.force = -r.on.force, r.on.torque = -r.on.torque;
+      return r;
+    } catch (const std::invalid_argument&) {
+      // not this way round
+    } catch (const std::domain_error&) {
+      // the charges come too close to the sphere for the series
+    }
+  }
+  return std::nullopt;
+}
+
+// The FE overrides of every position (the memory guard's sharing is set by run_sweep).
+RunOverrides fe_overrides(const SweepOptions& o) {
+  RunOverrides ov;
+  ov.order = o.order;
+  ov.mesh_scale = o.mesh_scale;
+  ov.max_memory_gb = o.max_memory_gb;
+  return ov;
+}
+
+// What FE solves at one position: the rotated case with the stress sphere of `surface`, and
+// no probes or VTU (a sweep wants forces only).
+CaseSpec fe_position_case(CaseSpec spec, const StressSurface& surface) {
+  spec.probes.clear();
+  spec.write_vtu = false;
+  return with_stress_sphere(std::move(spec), surface.radius, "sweep");
+}
+
+// Force and torque (about the origin) on the rotated group at one position.
+void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
+                    const RunOverrides& fe, double angle_deg) {
+  row.angle_deg = angle_deg;
+  CaseSpec spec = rotate_group(base, o.group, o.axis, angle_deg * deg_to_rad, o.point);
+  ForceResult on_group;
+  if (o.analytic) {
+    const AnalyticScene scene = analytic_scene(spec);
+    if (!scene.spheres.empty())
+      throw InputError(spec.file, 0, "regions",
+                       "sweep --analytic: the charge interaction has no permeable boundaries");
+    std::vector<AnalyticMagnet> group, rest;
+    for (const auto& m : scene.magnets) {
+      bool member = false;
+      for (const auto& p : spec.geometry3d.parts)
+        if (p.name == m.name)
+          member = in_group(p, o.group);
+      (member ? group : rest).push_back(m);
+    }
+    if (auto harmonic = harmonic_position(group, rest)) {
+      on_group.force = harmonic->force;
+      on_group.torque = harmonic->torque;
+      row.method = "harmonic_interaction";
+      row.n_max = harmonic->n_max;
+      row.torque_bound = harmonic->torque_bound;
+      row.force_bound = harmonic->force_bound;
+    } else if (auto ext = exterior_position(group, rest, o.analytic_tolerance)) {
+      on_group.force = ext->on.force;
+      on_group.torque = ext->on.torque;
+      row.method = "exterior_field_interaction";
+      row.torque_bound = ext->torque_error;
+      row.force_bound = ext->force_error;
+    } else {
+      PairInteractionOptions popt;
+      popt.tolerance = o.analytic_tolerance;
+      const PairInteraction p = pair_interaction(group, rest, Vec3::Zero(), popt);
+      on_group.force = p.on_A.force;
+      on_group.torque = p.on_A.torque;
+      row.method = "charge_pair_interaction";
+      row.torque_bound = p.torque_error;
+      row.force_bound = p.force_error;
+    }
+  } else {
+    const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
+    const auto run = run_case_3d(fe_position_case(std::move(spec), surface), fe);
+    const ForceResult& inside = run->forces.back();
+    // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
+    // rest of the (isolated) system, torque about the same point included.
+    on_group = inside;
+    if (surface.group_outside)
+      on_group.force = -inside.force, on_group.torque = -inside.torque;
+    row.unknowns = static_cast<long>(run->dofs->n_dofs());
+    row.method = "maxwell_stress_sphere";
+  }
+  row.force = on_group.force;
+  row.torque = on_group.torque;
+}
+
+// Every FE position needs its own memory while it runs: with W at once they share the memory
+// guard's limit. Rather than refuse a sweep whose positions fit one at a time but not W at
+// once, fewer run at once: as many as fit, each with a 1/W share of the limit it is checked
+// against (the first position's estimate stands for all; the others' meshes differ by a few
+// per cent, hence the margin). A first position that cannot be estimated (a bad part) is
+// left to fail as a position, with its message.
+constexpr double position_spread = 1.1;
+
+void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<double>& angles,
+               SweepJobs& jobs) {
+  if (o.analytic || jobs.requested < 2)
+    return;
+  try {
+    const CaseSpec first =
+        rotate_group(spec, o.group, o.axis, angles.front() * deg_to_rad, o.point);
+    jobs.position_memory_mb = estimated_memory_mb_3d(
+        fe_position_case(first, stress_surface(first, o.group, o.surface_radius)), fe_overrides(o));
+  } catch (const std::exception&) {
+    return;
+  }
+  jobs.memory_limit_mb = memory_limit_mb(o.max_memory_gb);
+  const double fit = std::floor(jobs.memory_limit_mb / (position_spread * jobs.position_memory_mb));
+  jobs.used = static_cast<int>(std::clamp(fit, 1.0, static_cast<double>(jobs.requested)));
+  if (jobs.used >= jobs.requested)
+    return;
+  char what[96];
+  if (o.jobs > 0)
+    std::snprintf(what, sizeof what, "--jobs %d reduced to %d", o.jobs, jobs.used);
+  else
+    std::snprintf(what, sizeof what, "%d positions at once instead of %d (one per core)", jobs.used,
+                  jobs.requested);
+  std::fprintf(stderr,
+               "magfem: note: %s: %d FE positions at once would need more than %s (%.2f GB; "
+               "one needs about %.2f GB, estimated)\n",
+               what, jobs.requested,
+               o.max_memory_gb > 0 ? "the --max-memory limit" : "the memory available now",
+               jobs.memory_limit_mb / 1024, jobs.position_memory_mb / 1024);
+}
+
+} // namespace
+
+CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eigen::Vector3d& axis,
+                      double angle_rad, const Eigen::Vector3d& point) {
+  if (spec.dimension != 3)
+    throw InputError(spec.file, 0, "dimension", "sweeps rotate 3D groups; this case is 2D");
+  CaseSpec out = spec;
+  const Mat3 r = Eigen::AngleAxisd(angle_rad, axis.normalized()).toRotationMatrix();
+  bool found = false;
+  for (std::size_t i = 0; i < out.geometry3d.parts.size(); ++i) {
+    auto& part = out.geometry3d.parts[i];
+    if (!in_group(part, group))
+      continue;
+    found = true;
+    part.placement = part.placement.rotated(axis, angle_rad, point);
+    out.regions[i].magnetization = out.regions[i].magnetization.rotated(r, point);
+  }
+  for (auto& coil : out.geometry3d.coils)
+    if (coil.group == group) {
+      found = true;
+      coil.placement = coil.placement.rotated(axis, angle_rad, point);
+    }
+  if (!found) {
+    std::string groups;
+    for (const auto& p : spec.geometry3d.parts)
+      if (!p.group.empty() && groups.find("'" + p.group + "'") == std::string::npos)
+        groups += (groups.empty() ? "" : ", ") + ("'" + p.group + "'");
+    throw InputError(cli, 0, "--rotate",
+                     "no part of " + spec.file + " is in group '" + group +
+                         "' (groups: " + (groups.empty() ? std::string("none") : groups) + ")");
+  }
+  return out;
+}
+
+StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
+                             std::optional<double> radius) {
+  double group_lo = std::numeric_limits<double>::max(), group_hi = 0;
+  double rest_lo = std::numeric_limits<double>::max(), rest_hi = 0;
+  for (std::size_t i = 0; i < spec.geometry3d.parts.size(); ++i) {
+    const auto& part = spec.geometry3d.parts[i];
+    if (spec.regions[i].material->kind == MaterialKind::linear &&
+        spec.regions[i].material->mu_r == 1.0 && !in_group(part, group))
+      continue; // air regions (mesh aids) do not feel forces
+    const auto [lo, hi] = radial_range(part);
+    if (in_group(part, group))
+      group_lo = std::min(group_lo, lo), group_hi = std::max(group_hi, hi);
+    else
+      rest_lo = std::min(rest_lo, lo), rest_hi = std::max(rest_hi, hi);
+  }
+  for (const auto& coil : spec.geometry3d.coils) {
+    const auto [lo, hi] = coil_radial_range(coil);
+    if (coil.group == group)
+      group_lo = std::min(group_lo, lo), group_hi = std::max(group_hi, hi);
+    else
+      rest_lo = std::min(rest_lo, lo), rest_hi = std::max(rest_hi, hi);
+  }
+  StressSurface s;
+  if (group_lo >= rest_hi)
+    s = {0.5 * (group_lo + rest_hi), true};
+  else if (rest_lo >= group_hi)
+    s = {0.5 * (rest_lo + group_hi), false};
+  else
+    throw InputError(cli, 0, "--rotate",
+                     "group '" + group +
+                         "' and the other parts are not separated by a sphere about the origin; "
+                         "the Maxwell stress tensor needs one in air between them");
+  if (radius) {
+    const double r = *radius;
+    const bool outside = s.group_outside;
+    const bool fits = outside ? (r > rest_hi && r < group_lo) : (r > group_hi && r < rest_lo);
+    if (!fits)
+      throw InputError(cli, 0, "--surface-radius",
+                       "the sphere must lie in the air between the group and the rest");
+    s.radius = r;
+  }
+  return s;
+}
+
+std::vector<double> parse_angle_list(const std::string& text, const std::string& option) {
+  if (text.find(':') != std::string::npos) {
+    const auto v = parse_list(option, text, ':');
+    if (v.size() != 3 || !(v[1] > 0) || v[2] < v[0])
+      throw InputError(cli, 0, option, "expected START:STEP:END with STEP > 0 and END >= START");
+    std::vector<double> out;
+    const int n = static_cast<int>(std::floor((v[2] - v[0]) / v[1] + 1e-9));
+    for (int i = 0; i <= n; ++i)
+      out.push_back(v[0] + i * v[1]);
+    return out;
+  }
+  auto out = parse_list(option, text, ',');
+  if (out.empty())
+    throw InputError(cli, 0, option, "no values given");
+  return out;
+}
+
+Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text) {
+  const auto v = parse_list(option, text, ',');
+  if (v.size() != 3)
+    throw InputError(cli, 0, option, "expected three numbers x,y,z");
+  return Vec3(v[0], v[1], v[2]);
+}
+
+Eigen::Vector3d parse_axis(const std::string& text) {
+  if (text == "x")
+    return Vec3::UnitX();
+  if (text == "y")
+    return Vec3::UnitY();
+  if (text == "z")
+    return Vec3::UnitZ();
+  const auto v = parse_list("--axis", text, ',');
+  if (v.size() != 3 || Vec3(v[0], v[1], v[2]).norm() == 0)
+    throw InputError(cli, 0, "--axis", "expected x, y, z or a non-zero vector ax,ay,az");
+  return Vec3(v[0], v[1], v[2]).normalized();
+}
+
+nlohmann::json sweep_row_to_json(const SweepRow& r) {
+  return {{"angle_deg", r.angle_deg},
+          {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
+          {"force", {r.force.x(), r.force.y(), r.force.z()}},
+          {"seconds", r.seconds},
+          {"unknowns", r.unknowns},
+          {"method", r.method},
+          {"n_max", r.n_max},
+          {"torque_bound", r.torque_bound},
+          {"force_bound", r.force_bound}};
+}
+
+SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored in j*/) {
+  SweepRow r;
+  r.angle_deg = j.at("angle_deg").get<double>();
+  for (int k = 0; k < 3; ++k)
+    r.torque[k] = j.at("torque").at(k).get<double>(),
+    r.force[k] = j.at("force").at(k).get<double>();
+  r.seconds = j.at("seconds").get<double>();
+  r.unknowns = j.at("unknowns").get<long>();
+  r.method = j.at("method").get<std::string>();
+  r.n_max = j.at("n_max").get<int>();
+  r.torque_bound = j.at("torque_bound").get<double>();
+  r.force_bound = j.at("force_bound").get<double>();
+  r.ok = true;
+  return r;
+}
+
+std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
+                                const SweepProgress& progress, SweepJobs* jobs_used) {
+  // Fail early, on the main thread, for mistakes that every position would repeat.
+  (void)rotate_group(spec, options.group, options.axis, 0.0, options.point);
+  if (!options.analytic)
+    (void)stress_surface(spec, options.group, options.surface_radius);
+  else
+    (void)analytic_scene(spec);
+
+  // A position that alone needs more memory than the limit: every position would fail the
+  // guard, so the sweep is bad input (exit 2, naming the --mesh-scale that fits), as for solve.
+  // A first position the mesher rejects is left to fail as a position, with its message.
+  if (!options.analytic && !options.angles_deg.empty()) {
+    const CaseSpec first = rotate_group(spec, options.group, options.axis,
+                                        options.angles_deg.front() * deg_to_rad, options.point);
+    try {
+      check_memory_3d(
+          fe_position_case(first, stress_surface(first, options.group, options.surface_radius)),
+          fe_overrides(options));
+    } catch (const MeshError&) {
+    }
+  }
+
+  const int total = static_cast<int>(options.angles_deg.size());
+  std::vector<SweepRow> rows(total);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  SweepJobs jobs;
+  jobs.requested = std::clamp(options.jobs > 0 ? options.jobs : static_cast<int>(cores), 1, total);
+  jobs.used = jobs.requested;
+  plan_jobs(spec, options, options.angles_deg, jobs);
+  if (jobs_used)
+    *jobs_used = jobs;
+  const int workers = jobs.used;
+  RunOverrides fe = fe_overrides(options);
+  if (workers > 1 && jobs.memory_limit_mb > 0)
+    fe.parallel_runs = workers, fe.shared_memory_mb = jobs.memory_limit_mb;
+  return run_positions<SweepRow>(
+      options.angles_deg, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
+      progress);
+}
+
+std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options) {
+  std::string method;
+  for (const auto& r : rows)
+    if (r.ok && !r.method.empty())
+      method = method.empty() || method == r.method ? r.method : "mixed";
+  if (method.empty())
+    method = options.analytic ? "charge_pair_interaction" : "maxwell_stress_sphere";
+  return method;
+}
+
+std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOptions& options) {
+  const std::string method = sweep_method(rows, options);
+  if (method != "harmonic_interaction" && method != "charge_pair_interaction" &&
+      method != "exterior_field_interaction")
+    return "method   " + method;
+  double peak = 0, bound = 0;
+  int n_max = 0;
+  for (const auto& r : rows)
+    if (r.ok)
+      peak = std::max(peak, r.torque.norm()), bound = std::max(bound, r.torque_bound),
+      n_max = std::max(n_max, r.n_max);
+  char line[200];
+  if (method != "harmonic_interaction")
+    std::snprintf(line, sizeof line,
+                  "method   %s: estimated torque error %.2g N m (%.2g of the peak)", method.c_str(),
+                  bound, peak > 0 ? bound / peak : 0.0);
+  else
+    std::snprintf(line, sizeof line,
+                  "method   harmonic_interaction: degrees <= %d, torque truncation bound %.2g N m "
+                  "(%.2g of the peak)",
+                  n_max, bound, peak > 0 ? bound / peak : 0.0);
+  return line;
+}
+
+std::string sweep_csv(const std::vector<SweepRow>& rows) {
+  std::string out = "angle_deg,Tx,Ty,Tz,Fx,Fy,Fz\n";
+  char line[256];
+  for (const auto& r : rows) {
+    if (!r.ok)
+      continue;
+    std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", r.angle_deg,
+                  r.torque.x(), r.torque.y(), r.torque.z(), r.force.x(), r.force.y(), r.force.z());
+    out += line;
+  }
+  return out;
+}
+
+} // namespace magfem

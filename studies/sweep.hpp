@@ -1,0 +1,114 @@
+#pragma once
+// `magfem sweep`: rotate a rigid group of parts through a list of angles, solve each position
+// (FE or analytic) and tabulate the torque about the origin and the force on the group.
+//
+// Positions are independent: they run on a small pool of worker threads, a failed position is
+// recorded with its message and the others go on. The FE force comes from the Maxwell stress
+// tensor on a sphere in the air gap that separates the group from the rest; the mesh is
+// refined on that sphere (it is added as a probe surface) so that remeshing at every angle
+// leaves little noise. The analytic force is the harmonic-form interaction when every magnet
+// is axisymmetric about its own axis through the origin and a sphere separates the group
+// from the rest (analytic/axisymmetric_interaction.hpp: microseconds, with a truncation
+// bound), and the charge interaction otherwise (mu_r = 1 magnets in air).
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <nlohmann/json.hpp>
+
+#include "casefile/case_spec.hpp"
+
+namespace magfem {
+
+class RunCheckpoint;
+
+struct SweepOptions {
+  std::string group;                               // Part3D::group to rotate
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitY(); // rotation axis (any length)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero(); // a point on the axis, metres
+  std::vector<double> angles_deg;                  // positions
+  bool analytic = false;                           // charge model instead of FE
+  std::optional<double> surface_radius;            // metres; default: middle of the gap
+  int jobs = 0;                                    // worker threads (0: one per core)
+  double mesh_scale = 0;                           // FE: RunOverrides::mesh_scale
+  int order = 0;                                   // FE: RunOverrides::order
+  double max_memory_gb = 0;                        // FE: RunOverrides::max_memory_gb
+  double analytic_tolerance = 1e-6;                // analytic: charge interaction tolerance
+  // Finished positions found there are not solved again; new ones are recorded (not owned).
+  RunCheckpoint* checkpoint = nullptr;
+};
+
+struct SweepRow {
+  double angle_deg = 0;
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // about the origin, N m
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // on the group, N
+  bool ok = false;
+  std::string error; // why the position failed
+  double seconds = 0;
+  long unknowns = 0; // FE only
+  // How the position was computed: "harmonic_interaction", "exterior_field_interaction",
+  // "charge_pair_interaction" or "maxwell_stress_sphere"; for the harmonic form its degrees
+  // and (rigorous) truncation bounds, for the other analytic ones their estimated error
+  // (analytic/exterior_field_interaction.hpp, pair_interaction.hpp).
+  std::string method;
+  int n_max = 0;
+  double torque_bound = 0, force_bound = 0; // N m, N
+};
+
+// The case with every part of `group` rotated by angle (radians, right-hand rule) about the
+// axis through `point`; magnetizations turn with their parts. Throws InputError if no part
+// belongs to the group or the case is not 3D.
+CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eigen::Vector3d& axis,
+                      double angle_rad, const Eigen::Vector3d& point);
+
+// Radius (metres) of a sphere about the origin lying in air between the group and the rest,
+// and whether the group is outside it. Throws InputError if the two do not separate radially.
+struct StressSurface {
+  double radius = 0;
+  bool group_outside = false;
+};
+StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
+                             std::optional<double> radius);
+
+// Parses "START:STEP:END" (END included within round-off) or "A,B,C"; throws InputError
+// naming `option` (also used for --positions).
+std::vector<double> parse_angle_list(const std::string& text,
+                                     const std::string& option = "--angles");
+// Parses "x,y,z" (three numbers); throws InputError naming the option.
+Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text);
+// Parses x|y|z or "ax,ay,az"; throws InputError.
+Eigen::Vector3d parse_axis(const std::string& text);
+
+// How many positions ran at once. FE positions each need their own memory: no more run at
+// once than fit together in the memory guard's limit (--max-memory, else the memory available
+// at the start), estimated from the first position's mesh with a 10 % margin for the others,
+// and each is checked against its share of the limit.
+struct SweepJobs {
+  int requested = 1;             // --jobs, or one per core; at most one per position
+  int used = 1;                  // fewer when the memory holds fewer FE positions at once
+  double position_memory_mb = 0; // estimated peak of one FE position (0: not estimated)
+  double memory_limit_mb = 0;    // the limit they share (0: not estimated)
+};
+
+// A finished row as the checkpoint keeps it (every field, doubles exactly), and back; shared
+// by the 3D and planar sweeps.
+nlohmann::json sweep_row_to_json(const SweepRow& row);
+SweepRow sweep_row_from_json(const nlohmann::json& saved, double angle_deg);
+
+using SweepProgress = std::function<void(int done, int total)>;
+std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
+                                const SweepProgress& progress = {}, SweepJobs* jobs = nullptr);
+
+// The method of the rows ("mixed" if they differ; failed rows do not count; if none
+// succeeded, the one the options ask for), and a line for the terminal on what it was
+// (harmonic: degrees and worst truncation bound against the peak).
+std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options);
+std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOptions& options);
+
+// sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in angle order).
+std::string sweep_csv(const std::vector<SweepRow>& rows);
+
+} // namespace magfem

@@ -1,0 +1,149 @@
+#include "studies/sweep_axi.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <thread>
+
+#include "studies/position_runner.hpp"
+#include "pipeline/run2d.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "core/input_error.hpp"
+
+namespace magfem {
+namespace {
+
+const std::string cli = "<command line>";
+
+struct Translate {
+  Vec2 d;
+  void operator()(Disk& s) const { s.center += d; }
+  void operator()(Annulus& s) const { s.center += d; }
+  void operator()(AnnularSector& s) const { s.center += d; }
+  void operator()(Rectangle& s) const { s.center += d; }
+  void operator()(Polygon& s) const {
+    for (Vec2& v : s.vertices)
+      v += d;
+  }
+};
+
+bool in_group(const CaseSpec& spec, const std::string& region, const std::string& group) {
+  for (const auto& r : spec.regions)
+    if (r.name == region)
+      return r.group == group;
+  return false;
+}
+
+// The request that yields the force on the group, in this order: the Lorentz force on its
+// current regions; the Lorentz force on the others' (then `reversed`: the group feels the
+// reaction); the case's own `contour` force on a region of the group (a magnet or iron over a
+// plate: the stress tensor on the revolved box around it, which moves with it, at the case's
+// margin). Otherwise bad input that says which force entry to add.
+ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reversed) {
+  ForceSpec f;
+  f.name = "sweep";
+  f.kind = ForceSpec::Kind::lorentz;
+  std::vector<std::string> others;
+  for (const auto& r : spec.regions) {
+    if (!r.carries_current())
+      continue;
+    (r.group == group ? f.regions : others).push_back(r.name);
+  }
+  reversed = f.regions.empty() && !others.empty();
+  if (reversed)
+    f.regions = others;
+  if (!f.regions.empty())
+    return f;
+  std::vector<const ForceSpec*> contours;
+  for (const auto& c : spec.forces)
+    if (c.kind == ForceSpec::Kind::contour && in_group(spec, c.regions.front(), group))
+      contours.push_back(&c);
+  if (contours.size() == 1)
+    return *contours.front();
+  if (contours.empty())
+    throw InputError(cli, 0, "--move",
+                     "no region carries current and no `contour` force of " + spec.file +
+                         " is on a region of group '" + group +
+                         "': add one, e.g. forces: [{name: F, type: contour, region: NAME, "
+                         "margin: M}] with M inside the air around it, and the sweep takes "
+                         "the stress-tensor force on it");
+  throw InputError(spec.file, contours[1]->line, "forces",
+                   "two `contour` forces are on regions of group '" + group +
+                       "' and no region carries current: keep one for the sweep");
+}
+
+void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOptions& o, double dz) {
+  row.position_m = dz;
+  CaseSpec spec = move_group_axi(base, o.group, dz);
+  bool reversed = false;
+  spec.forces = {group_force(spec, o.group, reversed)};
+  spec.probes.clear(); // a sweep wants the force only
+  spec.write_vtu = false;
+  RunOverrides ov;
+  ov.order = o.order;
+  ov.mesh_scale = o.mesh_scale;
+  const auto run = run_case_2d(std::move(spec), ov);
+  row.fz_N = (reversed ? -1.0 : 1.0) * run->forces.front().force.z();
+  row.unknowns = static_cast<long>(run->dofs->n_dofs());
+}
+
+nlohmann::json row_to_json(const AxiSweepRow& row) {
+  return {{"fz_N", row.fz_N}, {"seconds", row.seconds}, {"unknowns", row.unknowns}};
+}
+
+AxiSweepRow row_from_json(const nlohmann::json& saved, double dz) {
+  AxiSweepRow row;
+  row.position_m = dz;
+  row.fz_N = saved.at("fz_N").get<double>();
+  row.seconds = saved.at("seconds").get<double>();
+  row.unknowns = saved.at("unknowns").get<long>();
+  row.ok = true;
+  return row;
+}
+
+} // namespace
+
+CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz) {
+  if (!spec.axisymmetric())
+    throw InputError(cli, 0, "--move", "--move sweeps axisymmetric cases (dimension: axi)");
+  CaseSpec out = spec;
+  bool found = false;
+  for (std::size_t i = 0; i < out.regions.size(); ++i) {
+    if (out.regions[i].group != group)
+      continue;
+    found = true;
+    std::visit(Translate{Vec2(0, dz)}, out.geometry2d.parts[i].shape);
+    out.regions[i].magnetization.center.y() += dz;
+  }
+  if (!found)
+    throw InputError(cli, 0, "--move",
+                     "no region of " + spec.file + " is in group '" + group + "'");
+  return out;
+}
+
+std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& o,
+                                       const AxiSweepProgress& progress) {
+  move_group_axi(spec, o.group, 0.0); // bad input fails here, not once per position
+  bool reversed = false;
+  group_force(spec, o.group, reversed);
+  const int total = static_cast<int>(o.positions_m.size());
+  std::vector<AxiSweepRow> rows(o.positions_m.size());
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const int n_jobs =
+      std::clamp(o.jobs > 0 ? o.jobs : static_cast<int>(cores), 1, std::max(total, 1));
+  return run_positions<AxiSweepRow>(
+      o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json},
+      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress);
+}
+
+std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {
+  std::string out = "position_mm,Fz_N\n";
+  char buf[128];
+  for (const auto& r : rows)
+    if (r.ok) {
+      std::snprintf(buf, sizeof buf, "%.10g,%.10g\n", r.position_m * 1e3, r.fz_N);
+      out += buf;
+    }
+  return out;
+}
+
+} // namespace magfem

@@ -1,0 +1,273 @@
+#include "validation/validate.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "pipeline/build_info.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "validation/validate_checkpoint.hpp"
+#include "validation/validate_report.hpp"
+#include "core/input_error.hpp"
+#include "core/output_stage.hpp"
+
+namespace magfem {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+const std::string cli = "<command line>";
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty())
+      out.push_back(item);
+  return out;
+}
+
+std::string default_catalogue() {
+  if (const auto share = installed_data_dir())
+    return (*share / "validation" / "catalogue.yaml").string();
+  if (std::filesystem::is_regular_file("validation/catalogue.yaml"))
+    return "validation/catalogue.yaml";
+  return std::string(MAGFEM_SOURCE_DIR) + "/validation/catalogue.yaml";
+}
+
+std::vector<const CatalogueEntry*> select(const Catalogue& c, const ValidateOptions& o) {
+  std::vector<const CatalogueEntry*> out;
+  if (!o.only.empty()) {
+    for (const auto& id : o.only) {
+      const CatalogueEntry* found = nullptr;
+      for (const auto& e : c.entries)
+        if (e.id == id)
+          found = &e;
+      if (!found)
+        throw InputError(cli, 0, "--only", "no catalogue entry '" + id + "' in " + c.file);
+      out.push_back(found);
+    }
+    return out;
+  }
+  for (const auto& e : c.entries)
+    if (o.source.empty() || e.source.rfind(o.source, 0) == 0)
+      out.push_back(&e);
+  if (out.empty())
+    throw InputError(cli, 0, "--source", "no catalogue entry from source '" + o.source + "'");
+  return out;
+}
+
+std::optional<double> error_pct(const CatalogueEntry& e, std::optional<double> value) {
+  if (!value)
+    return std::nullopt;
+  if (e.check == CatalogueEntry::Check::at_most)
+    return *value;
+  return 100 * (*value - *e.published) / std::abs(*e.published);
+}
+
+void evaluate(EntryResult& r, ValidationTier tier, ComputeCache& cache) {
+  const CatalogueEntry& e = *r.entry;
+  if (e.expect == CatalogueEntry::Expect::skipped) {
+    r.status = "skipped";
+    r.note = e.reason;
+    return;
+  }
+  if (tier == ValidationTier::quick && e.tier == ValidationTier::full) {
+    r.status = "skipped";
+    r.note = "full tier only (magfem validate --tier full)";
+    return;
+  }
+  const auto t0 = Clock::now();
+  try {
+    const EvalContext ctx{e, tier, cache};
+    r.eval = evaluator_registry().at(e.evaluator).run(ctx);
+    r.fe = r.eval.fe;
+    r.analytic = r.eval.analytic;
+    judge(r);
+    if (!r.fe && e.evaluate && e.evaluate->has("fe") && ctx.fe_scales().empty())
+      r.note = "FE in --tier full only";
+  } catch (const std::exception& ex) {
+    r.status = "fail";
+    r.note = std::string("error: ") + ex.what();
+  }
+  r.seconds = since(t0);
+}
+
+} // namespace
+
+void judge(EntryResult& r) {
+  const CatalogueEntry& e = *r.entry;
+  r.fe_error_pct = error_pct(e, r.fe);
+  r.analytic_error_pct = error_pct(e, r.analytic);
+  // Discretisation estimate: the change from the next coarser mesh, in % of the FE value
+  // (in points for at_most entries, whose value is already a percentage).
+  if (r.fe && r.eval.fe_coarse) {
+    const double change = std::abs(*r.fe - *r.eval.fe_coarse);
+    if (e.check == CatalogueEntry::Check::at_most)
+      r.discretisation_pct = change;
+    else if (*r.fe != 0)
+      r.discretisation_pct = 100 * change / std::abs(*r.fe);
+  }
+  if (!r.fe && !r.analytic) {
+    r.status = "fail";
+    r.note = "the evaluator computed nothing";
+    return;
+  }
+  if (e.expect == CatalogueEntry::Expect::finding) {
+    r.status = "finding";
+    return;
+  }
+  bool ok = true;
+  for (const auto& err : {r.fe_error_pct, r.analytic_error_pct})
+    if (err && !(std::abs(*err) <= e.tolerance_pct))
+      ok = false;
+  r.status = ok ? "pass" : "fail";
+}
+
+ValidateOptions parse_validate_options(const std::vector<std::string>& args) {
+  ValidateOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size())
+        throw InputError(cli, 0, arg, "missing value");
+      return args[++i];
+    };
+    if (arg == "--tier") {
+      const std::string t = value();
+      if (t == "quick")
+        o.tier = ValidationTier::quick;
+      else if (t == "full")
+        o.tier = ValidationTier::full;
+      else
+        throw InputError(cli, 0, "--tier", "must be quick or full, got '" + t + "'");
+    } else if (arg == "--only") {
+      o.only = split_list(value());
+    } else if (arg == "--source") {
+      o.source = value();
+    } else if (arg == "--jobs") {
+      const std::string v = value();
+      try {
+        o.jobs = std::stoi(v);
+      } catch (const std::exception&) {
+        throw InputError(cli, 0, "--jobs", "expected a number, got '" + v + "'");
+      }
+      if (o.jobs < 0)
+        throw InputError(cli, 0, "--jobs", "must be >= 0");
+    } else if (arg == "--out") {
+      o.out_dir = value();
+    } else if (arg == "--catalogue") {
+      o.catalogue = value();
+    } else if (arg == "--resume") {
+      o.resume = true;
+    } else {
+      throw InputError(cli, 0, arg, "unknown option or argument for validate");
+    }
+  }
+  if (!o.only.empty() && !o.source.empty())
+    throw InputError(cli, 0, "--only", "give --only or --source, not both");
+  return o;
+}
+
+int run_validate(const ValidateOptions& options) {
+  const auto t_start = Clock::now();
+  ValidationRun run;
+  run.options = options;
+  run.catalogue_file = options.catalogue.empty() ? default_catalogue() : options.catalogue;
+  const Catalogue catalogue = read_catalogue(run.catalogue_file);
+  const auto selected = select(catalogue, options);
+
+  run.results.resize(selected.size());
+  for (std::size_t i = 0; i < selected.size(); ++i)
+    run.results[i].entry = selected[i];
+  const int n_hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  run.jobs = std::max(
+      1, std::min<int>(options.jobs > 0 ? options.jobs : n_hw, static_cast<int>(selected.size())));
+  // Finished entries go to a checkpoint as they finish, so that an interrupted run continues
+  // with --resume (failed entries are evaluated again).
+  std::string selection =
+      "tier=" + to_string(options.tier) + " source=" + options.source + " only=";
+  for (const auto& id : options.only)
+    selection += id + ",";
+  RunCheckpoint checkpoint(options.out_dir,
+                           checkpoint_identity("validate", run.catalogue_file, selection),
+                           options.resume);
+  ComputeCache cache;
+  std::atomic<std::size_t> next{0};
+  std::mutex print_mutex;
+  int done = 0;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < run.results.size(); i = next++) {
+      EntryResult& r = run.results[i];
+      bool resumed = false;
+      if (const auto saved = checkpoint.find(r.entry->id)) {
+        try {
+          entry_from_checkpoint(*saved, r);
+          resumed = true;
+        } catch (const std::exception&) {
+          const CatalogueEntry* entry = r.entry; // a record of another shape: evaluate again
+          r = EntryResult();
+          r.entry = entry;
+        }
+      }
+      if (!resumed) {
+        evaluate(r, options.tier, cache);
+        if (r.status != "fail")
+          checkpoint.record(r.entry->id, entry_to_checkpoint(r));
+      }
+      std::lock_guard<std::mutex> lock(print_mutex);
+      ++done;
+      std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n", done,
+                   run.results.size(), r.status.c_str(), r.entry->id.c_str(), r.seconds,
+                   since(t_start), resumed ? " resumed" : "");
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < run.jobs; ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool)
+    t.join();
+  run.wall_seconds = since(t_start);
+
+  std::filesystem::create_directories(options.out_dir);
+  OutputStage stage(options.out_dir, "results.csv");
+  write_validation_outputs(run, stage);
+  stage.commit();
+  checkpoint.remove();
+
+  std::map<std::string, int> counts;
+  std::vector<std::string> failed;
+  for (const auto& r : run.results) {
+    ++counts[r.status];
+    if (r.status == "fail")
+      failed.push_back(r.entry->id);
+  }
+  std::printf("%zu entries in %.1f s (%s tier, %d jobs): %d pass, %d fail, %d finding, %d skipped\n"
+              "wrote    %s/results.csv, results.json, report.md, report.html\n",
+              run.results.size(), run.wall_seconds, to_string(options.tier).c_str(), run.jobs,
+              counts["pass"], counts["fail"], counts["finding"], counts["skipped"],
+              options.out_dir.c_str());
+  if (!failed.empty()) {
+    std::cerr << "magfem: validation failed:";
+    for (const auto& id : failed)
+      std::cerr << " " << id;
+    std::cerr << "\n";
+    return 4;
+  }
+  return 0;
+}
+
+} // namespace magfem

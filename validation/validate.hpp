@@ -1,0 +1,51 @@
+#pragma once
+// `magfem validate`: runs the catalogue of published figures (validation/catalogue.yaml)
+// and writes results.csv, results.json, report.md and report.html (all or nothing).
+// Exit codes: 0 nothing failed, 4 some entry failed (ids on stderr), 2 bad input.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "validation/validate_catalogue.hpp"
+#include "validation/validate_evaluators.hpp"
+
+namespace magfem {
+
+struct ValidateOptions {
+  ValidationTier tier = ValidationTier::quick;
+  std::vector<std::string> only; // entry ids; empty = all
+  std::string source;            // seed file prefix; empty = all
+  int jobs = 0;                  // 0: one per core
+  std::string out_dir = "out/validate";
+  std::string catalogue; // empty: validation/catalogue.yaml of the source tree
+  bool resume = false;   // continue from the checkpoint an interrupted run left
+};
+
+struct EntryResult {
+  const CatalogueEntry* entry = nullptr;
+  std::string status; // pass, fail, finding, skipped
+  std::optional<double> fe, analytic, fe_error_pct, analytic_error_pct;
+  std::optional<double> discretisation_pct; // |fe - fe on the next coarser mesh|, % of fe
+  double seconds = 0;
+  std::string note; // why skipped, the error of a failed entry, FE not in this tier
+  EvalResult eval;
+};
+
+struct ValidationRun {
+  ValidateOptions options;
+  std::string catalogue_file;
+  std::vector<EntryResult> results;
+  double wall_seconds = 0;
+  int jobs = 1;
+};
+
+// Parses the options after `validate` (throws InputError).
+ValidateOptions parse_validate_options(const std::vector<std::string>& args);
+// Selects entries, runs them, writes the outputs; returns the exit code. Throws InputError
+// for bad input (unknown id, bad catalogue).
+int run_validate(const ValidateOptions& options);
+
+// Status and error columns of one evaluated entry (exposed for tests).
+void judge(EntryResult& r);
+
+} // namespace magfem

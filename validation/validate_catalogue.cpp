@@ -1,0 +1,153 @@
+#include "validation/validate_catalogue.hpp"
+
+#include <filesystem>
+#include <set>
+
+#include "validation/validate_evaluators.hpp"
+#include "core/input_error.hpp"
+
+namespace magfem {
+
+std::string to_string(ValidationTier tier) { return tier == ValidationTier::quick ? "quick" : "full"; }
+
+std::string to_string(CatalogueEntry::Check check) {
+  return check == CatalogueEntry::Check::relative ? "relative" : "at_most";
+}
+
+std::string to_string(CatalogueEntry::Expect expect) {
+  switch (expect) {
+  case CatalogueEntry::Expect::compute:
+    return "compute";
+  case CatalogueEntry::Expect::finding:
+    return "finding";
+  case CatalogueEntry::Expect::skipped:
+    return "skipped";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// InputError at `node` whose message starts with the entry id, so a user sees which figure.
+[[noreturn]] void fail_entry(const YamlNode& node, const std::string& id, const std::string& what) {
+  throw InputError(node.file(), node.line(), node.path(), "entry '" + id + "': " + what);
+}
+
+void read_evaluate(const YamlNode& ev, CatalogueEntry& e, const std::filesystem::path& folder) {
+  const auto& registry = evaluator_registry();
+  const YamlNode name = ev.at("evaluator");
+  e.evaluator = name.as_string();
+  const auto it = registry.find(e.evaluator);
+  if (it == registry.end()) {
+    std::string known;
+    for (const auto& [k, v] : registry)
+      known += (known.empty() ? "" : ", ") + k;
+    fail_entry(name, e.id, "unknown evaluator '" + e.evaluator + "' (known: " + known + ")");
+  }
+  const Evaluator& evaluator = it->second;
+  if (auto q = ev.find("quantity")) {
+    e.evaluator_quantity = q->as_string();
+    bool known = false;
+    for (const auto& allowed : evaluator.quantities)
+      known = known || allowed == e.evaluator_quantity;
+    if (!known) {
+      std::string list;
+      for (const auto& allowed : evaluator.quantities)
+        list += (list.empty() ? "" : ", ") + allowed;
+      fail_entry(*q, e.id,
+                 "unknown quantity '" + e.evaluator_quantity + "' for evaluator " + e.evaluator +
+                     " (known: " + list + ")");
+    }
+  } else if (!evaluator.quantities.empty()) {
+    fail_entry(ev, e.id, "missing evaluate.quantity for evaluator " + e.evaluator);
+  }
+  if (auto c = ev.find("case")) {
+    const auto path = (folder / c->as_string()).lexically_normal();
+    if (!std::filesystem::is_regular_file(path))
+      fail_entry(*c, e.id, "case file not found: " + path.string());
+    e.case_file = path.string();
+  } else if (evaluator.needs_case) {
+    fail_entry(ev, e.id, "evaluator " + e.evaluator + " needs evaluate.case");
+  }
+  for (const std::string key : {"reference_case"})
+    if (auto c = ev.find(key)) {
+      const auto path = (folder / c->as_string()).lexically_normal();
+      if (!std::filesystem::is_regular_file(path))
+        fail_entry(*c, e.id, "case file not found: " + path.string());
+    }
+  e.evaluate = ev;
+}
+
+CatalogueEntry read_entry(const YamlNode& n, const std::filesystem::path& folder) {
+  CatalogueEntry e;
+  e.line = n.line();
+  e.id = n.at("id").as_string();
+  n.allow_keys({"id", "source", "section", "quantity", "unit", "published", "tolerance_pct",
+                "tolerance_reason", "check", "expect", "reason", "paper", "tier", "evaluate"});
+  e.source = n.at("source").as_string();
+  e.section = n.at("section").as_string();
+  e.quantity = n.at("quantity").as_string();
+  e.unit = n.get_string("unit", "");
+  e.paper = n.get_string("paper", "");
+  e.reason = n.get_string("reason", "");
+  const std::string expect = n.get_string("expect", "compute");
+  if (expect == "compute")
+    e.expect = CatalogueEntry::Expect::compute;
+  else if (expect == "finding")
+    e.expect = CatalogueEntry::Expect::finding;
+  else if (expect == "skipped")
+    e.expect = CatalogueEntry::Expect::skipped;
+  else
+    fail_entry(n.at("expect"), e.id, "expect must be compute, finding or skipped");
+  if (e.expect != CatalogueEntry::Expect::compute && e.reason.empty())
+    fail_entry(n, e.id, "a " + expect + " entry must give its reason");
+  if (auto p = n.find("published"))
+    e.published = p->as_double();
+  const std::string check = n.get_string("check", "relative");
+  if (check == "relative")
+    e.check = CatalogueEntry::Check::relative;
+  else if (check == "at_most")
+    e.check = CatalogueEntry::Check::at_most;
+  else
+    fail_entry(n.at("check"), e.id, "check must be relative or at_most");
+  const std::string tier = n.get_string("tier", "quick");
+  if (tier == "quick")
+    e.tier = ValidationTier::quick;
+  else if (tier == "full")
+    e.tier = ValidationTier::full;
+  else
+    fail_entry(n.at("tier"), e.id, "tier must be quick or full");
+  if (e.expect == CatalogueEntry::Expect::skipped)
+    return e;
+  if (!e.published)
+    fail_entry(n, e.id, "missing published value");
+  if (e.check == CatalogueEntry::Check::relative && *e.published == 0)
+    fail_entry(n.at("published"), e.id, "a relative check needs a non-zero published value");
+  if (e.check == CatalogueEntry::Check::at_most && e.unit != "%")
+    fail_entry(n.at("check"), e.id, "an at_most check compares a percentage: unit must be %");
+  e.tolerance_pct = n.at("tolerance_pct").as_non_negative();
+  e.tolerance_reason = n.at("tolerance_reason").as_string();
+  read_evaluate(n.at("evaluate"), e, folder);
+  return e;
+}
+
+} // namespace
+
+Catalogue read_catalogue(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(path, 0, "", "catalogue not found");
+  const YamlNode root = YamlNode::load_file(path);
+  root.allow_keys({"entries"});
+  const auto folder = std::filesystem::path(path).parent_path();
+  Catalogue c;
+  c.file = path;
+  std::set<std::string> ids;
+  for (const YamlNode& n : root.at("entries").items()) {
+    c.entries.push_back(read_entry(n, folder));
+    if (!ids.insert(c.entries.back().id).second)
+      fail_entry(n.at("id"), c.entries.back().id, "duplicate id");
+  }
+  return c;
+}
+
+} // namespace magfem
