@@ -29,7 +29,8 @@ constexpr std::array<CommandHelp, 9> commands{{
      "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"
      "  --param NAME=VALUE  set one of the case file's `parameters:` (repeatable)\n"
      "  Linear 3D cases also run distributed: mpirun -n N magfem solve CASE.yaml --out DIR\n"
-     "  (each process meshes, assembles 1/N of the elements; rank 0 writes; docs/performance.md).\n"},
+     "  (each process meshes, assembles 1/N of the elements; rank 0 writes; "
+     "docs/performance.md).\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
      "[--n-max N]\n"
@@ -51,10 +52,11 @@ constexpr std::array<CommandHelp, 9> commands{{
     {"sweep",
      "magfem sweep CASE.yaml --rotate GROUP --axis x|y|z|ax,ay,az\n"
      "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
-     "                    [--surface-radius R] [--jobs N] [--max-memory GB] [--resume]\n"
-     "                    [--out DIR]\n"
+     "                    [--surface-radius R] [--order 1|2] [--mesh-scale S] [--jobs N]\n"
+     "                    [--max-memory GB] [--resume] [--quiet] [--out DIR]\n"
      "       magfem sweep CASE.yaml --move GROUP --axis z --positions START:STEP:END|A,B,C\n"
-     "                    [--jobs N] [--resume] [--out DIR]   (axisymmetric cases)",
+     "                    [--order 1|2] [--mesh-scale S] [--jobs N] [--resume] [--quiet]\n"
+     "                    [--out DIR]   (axisymmetric cases)",
      "torque and force while a group of parts rotates (or, axisymmetric, moves)",
      "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
@@ -118,7 +120,7 @@ constexpr std::array<CommandHelp, 9> commands{{
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
      "                    [--mesh-scale S] [--coil-quadrature R,A,P,Z] [--verify] [--quiet]\n"
-     "                    [--out DIR]",
+     "                    [--coil-pitch START:STEP:END] [--out DIR]",
      "torque constants, commutated currents and copper loss of a multi-coil actuator",
      "  For every rotor orientation: the torque constants Gamma (3 x coils, N m/A: the\n"
      "  Lorentz torque about the origin of each coil at 1 A in the field of the magnets\n"
@@ -140,7 +142,9 @@ constexpr std::array<CommandHelp, 9> commands{{
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
      "  FE runs show the orientation, stage and solver residual on stderr; --quiet\n"
-     "  turns that off.\n"},
+     "  turns that off.\n"
+     "  --coil-pitch START:STEP:END (deg): the thesis's coil-pitch study (sec. 5.3) instead\n"
+     "  of the case's coils: coil_pitch.csv (mean copper loss against pitch), coil_pitch.png.\n"},
     {"materials", "magfem materials [--export NAME]",
      "list the bundled materials, or write one's B-H table as CSV",
      "  Without options: one line per bundled entry (name, kind, other names).\n"

@@ -12,120 +12,34 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include "studies/actuator.hpp"
-#include "pipeline/build_info.hpp"
+#include "casefile/case_spec.hpp"
 #include "casefile/cli_number.hpp"
 #include "cli/command_help.hpp"
+#include "cli/command_options.hpp"
 #include "cli/materials_command.hpp"
-#include "studies/optimize.hpp"
+#include "core/input_error.hpp"
+#include "core/interrupt.hpp"
+#include "core/output_stage.hpp"
+#include "pipeline/build_info.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_analytic.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "postproc/probe_compare.hpp"
+#include "solver/mpi_context.hpp"
+#include "studies/actuator.hpp"
+#include "studies/optimize.hpp"
 #include "studies/study.hpp"
 #include "studies/sweep.hpp"
 #include "studies/sweep_axi.hpp"
 #include "studies/sweep_planar.hpp"
 #include "studies/sweep_plot.hpp"
 #include "validation/validate.hpp"
-#include "casefile/case_spec.hpp"
-#include "core/input_error.hpp"
-#include "core/interrupt.hpp"
-#include "core/output_stage.hpp"
-#include "postproc/probe_compare.hpp"
-#include "solver/mpi_context.hpp"
 
 namespace {
 
-struct Args {
-  std::string command;
-  std::string case_file;
-  std::string out_dir;
-  std::vector<std::string> positional;
-  magfem::RunOverrides overrides;
-  magfem::AnalyticOptions analytic;
-  magfem::ParameterOverrides parameters; // --param NAME=VALUE (solve, analytic)
-  std::string rotate, axis, angles, point, surface_radius, move, positions;
-  bool analytic_sweep = false;
-  bool resume = false; // sweep: continue from the checkpoint in --out
-  bool quiet = false;  // no progress lines on stderr
-  int jobs = 0;
-};
-
-Args parse_args(int argc, char** argv) {
-  if (argc < 2)
-    throw magfem::InputError("<command line>", 0, "",
-                             std::string("missing command\n") + magfem::usage_overview());
-  Args a;
-  a.command = argv[1];
-  std::vector<std::string> positional;
-  for (int i = 2; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> const char* {
-      if (i + 1 >= argc)
-        throw magfem::InputError("<command line>", 0, arg, "missing value");
-      return argv[++i];
-    };
-    if (arg == "--out")
-      a.out_dir = value();
-    else if (arg == "--order")
-      a.overrides.order = magfem::parse_cli_order(value());
-    else if (arg == "--mesh-scale") // 0 would silently mean "as in the case": refused
-      a.overrides.mesh_scale = magfem::parse_cli_mesh_scale(value());
-    else if (arg == "--max-memory") {
-      a.overrides.max_memory_gb = magfem::parse_cli_number(arg, value());
-      if (!(a.overrides.max_memory_gb > 0))
-        throw magfem::InputError("<command line>", 0, arg, "must be positive (GB)");
-    } else if (arg == "--param" && (a.command == "solve" || a.command == "analytic"))
-      magfem::parse_cli_parameter(value(), a.parameters);
-    else if (arg == "--model")
-      a.analytic.model = value();
-    else if (arg == "--tolerance")
-      a.analytic.tolerance = magfem::parse_cli_number(arg, value());
-    else if (arg == "--n-max")
-      a.analytic.n_max = static_cast<int>(magfem::parse_cli_number(arg, value()));
-    else if (arg == "--rotate")
-      a.rotate = value();
-    else if (arg == "--axis")
-      a.axis = value();
-    else if (arg == "--angles")
-      a.angles = value();
-    else if (arg == "--move")
-      a.move = value();
-    else if (arg == "--positions")
-      a.positions = value();
-    else if (arg == "--point")
-      a.point = value();
-    else if (arg == "--surface-radius")
-      a.surface_radius = value();
-    else if (arg == "--jobs") {
-      a.jobs = static_cast<int>(magfem::parse_cli_number(arg, value()));
-      if (a.jobs < 1)
-        throw magfem::InputError("<command line>", 0, arg, "must be at least 1");
-    } else if (arg == "--analytic")
-      a.analytic_sweep = true;
-    else if (arg == "--quiet")
-      a.quiet = true;
-    else if (arg == "--resume")
-      a.resume = true;
-    else if (arg.rfind("--", 0) == 0)
-      throw magfem::InputError("<command line>", 0, arg, "unknown option");
-    else
-      positional.push_back(arg);
-  }
-  a.positional = positional;
-  const std::size_t wanted = a.command == "compare" ? 2 : 1;
-  if (positional.size() != wanted)
-    throw magfem::InputError(
-        "<command line>", 0, "",
-        std::string("wrong number of arguments\n") +
-            magfem::command_usage(a.command).value_or(magfem::usage_overview()));
-  a.case_file = positional[0];
-  if (a.out_dir.empty())
-    a.out_dir = (std::filesystem::path("out") / std::filesystem::path(a.case_file).stem()).string();
-  return a;
-}
+using Args = magfem::CommandArgs;
 
 // "wrote    DIR/summary.json, a.csv, ...": every file the run wrote.
 void print_written(const std::string& out_dir, const std::vector<std::string>& files) {
@@ -413,6 +327,16 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
     std::cout << magfem::usage_overview();
     return 0;
   }
+  // The option table of a command, one name a line: what the completion script and the help
+  // page must offer (tests/install/check_completion.sh compares them).
+  if (first == "help" && argc == 4 && std::strcmp(argv[2], "--list-options") == 0) {
+    if (!magfem::command_usage(argv[3]))
+      throw magfem::InputError("<command line>", 0, "",
+                               std::string("unknown command '") + argv[3] + "'");
+    for (const auto& option : magfem::command_options(argv[3]))
+      std::cout << option.name << (option.value.empty() ? "" : " " + option.value) << "\n";
+    return 0;
+  }
   const std::string command = first == "help" ? argv[2] : first;
   const bool asked = first == "help" || (argc >= 3 && is_help(argv[2]));
   if (!asked)
@@ -473,7 +397,7 @@ int main(int argc, char** argv) {
       return magfem::run_study_command(
           magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
     refuse_other_commands_under_mpirun(argc, argv);
-    const Args args = parse_args(argc, argv);
+    const Args args = magfem::parse_command_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);
     if (args.command == "analytic")

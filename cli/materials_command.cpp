@@ -44,19 +44,28 @@ void export_curve(const MaterialLibrary& lib, const std::string& name) {
 
 } // namespace
 
+const OptionTable<MaterialsOptions>& materials_option_table() {
+  static const auto table =
+      OptionTable<MaterialsOptions>("materials")
+          .value("--export", "NAME", [](MaterialsOptions& o, auto&, const std::string& v) {
+            o.export_names.push_back(v);
+          });
+  return table;
+}
+
 int run_materials_command(const std::vector<std::string>& args) {
+  MaterialsOptions options;
+  const auto positional = materials_option_table().parse(args, options);
+  if (!positional.empty())
+    throw InputError(cli, 0, positional[0], "magfem materials takes no arguments (--export NAME)");
+  if (options.export_names.size() > 1)
+    throw InputError(cli, 0, "--export", "give one library name: --export NAME");
   const MaterialLibrary& lib = MaterialLibrary::bundled();
-  if (args.empty()) {
+  if (options.export_names.empty())
     list_entries(lib);
-    return 0;
-  }
-  if (args[0] == "--export" && args.size() == 2) {
-    export_curve(lib, args[1]);
-    return 0;
-  }
-  throw InputError(cli, 0, args[0],
-                   args[0] == "--export" ? "give one library name: --export NAME"
-                                         : "unknown option (magfem materials [--export NAME])");
+  else
+    export_curve(lib, options.export_names[0]);
+  return 0;
 }
 
 } // namespace magfem

@@ -5,7 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "core/option_table.hpp"
+
 namespace magfem {
+
+struct MaterialsOptions {
+  std::vector<std::string> export_names; // --export NAME (one)
+};
+const OptionTable<MaterialsOptions>& materials_option_table();
 
 // Exit code 0; an unknown option, an unknown name or an entry without a curve is an
 // InputError naming the option.

@@ -19,7 +19,7 @@ _magfem() {
     --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
     --mesh-scale | --max-memory | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
-      --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature) return ;;
+      --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature | --coil-pitch | --constraint) return ;;
     --export) COMPREPLY=($(compgen -W "steel_1010 steel_1018 M-19 pure_iron" -- "$cur")); return ;;
     --objective | --maximize | --minimize)
       COMPREPLY=($(compgen -W "peak_torque torque_at:" -- "$cur"))
@@ -31,11 +31,11 @@ _magfem() {
     solve) options="--out --order --mesh-scale --max-memory --param --quiet --help" ;;
     analytic) options="--out --model --tolerance --n-max --param --help" ;;
     compare) options="--help" ;;
-    sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --help" ;;
+    sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --quiet --help" ;;
     materials) options="--export --help" ;;
     validate) options="--tier --only --source --jobs --resume --catalogue --out --help" ;;
     study) options="--param --objective --rotate --axis --angles --analytic --fe --mesh-scale --order --jobs --quiet --resume --out --help" ;;
-    actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --quiet --out --help" ;;
+    actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --quiet --out --coil-pitch --help" ;;
     optimize) options="--vary --maximize --minimize --rotate --axis --angles --constraint --xtol --verify-fe --mesh-scale --order --quiet --out --help" ;;
     help) COMPREPLY=($(compgen -W "${commands% help}" -- "$cur")); return ;;
   esac

@@ -17,20 +17,20 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
-#include "studies/actuator_coil_pitch.hpp"
-#include "studies/actuator_plot.hpp"
-#include "pipeline/analytic_scene.hpp"
-#include "pipeline/build_info.hpp"
-#include "casefile/cli_number.hpp"
-#include "pipeline/run3d.hpp"
-#include "studies/sweep.hpp"
+#include "analytic/charge_model.hpp"
 #include "analytic/torque_constants.hpp"
+#include "casefile/cli_number.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
 #include "core/progress.hpp"
+#include "pipeline/analytic_scene.hpp"
+#include "pipeline/build_info.hpp"
+#include "pipeline/run3d.hpp"
 #include "postproc/point_locator3d.hpp"
-#include "analytic/charge_model.hpp"
+#include "studies/actuator_coil_pitch.hpp"
+#include "studies/actuator_plot.hpp"
+#include "studies/sweep.hpp"
 
 namespace magfem {
 namespace {
@@ -355,65 +355,66 @@ std::vector<Orientation> parse_orientations(const std::string& spec) {
   return out;
 }
 
+namespace {
+
+Eigen::Vector3d parse_demanded_torque(const std::string& option, const std::string& text) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 3)
+    throw InputError(cli, 0, option, "expected three numbers Tx,Ty,Tz (N m), got '" + text + "'");
+  Eigen::Vector3d v;
+  for (int k = 0; k < 3; ++k)
+    v(k) = parse_cli_number(option, parts[static_cast<std::size_t>(k)]);
+  if (v.norm() == 0)
+    throw InputError(cli, 0, option, "the demanded torque is zero");
+  return v;
+}
+
+CoilRule parse_coil_rule(const std::string& option, const std::string& text) {
+  const auto parts = split(text, ',');
+  int n[4] = {0, 0, 0, 0};
+  for (std::size_t k = 0; k < parts.size() && k < 4; ++k)
+    n[k] = static_cast<int>(parse_cli_number(option, parts[k]));
+  if (parts.size() != 4 || n[0] < 1 || n[1] < 1 || n[2] < 1 || n[3] < 4 || n[0] > 64 || n[1] > 64)
+    throw InputError(cli, 0, option,
+                     "expected N_R,N_ALPHA,ALPHA_PANELS,N_AZIMUTH (Gauss orders 1..64, at "
+                     "least 4 azimuths), got '" +
+                         text + "'");
+  return {n[0], n[1], n[2], n[3]};
+}
+
+const OptionTable<ActuatorOptions>& actuator_option_table() {
+  using O = ActuatorOptions;
+  using S = const std::string&;
+  static const auto table =
+      OptionTable<O>("actuator")
+          .value("--rotor", "GROUP", [](O& o, S, S v) { o.rotor = v; })
+          .value("--orientations", "rx=..,ry=..,rz=..|FILE.csv",
+                 [](O& o, S, S v) { o.orientations = v; })
+          .value("--torque", "Tx,Ty,Tz",
+                 [](O& o, S opt, S v) { o.torque_Nm = parse_demanded_torque(opt, v); })
+          .flag("--analytic", [](O& o, S, S) { o.analytic = true; })
+          .value("--param", "NAME=VALUE",
+                 [](O& o, S, S v) { parse_cli_parameter(v, o.parameters); })
+          .value("--order", "1|2", [](O& o, S, S v) { o.order = parse_cli_order(v); })
+          .value("--mesh-scale", "S", [](O& o, S, S v) { o.mesh_scale = parse_cli_mesh_scale(v); })
+          .value("--coil-quadrature", "N_R,N_ALPHA,PANELS,N_AZIMUTH",
+                 [](O& o, S opt, S v) { o.coil_rule = parse_coil_rule(opt, v); })
+          .flag("--verify", [](O& o, S, S) { o.verify = true; })
+          .flag("--quiet", [](O& o, S, S) { o.quiet = true; })
+          .value("--out", "DIR", [](O& o, S, S v) { o.out_dir = v; })
+          .value("--coil-pitch", "SPEC", [](O& o, S, S v) { o.coil_pitch = v; });
+  return table;
+}
+
+} // namespace
+
+std::vector<OptionInfo> actuator_option_infos() {
+  return actuator_option_table().options();
+}
+
 ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
   ActuatorOptions o;
-  std::vector<std::string> positional;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size())
-        throw InputError(cli, 0, arg, "missing value");
-      return args[++i];
-    };
-    if (arg == "--rotor")
-      o.rotor = value();
-    else if (arg == "--orientations")
-      o.orientations = value();
-    else if (arg == "--torque") {
-      const std::string t = value();
-      const auto parts = split(t, ',');
-      if (parts.size() != 3)
-        throw InputError(cli, 0, arg, "expected three numbers Tx,Ty,Tz (N m), got '" + t + "'");
-      Eigen::Vector3d v;
-      for (int k = 0; k < 3; ++k)
-        v(k) = parse_cli_number(arg, parts[static_cast<std::size_t>(k)]);
-      if (v.norm() == 0)
-        throw InputError(cli, 0, arg, "the demanded torque is zero");
-      o.torque_Nm = v;
-    } else if (arg == "--analytic")
-      o.analytic = true;
-    else if (arg == "--verify")
-      o.verify = true;
-    else if (arg == "--quiet")
-      o.quiet = true;
-    else if (arg == "--coil-quadrature") {
-      const std::string t = value();
-      const auto parts = split(t, ',');
-      int n[4] = {0, 0, 0, 0};
-      for (std::size_t k = 0; k < parts.size() && k < 4; ++k)
-        n[k] = static_cast<int>(parse_cli_number(arg, parts[k]));
-      if (parts.size() != 4 || n[0] < 1 || n[1] < 1 || n[2] < 1 || n[3] < 4 || n[0] > 64 ||
-          n[1] > 64)
-        throw InputError(cli, 0, arg,
-                         "expected N_R,N_ALPHA,ALPHA_PANELS,N_AZIMUTH (Gauss orders 1..64, at "
-                         "least 4 azimuths), got '" +
-                             t + "'");
-      o.coil_rule = {n[0], n[1], n[2], n[3]};
-    } else if (arg == "--param")
-      parse_cli_parameter(value(), o.parameters);
-    else if (arg == "--mesh-scale")
-      o.mesh_scale = parse_cli_mesh_scale(value());
-    else if (arg == "--order")
-      o.order = parse_cli_order(value());
-    else if (arg == "--out")
-      o.out_dir = value();
-    else if (arg == "--coil-pitch")
-      o.coil_pitch = value();
-    else if (arg.rfind("--", 0) == 0)
-      throw InputError(cli, 0, arg, "unknown option for actuator");
-    else
-      positional.push_back(arg);
-  }
+  const std::vector<std::string> positional = actuator_option_table().parse(args, o);
   if (positional.size() != 1)
     throw InputError(cli, 0, "", "actuator takes one case file");
   o.case_file = positional[0];

@@ -35,6 +35,7 @@
 #include "analytic/torque_constants.hpp"
 #include "casefile/case_parameter.hpp"
 #include "casefile/case_spec.hpp"
+#include "core/option_table.hpp"
 
 namespace magfem {
 class Progress;
@@ -77,6 +78,8 @@ struct ActuatorOptions {
 };
 
 // Parses the arguments after `actuator`; throws InputError naming the option.
+// The command's options, one table (also what `magfem help actuator` and the completion offer).
+std::vector<OptionInfo> actuator_option_infos();
 ActuatorOptions parse_actuator_options(const std::vector<std::string>& args);
 
 struct ActuatorDemand {

@@ -8,11 +8,11 @@
 #include <nlohmann/json.hpp>
 #include <nlopt.hpp>
 
-#include "pipeline/build_info.hpp"
 #include "casefile/cli_number.hpp"
 #include "casefile/parameter_expression.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
+#include "pipeline/build_info.hpp"
 
 namespace magfem {
 namespace {
@@ -72,38 +72,95 @@ void check_constraints(const OptimizeOptions& o) {
 
 } // namespace
 
-OptimizeOptions parse_optimize_options(const std::vector<std::string>& args) {
-  OptimizeOptions o;
-  // The sweep and objective options are study's: collect them and let study parse them.
+namespace {
+
+// The options as given: optimize's own, and study's sweep options passed on to study.
+struct OptimizeArgs {
+  OptimizeOptions options;
   std::vector<std::string> study_args;
-  int senses = 0;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size())
-        throw InputError(cli, 0, arg, "missing value");
-      return args[++i];
-    };
-    if (arg == "--vary")
-      o.variables.push_back(parse_variable(value()));
-    else if (arg == "--maximize" || arg == "--minimize") {
-      o.maximize = arg == "--maximize";
-      study_args.push_back("--objective");
-      study_args.push_back(value());
-      ++senses;
-    } else if (arg == "--xtol") {
-      o.xtol = parse_cli_number(arg, value());
-      if (!(o.xtol > 0))
-        throw InputError(cli, 0, arg, "must be positive");
-    } else if (arg == "--constraint")
-      o.constraints.push_back(parse_constraint(value()));
-    else if (arg == "--verify-fe")
-      o.verify_fe = true;
-    else if (arg == "--param" || arg == "--objective" || arg == "--fe")
-      throw InputError(cli, 0, arg, "not an optimize option (use --vary, --maximize/--minimize)");
+  int senses = 0; // --maximize / --minimize given
+};
+
+// study's options that optimize passes on to it: the sweep whose torque the objective takes
+// and the FE check's mesh. The others are refused by name, not ignored: its variables are
+// --vary, its objective --maximize/--minimize, it always optimizes the analytic model, one
+// evaluation at a time, without a checkpoint.
+bool passed_to_study(const std::string& name) {
+  for (const char* n :
+       {"--rotate", "--axis", "--angles", "--mesh-scale", "--order", "--quiet", "--out"})
+    if (name == n)
+      return true;
+  return false;
+}
+
+bool refused_study_option(const std::string& name) {
+  if (passed_to_study(name))
+    return false;
+  for (const OptionInfo& info : study_option_infos())
+    if (info.name == name)
+      return true;
+  return false;
+}
+
+OptionTable<OptimizeArgs> make_optimize_table() {
+  using A = OptimizeArgs;
+  using S = const std::string&;
+  OptionTable<A> table("optimize");
+  table.value("--vary", "NAME=LO:HI",
+              [](A& a, S, S v) { a.options.variables.push_back(parse_variable(v)); });
+  for (const char* sense : {"--maximize", "--minimize"})
+    table.value(sense, "OBJECTIVE", [](A& a, S opt, S v) {
+      a.options.maximize = opt == "--maximize";
+      a.study_args.insert(a.study_args.end(), {"--objective", v});
+      ++a.senses;
+    });
+  table.value("--xtol", "X", [](A& a, S opt, S v) {
+    a.options.xtol = parse_cli_number(opt, v);
+    if (!(a.options.xtol > 0))
+      throw InputError(cli, 0, opt, "must be positive");
+  });
+  table.value("--constraint", "EXPR",
+              [](A& a, S, S v) { a.options.constraints.push_back(parse_constraint(v)); });
+  table.flag("--verify-fe", [](A& a, S, S) { a.options.verify_fe = true; });
+  for (const OptionInfo& info : study_option_infos()) {
+    if (passed_to_study(info.name))
+      table.value(info.name, info.value, [](A& a, S opt, S v) {
+        a.study_args.push_back(opt);
+        if (!v.empty())
+          a.study_args.push_back(v);
+      });
     else
-      study_args.push_back(arg);
+      table.value(info.name, "", [](A&, S opt, S) {
+        throw InputError(cli, 0, opt,
+                         "not an optimize option (optimize takes --vary, --maximize/--minimize, "
+                         "and optimizes the analytic model)");
+      });
   }
+  return table;
+}
+
+const OptionTable<OptimizeArgs>& optimize_option_table() {
+  static const OptionTable<OptimizeArgs> table = make_optimize_table();
+  return table;
+}
+
+} // namespace
+
+std::vector<OptionInfo> optimize_option_infos() {
+  std::vector<OptionInfo> out;
+  for (const OptionInfo& info : optimize_option_table().options())
+    if (!refused_study_option(info.name))
+      out.push_back(info);
+  return out;
+}
+
+OptimizeOptions parse_optimize_options(const std::vector<std::string>& args) {
+  OptimizeArgs parsed;
+  const std::vector<std::string> positional = optimize_option_table().parse(args, parsed);
+  OptimizeOptions& o = parsed.options;
+  std::vector<std::string>& study_args = parsed.study_args;
+  study_args.insert(study_args.end(), positional.begin(), positional.end());
+  const int senses = parsed.senses;
   if (o.variables.empty())
     throw InputError(cli, 0, "--vary", "give at least one --vary NAME=LO:HI");
   if (senses != 1)

@@ -49,6 +49,8 @@ struct OptimizeResult {
 
 // Parses the arguments after `optimize`; throws InputError naming the option.
 OptimizeOptions parse_optimize_options(const std::vector<std::string>& args);
+// Its options (for `magfem help optimize` and the completion).
+std::vector<OptionInfo> optimize_option_infos();
 
 // Runs the optimizer (and the FE check if asked). Throws InputError for bad options, and
 // SolveError if the model fails at a point the optimizer asks for or no point satisfies the

@@ -9,12 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/build_info.hpp"
 #include "casefile/cli_number.hpp"
-#include "pipeline/run_checkpoint.hpp"
-#include "studies/study_plot.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
+#include "pipeline/build_info.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "studies/study_plot.hpp"
 
 namespace magfem {
 namespace {
@@ -136,52 +136,58 @@ StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<doubl
   return d;
 }
 
-StudyOptions parse_study_options(const std::vector<std::string>& args) {
-  StudyOptions o;
-  o.sweep.analytic = true;
+namespace {
+
+// What the options say before they are checked together (axis and angles need the objectives).
+struct StudyArgs {
+  StudyOptions options;
   std::string axis, angles;
   bool analytic = false, fe = false;
-  std::vector<std::string> positional;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size())
-        throw InputError(cli, 0, arg, "missing value");
-      return args[++i];
-    };
-    if (arg == "--param")
-      o.parameters.push_back(parse_parameter(value()));
-    else if (arg == "--objective")
-      o.objectives.push_back(parse_study_objective(value()));
-    else if (arg == "--rotate")
-      o.sweep.group = value();
-    else if (arg == "--axis")
-      axis = value();
-    else if (arg == "--angles")
-      angles = value();
-    else if (arg == "--analytic")
-      analytic = true;
-    else if (arg == "--quiet")
-      o.quiet = true;
-    else if (arg == "--resume")
-      o.resume = true;
-    else if (arg == "--fe")
-      fe = true;
-    else if (arg == "--jobs") {
-      o.sweep.jobs = static_cast<int>(parse_cli_number(arg, value()));
-      if (o.sweep.jobs < 1)
-        throw InputError(cli, 0, arg, "must be at least 1");
-    } else if (arg == "--mesh-scale")
-      o.sweep.mesh_scale = parse_cli_mesh_scale(value());
-    else if (arg == "--order")
-      o.sweep.order = parse_cli_order(value());
-    else if (arg == "--out")
-      o.out_dir = value();
-    else if (arg.rfind("--", 0) == 0)
-      throw InputError(cli, 0, arg, "unknown option for study");
-    else
-      positional.push_back(arg);
-  }
+};
+
+const OptionTable<StudyArgs>& study_option_table() {
+  using A = StudyArgs;
+  using S = const std::string&;
+  static const auto table =
+      OptionTable<A>("study")
+          .value("--param", "NAME=START:STEP:END",
+                 [](A& a, S, S v) { a.options.parameters.push_back(parse_parameter(v)); })
+          .value("--objective", "OBJECTIVE",
+                 [](A& a, S, S v) { a.options.objectives.push_back(parse_study_objective(v)); })
+          .value("--rotate", "GROUP", [](A& a, S, S v) { a.options.sweep.group = v; })
+          .value("--axis", "x|y|z|ax,ay,az", [](A& a, S, S v) { a.axis = v; })
+          .value("--angles", "START:STEP:END|A,B,C", [](A& a, S, S v) { a.angles = v; })
+          .flag("--analytic", [](A& a, S, S) { a.analytic = true; })
+          .flag("--fe", [](A& a, S, S) { a.fe = true; })
+          .value("--mesh-scale", "S",
+                 [](A& a, S, S v) { a.options.sweep.mesh_scale = parse_cli_mesh_scale(v); })
+          .value("--order", "1|2", [](A& a, S, S v) { a.options.sweep.order = parse_cli_order(v); })
+          .value("--jobs", "N",
+                 [](A& a, S opt, S v) {
+                   a.options.sweep.jobs = static_cast<int>(parse_cli_number(opt, v));
+                   if (a.options.sweep.jobs < 1)
+                     throw InputError(cli, 0, opt, "must be at least 1");
+                 })
+          .flag("--quiet", [](A& a, S, S) { a.options.quiet = true; })
+          .flag("--resume", [](A& a, S, S) { a.options.resume = true; })
+          .value("--out", "DIR", [](A& a, S, S v) { a.options.out_dir = v; });
+  return table;
+}
+
+} // namespace
+
+std::vector<OptionInfo> study_option_infos() {
+  return study_option_table().options();
+}
+
+StudyOptions parse_study_options(const std::vector<std::string>& args) {
+  StudyArgs parsed;
+  parsed.options.sweep.analytic = true;
+  const std::vector<std::string> positional = study_option_table().parse(args, parsed);
+  StudyOptions& o = parsed.options;
+  const std::string& axis = parsed.axis;
+  const std::string& angles = parsed.angles;
+  const bool analytic = parsed.analytic, fe = parsed.fe;
   if (positional.size() != 1)
     throw InputError(cli, 0, "", "study takes one case file");
   o.case_file = positional[0];

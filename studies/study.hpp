@@ -18,8 +18,9 @@
 
 #include <Eigen/Core>
 
-#include "studies/sweep.hpp"
 #include "casefile/case_spec.hpp"
+#include "core/option_table.hpp"
+#include "studies/sweep.hpp"
 
 namespace magfem {
 
@@ -49,6 +50,8 @@ struct StudyOptions {
 
 // Parses the arguments after `study`; throws InputError naming the option.
 StudyOptions parse_study_options(const std::vector<std::string>& args);
+// The options parse_study_options takes (for `magfem help study` and the completion).
+std::vector<OptionInfo> study_option_infos();
 
 struct StudyDesign {
   std::vector<double> parameters; // parallel to StudyOptions::parameters

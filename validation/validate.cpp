@@ -11,12 +11,12 @@
 #include <sstream>
 #include <thread>
 
+#include "core/input_error.hpp"
+#include "core/output_stage.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/run_checkpoint.hpp"
 #include "validation/validate_checkpoint.hpp"
 #include "validation/validate_report.hpp"
-#include "core/input_error.hpp"
-#include "core/output_stage.hpp"
 
 namespace magfem {
 
@@ -136,46 +136,54 @@ void judge(EntryResult& r) {
   r.status = ok ? "pass" : "fail";
 }
 
+namespace {
+
+ValidationTier parse_tier(const std::string& option, const std::string& text) {
+  if (text == "quick")
+    return ValidationTier::quick;
+  if (text == "full")
+    return ValidationTier::full;
+  throw InputError(cli, 0, option, "must be quick or full, got '" + text + "'");
+}
+
+int parse_jobs(const std::string& option, const std::string& text) {
+  int jobs = 0;
+  try {
+    jobs = std::stoi(text);
+  } catch (const std::exception&) {
+    throw InputError(cli, 0, option, "expected a number, got '" + text + "'");
+  }
+  if (jobs < 0)
+    throw InputError(cli, 0, option, "must be >= 0");
+  return jobs;
+}
+
+const OptionTable<ValidateOptions>& validate_option_table() {
+  using O = ValidateOptions;
+  using S = const std::string&;
+  static const auto table =
+      OptionTable<O>("validate")
+          .value("--tier", "quick|full", [](O& o, S opt, S v) { o.tier = parse_tier(opt, v); })
+          .value("--only", "ID,ID,...", [](O& o, S, S v) { o.only = split_list(v); })
+          .value("--source", "SEED", [](O& o, S, S v) { o.source = v; })
+          .value("--jobs", "N", [](O& o, S opt, S v) { o.jobs = parse_jobs(opt, v); })
+          .flag("--resume", [](O& o, S, S) { o.resume = true; })
+          .value("--catalogue", "FILE.yaml", [](O& o, S, S v) { o.catalogue = v; })
+          .value("--out", "DIR", [](O& o, S, S v) { o.out_dir = v; });
+  return table;
+}
+
+} // namespace
+
+std::vector<OptionInfo> validate_option_infos() {
+  return validate_option_table().options();
+}
+
 ValidateOptions parse_validate_options(const std::vector<std::string>& args) {
   ValidateOptions o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size())
-        throw InputError(cli, 0, arg, "missing value");
-      return args[++i];
-    };
-    if (arg == "--tier") {
-      const std::string t = value();
-      if (t == "quick")
-        o.tier = ValidationTier::quick;
-      else if (t == "full")
-        o.tier = ValidationTier::full;
-      else
-        throw InputError(cli, 0, "--tier", "must be quick or full, got '" + t + "'");
-    } else if (arg == "--only") {
-      o.only = split_list(value());
-    } else if (arg == "--source") {
-      o.source = value();
-    } else if (arg == "--jobs") {
-      const std::string v = value();
-      try {
-        o.jobs = std::stoi(v);
-      } catch (const std::exception&) {
-        throw InputError(cli, 0, "--jobs", "expected a number, got '" + v + "'");
-      }
-      if (o.jobs < 0)
-        throw InputError(cli, 0, "--jobs", "must be >= 0");
-    } else if (arg == "--out") {
-      o.out_dir = value();
-    } else if (arg == "--catalogue") {
-      o.catalogue = value();
-    } else if (arg == "--resume") {
-      o.resume = true;
-    } else {
-      throw InputError(cli, 0, arg, "unknown option or argument for validate");
-    }
-  }
+  const std::vector<std::string> positional = validate_option_table().parse(args, o);
+  if (!positional.empty())
+    throw InputError(cli, 0, positional[0], "validate takes no arguments, only options");
   if (!o.only.empty() && !o.source.empty())
     throw InputError(cli, 0, "--only", "give --only or --source, not both");
   return o;

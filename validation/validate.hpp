@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/option_table.hpp"
 #include "validation/validate_catalogue.hpp"
 #include "validation/validate_evaluators.hpp"
 
@@ -41,6 +42,8 @@ struct ValidationRun {
 
 // Parses the options after `validate` (throws InputError).
 ValidateOptions parse_validate_options(const std::vector<std::string>& args);
+// Its options (for `magfem help validate` and the completion).
+std::vector<OptionInfo> validate_option_infos();
 // Selects entries, runs them, writes the outputs; returns the exit code. Throws InputError
 // for bad input (unknown id, bad catalogue).
 int run_validate(const ValidateOptions& options);

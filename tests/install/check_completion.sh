@@ -24,10 +24,16 @@ listed=$("$exe" --help | sed -n '/^commands:/,/^$/p' | awk 'NF && !/commands:/ {
 [[ $(complete_words magfem validate --ti) == "--tier " ]] || fail "validate --ti"
 [[ $(complete_words magfem validate --tier "") == "full quick " ]] || fail "--tier values"
 [[ $(complete_words magfem analytic --model h) == "harmonic " ]] || fail "--model values"
+# Each command's option table (what it parses) is what the completion offers (and --help),
+# and every option in it appears on the command's help page.
 for command in $listed; do
   options=$(complete_words magfem "$command" --)
-  for option in $(${exe} help "$command" | grep -o -- '--[a-z-]*' | sort -u); do
-    [[ " $options " == *" $option "* ]] || fail "$command: completion lacks $option"
+  table=$("$exe" help --list-options "$command" | awk '{print $1}')
+  expected=$(printf '%s\n' $table --help | sort -u | tr '\n' ' ')
+  [[ $options == "$expected" ]] || fail "$command: completion offers '$options', its option table '$expected'"
+  page=$("$exe" help "$command")
+  for option in $table; do
+    grep -q -- "$option\b" <<<"$page" || fail "$command: help page lacks $option"
   done
 done
 echo "completion: ok ($listed)"
