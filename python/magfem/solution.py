@@ -1,0 +1,132 @@
+"""magfem.Solution: a solved case as Python reads it (the compiled part is _core.Solution)."""
+import json
+
+import numpy as np
+
+# Metres per unit of the points given to Solution.B / Solution.H.
+_UNITS = {"m": 1.0, "mm": 1e-3}
+
+
+def _numpy_vectors(value):
+    """JSON from the C++ writers with its 3-vectors (force_N, torque_Nm, ...) as numpy."""
+    if isinstance(value, dict):
+        return {k: _numpy_vectors(v) for k, v in value.items()}
+    if isinstance(value, list) and len(value) == 3 and all(
+            isinstance(x, (int, float)) for x in value):
+        return np.array(value, dtype=float)
+    if isinstance(value, list):
+        return [_numpy_vectors(v) for v in value]
+    return value
+
+
+class Mesh:
+    """The linear mesh of a solution (higher-order nodes live in the solver, not here).
+
+    ``nodes``: (n, 2) in metres for 2D (x, y; r, z when axisymmetric), (n, 3) for 3D.
+    ``elements``: (m, 3) triangles or (m, 4) tetrahedra, indices into ``nodes``.
+    ``regions``: (m,) the case's region index of each element; -1 background air, -2 the
+    exterior shell of an open boundary. ``region_names``: the case's regions in order.
+    """
+
+    def __init__(self, d):
+        self.nodes = d["nodes"]
+        self.elements = d["elements"]
+        self.regions = d["regions"]
+        self.region_names = list(d["region_names"])
+
+    def __repr__(self):
+        return "<magfem.Mesh: %d nodes, %d elements>" % (len(self.nodes), len(self.elements))
+
+
+class Solution:
+    """A solved case (returned by Case.solve); everything is in SI units.
+
+    ``energy`` (J; 2D planar: J/m, or J for the stack when the case gives one),
+    ``forces`` (name -> dict with ``force_N``, ``torque_Nm`` numpy vectors, the method, and
+    the check-surface and error-estimate entries when the run has them), ``coils`` (name ->
+    dict: turns, current_A, flux_linkage_Wb, ...), ``inductance_H`` (numpy matrix in the
+    order of ``coils``, 3D coils only, else None), ``probes`` (name -> dict of numpy columns,
+    as the CSV files), ``summary`` (summary.json as a dict), ``mesh`` (Mesh), ``B(points)``,
+    ``H(points)`` and ``write(dir)``.
+    """
+
+    def __init__(self, core):
+        self._core = core
+        self.dimension = core.dimension
+        """"2d" (planar), "axi" (axisymmetric) or "3d"."""
+        self.energy = core.energy_J
+        self._summary = None
+        self._mesh = None
+
+    @property
+    def forces(self):
+        return {f["name"]: _numpy_vectors(f) for f in json.loads(self._core.forces_json())}
+
+    @property
+    def coils(self):
+        return {c["name"]: _numpy_vectors(c) for c in json.loads(self._core.coils_json())}
+
+    @property
+    def inductance_H(self):
+        return self._core.inductance_H()
+
+    @property
+    def probes(self):
+        return self._core.probes()
+
+    @property
+    def summary(self):
+        """summary.json as the command line writes it (timings and provenance included)."""
+        if self._summary is None:
+            self._summary = json.loads(self._core.summary_json())
+        return self._summary
+
+    @property
+    def mesh(self):
+        if self._mesh is None:
+            self._mesh = Mesh(self._core.mesh())
+        return self._mesh
+
+    def _field(self, points, unit, outside, want_h):
+        if unit not in _UNITS:
+            raise ValueError("unit must be one of %s, not %r" % (sorted(_UNITS), unit))
+        if outside not in ("raise", "nan"):
+            raise ValueError("outside must be 'raise' or 'nan', not %r" % (outside,))
+        p = np.asarray(points, dtype=float)
+        single = p.ndim == 1
+        p = np.atleast_2d(p)
+        if p.ndim != 2 or p.shape[1] != 3:
+            raise ValueError("points must be N x 3 (x, y, z), got shape %s" % (p.shape,))
+        v = self._core.field_at(p * _UNITS[unit], want_h)
+        if outside == "raise":
+            lost = np.flatnonzero(np.isnan(v[:, 0]))
+            if lost.size:
+                raise ValueError(
+                    "%d point(s) outside the meshed domain, the first: index %d at %s %s "
+                    "(outside='nan' gives NaN there)" % (lost.size, lost[0], p[lost[0]], unit))
+        return v[0] if single else v
+
+    def B(self, points, unit="m", outside="raise"):
+        """Flux density (T) at points: an N x 3 array (or one point) of Cartesian x, y, z in
+        ``unit`` ("m" or "mm"); returns N x 3 (Bx, By, Bz).
+
+        Planar cases ignore z (Bz = 0); axisymmetric cases are about the z axis (a point
+        (r, 0, z) gives (Br, 0, Bz)). 2D: the field of the element holding the point, as the
+        probe CSVs; 3D: the recovered B of the point's region, as the probe CSVs. Points
+        outside the meshed physical domain (the shell of an open boundary included) raise
+        ValueError, or give NaN rows with ``outside="nan"``.
+        """
+        return self._field(points, unit, outside, False)
+
+    def H(self, points, unit="m", outside="raise"):
+        """Field strength (A/m) at points, as B(): from the element's constitutive law
+        (remanence included), the element field also in 3D."""
+        return self._field(points, unit, outside, True)
+
+    def write(self, out_dir):
+        """Writes what ``magfem solve --out out_dir`` writes (summary.json, probe CSVs,
+        forces.csv, solution.vtu, ...), all-or-nothing; returns the file names."""
+        return self._core.write(str(out_dir))
+
+    def __repr__(self):
+        return "<magfem.Solution %s: energy %.6g J>" % (self.dimension, self.energy)
