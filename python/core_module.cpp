@@ -8,6 +8,7 @@
 
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "python/analytic.hpp"
 #include "python/solution.hpp"
 
 namespace py = pybind11;
@@ -65,4 +66,5 @@ PYBIND11_MODULE(_core, m) {
         py::arg("overrides") = std::map<std::string, double>{},
         "Reads and validates a case file; returns [(parameter, value), ...].");
   magfem::python::bind_solution(m);
+  magfem::python::bind_analytic(m);
 }

@@ -1,11 +1,8 @@
 #include "python/solution.hpp"
 
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <map>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
@@ -13,39 +10,12 @@
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
 #include "python/py_progress.hpp"
+#include "python/result_tables.hpp"
 
 namespace py = pybind11;
 
 namespace magfem::python {
 namespace {
-
-// The scope of a temporary folder (mkdtemp), removed with its contents at the end.
-class TempDir {
-public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "magfem-py-XXXXXX").string();
-    if (!mkdtemp(pattern.data()))
-      throw std::runtime_error("cannot create a temporary folder in " + pattern);
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
-private:
-  std::filesystem::path path_;
-};
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 template <typename Vec> py::array_t<double> rows_of(const std::vector<Vec>& v, int dim) {
   py::array_t<double> out({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(dim)});
@@ -63,22 +33,6 @@ template <std::size_t N> py::array_t<int> rows_of(const std::vector<std::array<i
     for (std::size_t k = 0; k < N; ++k)
       a(i, k) = v[i][k];
   return out;
-}
-
-// Writes the outputs without the VTU (seconds on a big mesh, and not part of the summary).
-// The flag is the run's own and put back at once (the caller holds the output mutex).
-template <typename Run, typename Writer> std::string summary_of(Run& run, Writer write_outputs) {
-  const TempDir dir;
-  const bool vtu = run.spec.write_vtu;
-  run.spec.write_vtu = false;
-  try {
-    write_outputs(run, dir.path());
-  } catch (...) {
-    run.spec.write_vtu = vtu;
-    throw;
-  }
-  run.spec.write_vtu = vtu;
-  return read_text(dir.path() / "summary.json");
 }
 
 std::unique_ptr<Solution> solve_case(const std::string& path, const std::string& text,
@@ -161,19 +115,7 @@ py::object Solution::inductance_H() const {
 }
 
 py::dict Solution::probes() const {
-  py::dict out;
-  for (const ProbeTable& p : run3d_ ? run3d_->probes : run2d_->probes) {
-    py::dict columns;
-    for (std::size_t c = 0; c < p.columns.size(); ++c) {
-      py::array_t<double> col(static_cast<py::ssize_t>(p.rows.size()));
-      auto a = col.mutable_unchecked<1>();
-      for (std::size_t r = 0; r < p.rows.size(); ++r)
-        a(r) = p.rows[r][c];
-      columns[py::str(p.columns[c])] = col;
-    }
-    out[py::str(p.name)] = columns;
-  }
-  return out;
+  return probes_dict(run3d_ ? run3d_->probes : run2d_->probes);
 }
 
 Eigen::Vector3d Solution::field_2d(const Eigen::Vector3d& x, bool want_H) const {
@@ -253,14 +195,11 @@ std::vector<std::string> Solution::write(const std::string& dir) const {
   return run3d_ ? write_outputs_3d(*run3d_, dir) : write_outputs_2d(*run2d_, dir);
 }
 
-// summary.json is assembled inside write_outputs_2d/3d, between the files it stages; it is
-// taken from there (written into a temporary folder and read back) rather than rebuilt here,
-// so it is the command line's byte for byte and cannot drift when fields are added to it.
 std::string Solution::summary_json() {
   const std::lock_guard lock(output_mutex_);
   if (run3d_)
-    return summary_of(*run3d_, write_outputs_3d);
-  return summary_of(*run2d_, write_outputs_2d);
+    return summary_via_outputs(*run3d_, write_outputs_3d);
+  return summary_via_outputs(*run2d_, write_outputs_2d);
 }
 
 void bind_solution(py::module_& m) {

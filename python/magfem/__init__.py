@@ -9,7 +9,7 @@ import os
 
 from . import _core
 from ._core import __version__
-from .solution import Mesh, Solution
+from .solution import AnalyticSolution, Mesh, Solution
 
 # The compiled reader raises this (a ValueError carrying file, line, field).
 InputError = _core._InputError
@@ -109,4 +109,21 @@ class Case:
             return f.read()
 
 
-__all__ = ["__version__", "Case", "InputError", "Mesh", "Solution", "SolveError"]
+def analytic(case, model="charge", tolerance=1e-6, n_max=150):
+    """Answers a case with the analytic models, as ``magfem analytic`` does; returns an
+    AnalyticSolution (probes, forces, coils, inductance_H, summary, write).
+
+    ``model``: "charge" (surface charges with imaging in permeable spheres; ``tolerance`` is
+    its relative quadrature tolerance) or "harmonic" (spherical harmonics up to degree
+    ``n_max``); axisymmetric cases use their closed forms. The GIL is released meanwhile.
+    Raises InputError for a case the models cannot answer.
+    """
+    if model not in ("charge", "harmonic"):
+        raise _argument_error("model", "must be 'charge' or 'harmonic', not %r" % (model,))
+    core = _core.analytic(case._path or "", case._text or "", case._name or "", case._params,
+                          model, tolerance, n_max)
+    return AnalyticSolution(core)
+
+
+__all__ = ["__version__", "AnalyticSolution", "Case", "InputError", "Mesh", "Solution",
+           "SolveError", "analytic"]

@@ -38,7 +38,59 @@ class Mesh:
         return "<magfem.Mesh: %d nodes, %d elements>" % (len(self.nodes), len(self.elements))
 
 
-class Solution:
+class _Result:
+    """What FE and analytic answers share: forces, probes, summary.json, write."""
+
+    def __init__(self, core):
+        self._core = core
+        self._summary = None
+
+    @property
+    def forces(self):
+        """name -> dict: ``force_N`` and ``torque_Nm`` (numpy vectors), ``method``, and the
+        check-surface and error-estimate entries when the run has them (summary.json's)."""
+        return {f["name"]: _numpy_vectors(f) for f in json.loads(self._core.forces_json())}
+
+    @property
+    def probes(self):
+        """name -> dict of numpy columns, as the probe CSV files (case length unit, T)."""
+        return self._core.probes()
+
+    @property
+    def summary(self):
+        """summary.json as the command line writes it (timings and provenance included)."""
+        if self._summary is None:
+            self._summary = json.loads(self._core.summary_json())
+        return self._summary
+
+    def write(self, out_dir):
+        """Writes what the command line's ``--out out_dir`` writes (summary.json, probe CSVs,
+        forces.csv, the VTU of an FE solution, ...), all-or-nothing; returns the file
+        names."""
+        return self._core.write(str(out_dir))
+
+
+class AnalyticSolution(_Result):
+    """A case answered by the analytic models (returned by magfem.analytic): ``forces``,
+    ``coils``, ``inductance_H``, ``probes``, ``summary`` and ``write(dir)``, as ``magfem
+    analytic`` writes them. No field at arbitrary points: give the case probes."""
+
+    @property
+    def coils(self):
+        """name -> dict (summary.json's "coils": linkage, force and torque where known)."""
+        return {c["name"]: _numpy_vectors(c) for c in self.summary.get("coils", [])}
+
+    @property
+    def inductance_H(self):
+        """Numpy matrix in the order of ``coils``, or None when not computable."""
+        l = self.summary.get("inductance_H")
+        return None if l is None else np.array(l["matrix"], dtype=float)
+
+    def __repr__(self):
+        return "<magfem.AnalyticSolution: %s>" % self.summary.get("model")
+
+
+class Solution(_Result):
     """A solved case (returned by Case.solve); everything is in SI units.
 
     ``energy`` (J; 2D planar: J/m, or J for the stack when the case gives one),
@@ -51,16 +103,11 @@ class Solution:
     """
 
     def __init__(self, core):
-        self._core = core
+        super().__init__(core)
         self.dimension = core.dimension
         """"2d" (planar), "axi" (axisymmetric) or "3d"."""
         self.energy = core.energy_J
-        self._summary = None
         self._mesh = None
-
-    @property
-    def forces(self):
-        return {f["name"]: _numpy_vectors(f) for f in json.loads(self._core.forces_json())}
 
     @property
     def coils(self):
@@ -69,17 +116,6 @@ class Solution:
     @property
     def inductance_H(self):
         return self._core.inductance_H()
-
-    @property
-    def probes(self):
-        return self._core.probes()
-
-    @property
-    def summary(self):
-        """summary.json as the command line writes it (timings and provenance included)."""
-        if self._summary is None:
-            self._summary = json.loads(self._core.summary_json())
-        return self._summary
 
     @property
     def mesh(self):
@@ -122,11 +158,6 @@ class Solution:
         """Field strength (A/m) at points, as B(): from the element's constitutive law
         (remanence included), the element field also in 3D."""
         return self._field(points, unit, outside, True)
-
-    def write(self, out_dir):
-        """Writes what ``magfem solve --out out_dir`` writes (summary.json, probe CSVs,
-        forces.csv, solution.vtu, ...), all-or-nothing; returns the file names."""
-        return self._core.write(str(out_dir))
 
     def __repr__(self):
         return "<magfem.Solution %s: energy %.6g J>" % (self.dimension, self.energy)

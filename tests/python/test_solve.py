@@ -24,10 +24,11 @@ def example(name):
     return os.path.join(SOURCE, "examples", name)
 
 
-def solve_cli(case_path, mesh_scale, out_dir):
-    """`magfem solve` of the case; returns (summary dict, {probe: {column: array}})."""
-    subprocess.run([EXE, "solve", case_path, "--mesh-scale", repr(mesh_scale), "--quiet",
-                    "--out", out_dir], check=True, stdout=subprocess.DEVNULL)
+def solve_cli(case_path, mesh_scale, out_dir, command="solve"):
+    """`magfem solve` (or analytic) of the case; returns (summary, {probe: {column: array}})."""
+    options = ["--mesh-scale", repr(mesh_scale), "--quiet"] if command == "solve" else []
+    subprocess.run([EXE, command, case_path, *options, "--out", out_dir], check=True,
+                   stdout=subprocess.DEVNULL)
     with open(os.path.join(out_dir, "summary.json"), encoding="utf-8") as f:
         summary = json.load(f)
     probes = {}
@@ -180,6 +181,27 @@ class Solid(AgainstCommandLine, unittest.TestCase):
         mesh = self.sol.mesh
         self.assertEqual(mesh.nodes.shape, (self.cli["nodes"], 3))
         self.assertEqual(mesh.elements.shape, (self.cli["elements"], 4))
+
+
+class Analytic(unittest.TestCase):
+    def test_analytic_is_the_command_lines(self):
+        case = example("axi/solenoid.yaml")  # closed forms: coil linkage and L, probes
+        answer = magfem.analytic(magfem.Case.load(case))
+        with tempfile.TemporaryDirectory() as out:
+            cli, cli_probes = solve_cli(case, None, out, command="analytic")
+        self.assertEqual(answer.summary["coils"], cli["coils"])
+        np.testing.assert_array_equal(answer.inductance_H, cli["inductance_H"]["matrix"])
+        self.assertEqual(answer.coils["winding"]["flux_linkage_Wb"],
+                         cli["coils"][0]["flux_linkage_Wb"])
+        for name, columns in cli_probes.items():
+            for col, values in columns.items():
+                np.testing.assert_allclose(answer.probes[name][col], values, rtol=1e-9,
+                                           atol=1e-12, err_msg=name + "." + col)
+
+    def test_unknown_model_names_the_option(self):
+        with self.assertRaises(magfem.InputError) as ctx:
+            magfem.analytic(magfem.Case.load(example("3d/magnetized_sphere.yaml")), model="x")
+        self.assertEqual(ctx.exception.field, "model")
 
 
 def nonlinear_case(**solver):
