@@ -111,14 +111,19 @@ class Solution(_Result):
 
     @property
     def coils(self):
+        """name -> dict: turns, current_A, flux_linkage_Wb; inductance_H (linkage / current)
+        in 2D axisymmetric cases; resistance_ohm, power_W, force_N, torque_Nm in 3D."""
         return {c["name"]: _numpy_vectors(c) for c in json.loads(self._core.coils_json())}
 
     @property
     def inductance_H(self):
+        """The 3D inductance matrix (H) in the order of ``coils``, or None when the run did
+        not compute one (2D axisymmetric coils carry theirs in ``coils``)."""
         return self._core.inductance_H()
 
     @property
     def mesh(self):
+        """The linear mesh as numpy arrays (Mesh: nodes, elements, regions, region_names)."""
         if self._mesh is None:
             self._mesh = Mesh(self._core.mesh())
         return self._mesh
