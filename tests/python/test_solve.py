@@ -204,6 +204,35 @@ class Analytic(unittest.TestCase):
         self.assertEqual(ctx.exception.field, "model")
 
 
+class ExactField(unittest.TestCase):
+    """B and H at arbitrary points (not probe points) of the diametric cylinder against its
+    exact field (examples/2d/diametric_cylinder.yaml): B_r = 1 T along x, radius 10 mm."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.sol = magfem.Case.load(example("2d/diametric_cylinder.yaml")).solve(mesh_scale=2.0)
+
+    def test_inside_and_outside(self):
+        rng = np.random.default_rng(7)
+        r = np.concatenate([rng.uniform(0, 9, 50), rng.uniform(11, 20, 50)])  # mm
+        phi = rng.uniform(0, 2 * np.pi, 100)
+        pts = np.column_stack([r * np.cos(phi), r * np.sin(phi), rng.uniform(-5, 5, 100)])
+        inside = r < 10
+        a2 = (10.0 / np.where(inside, 10.0, r)) ** 2
+        br, bphi = 0.5 * a2 * np.cos(phi), 0.5 * a2 * np.sin(phi)
+        exact = np.column_stack([br * np.cos(phi) - bphi * np.sin(phi),
+                                 br * np.sin(phi) + bphi * np.cos(phi), 0 * r])
+        exact[inside] = [0.5, 0.0, 0.0]
+        # Element error: 5e-5 T in the magnet, up to ~3e-3 T in the coarse outer air (4 mm
+        # triangles at mesh-scale 2); 5e-3 T is 1 % of the field, far below a wrong point or
+        # component (0.1 T and more).
+        np.testing.assert_allclose(self.sol.B(pts, unit="mm"), exact, atol=5e-3)
+        mu0 = 4e-7 * np.pi
+        h_exact = exact / mu0
+        h_exact[inside] = [-0.5 / mu0, 0.0, 0.0]  # H = (B - B_r) / mu0 in the magnet
+        np.testing.assert_allclose(self.sol.H(pts, unit="mm"), h_exact, atol=5e-3 / mu0)
+
+
 def nonlinear_case(**solver):
     import yaml
     with open(example("axi/magnet_over_plate.yaml"), encoding="utf-8") as f:
@@ -266,6 +295,21 @@ class Interrupts(unittest.TestCase):
 
         with self.assertRaises(KeyError):
             magfem.Case.load(example("axi/solenoid.yaml")).solve(mesh_scale=4.0, progress=fail)
+
+    def test_exception_in_a_krylov_report_waits_for_the_next_stage(self):
+        # CG + BoomerAMG: the iteration reports come from PETSc's monitor, where nothing may
+        # be thrown; the exception is kept and raised at the next stage.
+        seen = []
+
+        def fail_in_iteration(kind, text):
+            seen.append(kind)
+            if kind == "iteration":
+                raise KeyError("from inside PETSc")
+
+        with self.assertRaises(KeyError):
+            magfem.Case.load(example("3d/magnet_and_ball_small.yaml")).solve(
+                progress=fail_in_iteration)
+        self.assertEqual(seen.count("iteration"), 1)
 
 
 if __name__ == "__main__":
