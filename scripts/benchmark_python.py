@@ -3,6 +3,7 @@
   PYTHONPATH=build/python /usr/bin/python3 scripts/benchmark_python.py [repeats]
 Overhead = wall time of the call (or the process) minus the pipeline's own total in
 summary.json (mesh, assembly, solve, post-processing)."""
+import json
 import os
 import statistics
 import subprocess
@@ -42,7 +43,6 @@ def cli_overhead(path, out):
                        stdout=subprocess.DEVNULL)
         t = time.perf_counter() - t0
         wall.append(t)
-        import json
         with open(os.path.join(out, "summary.json"), encoding="utf-8") as f:
             over.append(t - json.load(f)["timings_s"]["total"])
     return median_ms(wall), median_ms(over)
