@@ -8,6 +8,8 @@
 
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "python/analytic.hpp"
+#include "python/solution.hpp"
 
 namespace py = pybind11;
 
@@ -41,6 +43,7 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "Compiled part of the magfem package; use `import magfem`.";
   m.attr("__version__") = MAGFEM_VERSION;
   static py::exception<magfem::InputError> input_error(m, "_InputError", PyExc_ValueError);
+  static py::exception<magfem::SolveError> solve_error(m, "_SolveError", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p)
@@ -52,6 +55,8 @@ PYBIND11_MODULE(_core, m) {
       err.attr("field") =
           e.field().empty() ? py::object(py::none()) : py::object(py::str(e.field()));
       PyErr_SetObject(input_error.ptr(), err.ptr());
+    } catch (const magfem::SolveError& e) {
+      solve_error(e.what());
     }
   });
   m.def("check_case_text", &check_case_text, py::arg("text"), py::arg("name"),
@@ -60,4 +65,6 @@ PYBIND11_MODULE(_core, m) {
   m.def("check_case_file", &check_case_file, py::arg("path"),
         py::arg("overrides") = std::map<std::string, double>{},
         "Reads and validates a case file; returns [(parameter, value), ...].");
+  magfem::python::bind_solution(m);
+  magfem::python::bind_analytic(m);
 }

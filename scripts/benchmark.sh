@@ -225,6 +225,11 @@ if ((full)); then
     "$out/act_fe/torque_constants.csv" "$out/act_charge/torque_constants.csv"
   echo
 fi
+if compgen -G "build/python/magfem/_core*.so" > /dev/null; then
+  echo "== Python module (issue 32 target: case.solve overhead beyond the solve <= 5 ms on a 2D case)"
+  PYTHONPATH=build/python /usr/bin/python3 scripts/benchmark_python.py 3 | sed 's/^/    /'
+  echo
+fi
 echo "== coil-pitch study (issue 10, thesis sec. 5.3; --full: the thesis's 31 pitches x 3375 orientations)"
 grid="rx=-45:15:45,ry=-45:15:45,rz=-45:15:45" pitches="40:2:70"
 if ((full)); then

@@ -1,10 +1,15 @@
-"""magfem: finite-element magnetostatics from Python (issue 32, first slice).
+"""magfem: finite-element magnetostatics from Python (issue 32).
 
 So far: ``__version__``, ``Case`` (load, from_dict, with_params, to_yaml: the case read and
-validated by the same reader as ``magfem solve``) and the exception types.
+validated by the same reader as ``magfem solve``), ``Case.solve`` returning a ``Solution``
+(the same in-process pipeline as ``magfem solve``) and the exception types.
 """
+import contextlib
+import os
+
 from . import _core
 from ._core import __version__
+from .solution import AnalyticSolution, Mesh, Solution
 
 # The compiled reader raises this (a ValueError carrying file, line, field).
 InputError = _core._InputError
@@ -12,8 +17,37 @@ InputError.__doc__ = """A case the reader rejects. ``file`` (``<dict>`` for Case
 ``line`` (1-based, or None) and ``field`` (the YAML path, or None) say where."""
 
 
-class SolveError(RuntimeError):
-    """A solve that did not produce a result (no convergence, a failed mesh)."""
+def _argument_error(field, message):
+    """An InputError about an argument of a call, as the C++ side words one ("<solve>")."""
+    err = InputError("<solve>: %s: %s" % (field, message))
+    err.file, err.line, err.field = "<solve>", None, field
+    return err
+
+
+# The pipeline raises this (a RuntimeError) when the solver fails.
+SolveError = _core._SolveError
+SolveError.__doc__ = """A solve that did not produce a result (no convergence, a singular
+system); the message is the command line's "solver failed: ..." text."""
+
+
+@contextlib.contextmanager
+def _thread_limit(threads):
+    """MAGFEM_THREADS for the duration of a call (core/thread_count.hpp reads it at every
+    parallel loop). Process-wide: concurrent solves share the last value set."""
+    if threads is None:
+        yield
+        return
+    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+        raise _argument_error("threads", "must be a positive integer, not %r" % (threads,))
+    before = os.environ.get("MAGFEM_THREADS")
+    os.environ["MAGFEM_THREADS"] = str(threads)
+    try:
+        yield
+    finally:
+        if before is None:
+            del os.environ["MAGFEM_THREADS"]
+        else:
+            os.environ["MAGFEM_THREADS"] = before
 
 
 class Case:
@@ -46,6 +80,27 @@ class Case:
         """A copy with more parameter overrides, e.g. ``case.with_params(gap=2.0)``."""
         return Case(self._path, self._text, self._name, {**self._params, **overrides})
 
+    def solve(self, order=None, mesh_scale=1.0, threads=None, progress=None):
+        """Meshes and solves the case in-process, as ``magfem solve`` does; returns a Solution.
+
+        ``order``: 1 or 2 (None: as in the case, like the command line's --order);
+        ``mesh_scale``: multiplies every mesh size (--mesh-scale); ``threads``: magfem's own
+        worker threads for this call (MAGFEM_THREADS; None: all cores); ``progress``: None
+        (silent), True (the command line's progress lines on stderr) or a callable
+        ``progress(kind, text)`` with kind "stage", "note" or "iteration".
+
+        The GIL is released while solving. Ctrl-C raises KeyboardInterrupt at the next
+        stage or Newton step (meshing, a direct factorization and an AMG-preconditioned
+        Krylov solve finish first); an exception raised by ``progress`` ends the solve the
+        same way. Raises InputError (bad case or argument, a geometry the mesher rejects)
+        and SolveError (no convergence).
+        """
+        with _thread_limit(threads):
+            core = _core.solve(self._path or "", self._text or "", self._name or "",
+                               self._params, 0 if order is None else order, mesh_scale,
+                               progress)
+        return Solution(core)
+
     def to_yaml(self):
         """The case's YAML text (the file's text for a loaded case, without overrides)."""
         if self._text is not None:
@@ -54,4 +109,21 @@ class Case:
             return f.read()
 
 
-__all__ = ["__version__", "Case", "InputError", "SolveError"]
+def analytic(case, model="charge", tolerance=1e-6, n_max=150):
+    """Answers a case with the analytic models, as ``magfem analytic`` does; returns an
+    AnalyticSolution (probes, forces, coils, inductance_H, summary, write).
+
+    ``model``: "charge" (surface charges with imaging in permeable spheres; ``tolerance`` is
+    its relative quadrature tolerance) or "harmonic" (spherical harmonics up to degree
+    ``n_max``); axisymmetric cases use their closed forms. The GIL is released meanwhile.
+    Raises InputError for a case the models cannot answer.
+    """
+    if model not in ("charge", "harmonic"):
+        raise _argument_error("model", "must be 'charge' or 'harmonic', not %r" % (model,))
+    core = _core.analytic(case._path or "", case._text or "", case._name or "", case._params,
+                          model, tolerance, n_max)
+    return AnalyticSolution(core)
+
+
+__all__ = ["__version__", "AnalyticSolution", "Case", "InputError", "Mesh", "Solution",
+           "SolveError", "analytic"]

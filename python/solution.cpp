@@ -1,0 +1,222 @@
+#include "python/solution.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/stl.h>
+
+#include "casefile/case_spec.hpp"
+#include "core/input_error.hpp"
+#include "python/py_progress.hpp"
+#include "python/result_tables.hpp"
+
+namespace py = pybind11;
+
+namespace magfem::python {
+namespace {
+
+template <typename Vec> py::array_t<double> rows_of(const std::vector<Vec>& v, int dim) {
+  py::array_t<double> out({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(dim)});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int k = 0; k < dim; ++k)
+      a(i, k) = v[i][k];
+  return out;
+}
+
+template <std::size_t N> py::array_t<int> rows_of(const std::vector<std::array<int, N>>& v) {
+  py::array_t<int> out({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(N)});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t k = 0; k < N; ++k)
+      a(i, k) = v[i][k];
+  return out;
+}
+
+std::unique_ptr<Solution> solve_case(const std::string& path, const std::string& text,
+                                     const std::string& name,
+                                     const std::map<std::string, double>& parameters, int order,
+                                     double mesh_scale, py::object progress) {
+  // Checked as the command line checks --order and --mesh-scale (0 would mean "as in the
+  // case" to RunOverrides, so it is refused rather than passed on).
+  if (order != 0 && order != 1 && order != 2)
+    throw InputError("<solve>", 0, "order", "must be 1 or 2");
+  if (!(mesh_scale > 0) || !std::isfinite(mesh_scale))
+    throw InputError("<solve>", 0, "mesh_scale", "must be a positive number");
+  CaseSpec spec =
+      path.empty() ? read_case_text(text, name, parameters) : read_case(path, parameters);
+  PyProgress reporter(std::move(progress));
+  RunOverrides overrides;
+  overrides.order = order;
+  overrides.mesh_scale = mesh_scale;
+  overrides.progress = &reporter;
+  std::unique_ptr<Solution> solution;
+  {
+    // Minutes on a large case: other Python threads run meanwhile, and PyProgress takes the
+    // GIL back for a moment at each report to look for Ctrl-C.
+    const py::gil_scoped_release release;
+    if (spec.dimension == 3)
+      solution = std::make_unique<Solution>(run_case_3d(std::move(spec), overrides));
+    else
+      solution = std::make_unique<Solution>(run_case_2d(std::move(spec), overrides));
+    reporter.rethrow_pending();
+  }
+  return solution;
+}
+
+} // namespace
+
+Solution::Solution(std::unique_ptr<Run2D> run) : run2d_(std::move(run)) {}
+Solution::Solution(std::unique_ptr<Run3D> run) : run3d_(std::move(run)) {}
+
+std::string Solution::dimension() const {
+  if (run3d_)
+    return "3d";
+  return run2d_->spec.axisymmetric() ? "axi" : "2d";
+}
+
+double Solution::energy_J() const {
+  if (run3d_)
+    return run3d_->energy.total_J;
+  const double length = run2d_->spec.stack_length > 0 ? run2d_->spec.stack_length : 1.0;
+  return run2d_->energy.total_J_per_m * length;
+}
+
+std::string Solution::forces_json() const {
+  return magfem::forces_json(run3d_ ? run3d_->forces : run2d_->forces).dump();
+}
+
+std::string Solution::coils_json() const {
+  if (run3d_)
+    return coil_results_json(run3d_->coil_results).dump();
+  // The keys of summary.json's "coils" in 2D (app/run2d.cpp).
+  auto j = nlohmann::ordered_json::array();
+  for (const auto& c : run2d_->coils)
+    j.push_back({{"name", c.name},
+                 {"turns", c.turns},
+                 {"current_A", c.current_A},
+                 {"flux_linkage_Wb", c.flux_linkage_Wb},
+                 {"inductance_H", c.inductance_H}});
+  return j.dump();
+}
+
+py::object Solution::inductance_H() const {
+  if (!run3d_ || run3d_->coil_results.inductance_H.size() == 0)
+    return py::none();
+  const Eigen::MatrixXd& l = run3d_->coil_results.inductance_H;
+  py::array_t<double> out({static_cast<py::ssize_t>(l.rows()), static_cast<py::ssize_t>(l.cols())});
+  auto a = out.mutable_unchecked<2>();
+  for (Eigen::Index i = 0; i < l.rows(); ++i)
+    for (Eigen::Index k = 0; k < l.cols(); ++k)
+      a(i, k) = l(i, k);
+  return out;
+}
+
+py::dict Solution::probes() const {
+  return probes_dict(run3d_ ? run3d_->probes : run2d_->probes);
+}
+
+Eigen::Vector3d Solution::field_2d(const Eigen::Vector3d& x, bool want_H) const {
+  const bool axi = run2d_->spec.axisymmetric();
+  // Axisymmetric: the r-z half plane the mesh lives in, then Br back along (x, y) / r.
+  const double r = std::hypot(x.x(), x.y());
+  const Eigen::Vector2d q = axi ? Eigen::Vector2d(r, x.z()) : Eigen::Vector2d(x.x(), x.y());
+  const auto loc = locator2d_->locate(q);
+  if (!loc)
+    return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const Field2D& field = *run2d_->field;
+  const Eigen::Vector2d b = field.B(loc->triangle, loc->bary);
+  const Eigen::Vector2d v = want_H ? field.H(loc->triangle, q, b) : b;
+  if (!axi)
+    return {v.x(), v.y(), 0.0};
+  // On the axis the radial component vanishes by symmetry: any direction will do.
+  const double cx = r > 0 ? x.x() / r : 1.0, cy = r > 0 ? x.y() / r : 0.0;
+  return {v.x() * cx, v.x() * cy, v.y()};
+}
+
+Eigen::Vector3d Solution::field_3d(const Eigen::Vector3d& x, bool want_H) const {
+  const auto loc = locator3d_->locate(x);
+  if (!loc)
+    return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  // B as the probes read it (the recovered B of the point's region, probes3d.hpp); H has no
+  // recovered counterpart, so it is the element's own.
+  return want_H ? run3d_->field->H(loc->tet, loc->bary)
+                : run3d_->recovered_B.at(loc->tet, loc->bary);
+}
+
+py::array_t<double> Solution::field_at(const py::array_t<double>& points_m, bool want_H) {
+  if (points_m.ndim() != 2 || points_m.shape(1) != 3)
+    throw py::value_error("points must be an N x 3 array");
+  if (run3d_ && !locator3d_)
+    locator3d_ = std::make_unique<PointLocator3D>(run3d_->mesh);
+  if (run2d_ && !locator2d_)
+    locator2d_ = std::make_unique<PointLocator2D>(run2d_->mesh);
+  const auto n = points_m.shape(0);
+  py::array_t<double> out({n, static_cast<py::ssize_t>(3)});
+  const auto in = points_m.unchecked<2>();
+  auto a = out.mutable_unchecked<2>();
+  {
+    const py::gil_scoped_release release; // a plot's 10^5 points take a while
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d x(in(i, 0), in(i, 1), in(i, 2));
+      const Eigen::Vector3d v = run3d_ ? field_3d(x, want_H) : field_2d(x, want_H);
+      for (int k = 0; k < 3; ++k)
+        a(i, k) = v[k];
+    }
+  }
+  return out;
+}
+
+py::dict Solution::mesh() const {
+  py::dict out;
+  py::list names;
+  for (const auto& r : run3d_ ? run3d_->spec.regions : run2d_->spec.regions)
+    names.append(r.name);
+  out["region_names"] = names;
+  if (run3d_) {
+    out["nodes"] = rows_of(run3d_->mesh.nodes, 3);
+    out["elements"] = rows_of(run3d_->mesh.tets);
+    out["regions"] = py::array_t<int>(static_cast<py::ssize_t>(run3d_->mesh.tet_part.size()),
+                                      run3d_->mesh.tet_part.data());
+  } else {
+    out["nodes"] = rows_of(run2d_->mesh.nodes, 2);
+    out["elements"] = rows_of(run2d_->mesh.triangles);
+    out["regions"] = py::array_t<int>(static_cast<py::ssize_t>(run2d_->mesh.triangle_part.size()),
+                                      run2d_->mesh.triangle_part.data());
+  }
+  return out;
+}
+
+std::vector<std::string> Solution::write(const std::string& dir) const {
+  const py::gil_scoped_release release; // the VTU of a 3D mesh takes seconds
+  const std::lock_guard lock(output_mutex_);
+  return run3d_ ? write_outputs_3d(*run3d_, dir) : write_outputs_2d(*run2d_, dir);
+}
+
+std::string Solution::summary_json() {
+  const std::lock_guard lock(output_mutex_);
+  if (run3d_)
+    return summary_via_outputs(*run3d_, write_outputs_3d);
+  return summary_via_outputs(*run2d_, write_outputs_2d);
+}
+
+void bind_solution(py::module_& m) {
+  py::class_<Solution>(m, "Solution", "A solved case (use magfem.Case.solve).")
+      .def_property_readonly("dimension", &Solution::dimension)
+      .def_property_readonly("energy_J", &Solution::energy_J)
+      .def("forces_json", &Solution::forces_json)
+      .def("coils_json", &Solution::coils_json)
+      .def("inductance_H", &Solution::inductance_H)
+      .def("probes", &Solution::probes)
+      .def("field_at", &Solution::field_at, py::arg("points_m"), py::arg("want_H"))
+      .def("mesh", &Solution::mesh)
+      .def("write", &Solution::write, py::arg("dir"))
+      .def("summary_json", &Solution::summary_json);
+  m.def("solve", &solve_case, py::arg("path"), py::arg("text"), py::arg("name"),
+        py::arg("parameters"), py::arg("order"), py::arg("mesh_scale"), py::arg("progress"),
+        "Reads a case (file `path`, else YAML `text` named `name`) and solves it in-process.");
+}
+
+} // namespace magfem::python
