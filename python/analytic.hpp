@@ -10,7 +10,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "app/run_analytic.hpp"
+#include "pipeline/run_analytic.hpp"
 
 namespace magfem::python {
 

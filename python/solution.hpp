@@ -10,8 +10,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include "app/run2d.hpp"
-#include "app/run3d.hpp"
+#include "pipeline/run2d.hpp"
+#include "pipeline/run3d.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/point_locator3d.hpp"
 
