@@ -10,12 +10,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/run3d.hpp"
-#include "pipeline/section_results.hpp"
 #include "case_helpers.hpp"
 #include "core/constants.hpp"
 #include "core/gauss_legendre.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
+#include "pipeline/section_results.hpp"
 #include "sources/loop_field.hpp"
 
 using namespace magfem;
@@ -139,4 +140,15 @@ sections:
               flux, exact, flux / exact - 1, mu0 * turns * current / len * pi * rho * rho,
               run->mesh.n_tets());
   EXPECT_NEAR(flux, exact, 5e-4 * exact);
+}
+
+// `magfem analytic` computes fields at points only: each section is named in the notes
+// (console and summary.json) instead of being dropped without a word.
+TEST(SectionResults, AnalyticRunNamesEverySectionItDoesNotCompute) {
+  const auto run = run_case_analytic(
+      read_case(test::write_temp_case("sections_analytic.yaml", sphere_case)), {});
+  int named = 0;
+  for (const auto& note : run->scene.notes)
+    named += note.find("section inside:") == 0 || note.find("section equator:") == 0;
+  EXPECT_EQ(named, 2);
 }
