@@ -13,7 +13,7 @@ struct CommandHelp {
   const char* details;  // options and outputs
 };
 
-constexpr std::array<CommandHelp, 9> commands{{
+constexpr std::array<CommandHelp, 10> commands{{
     {"solve",
      "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--max-memory GB]\n"
      "                    [--param NAME=VALUE ...] [--quiet]",
@@ -45,6 +45,21 @@ constexpr std::array<CommandHelp, 9> commands{{
      "  --tolerance T             relative cubature tolerance of the charge model\n"
      "  --n-max N                 harmonic degree of the harmonic model\n"
      "  --param NAME=VALUE        set one of the case file's `parameters:` (repeatable)\n"},
+    {"mesh",
+     "magfem mesh CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--plane x|y|z]\n"
+     "                    [--param NAME=VALUE ...]",
+     "the mesh a solve would use, to look at before solving",
+     "  Meshes the case exactly as `magfem solve` would (same sizes, --mesh-scale, memory\n"
+     "  guard) and stops. Prints per region its elements, area (planar) or volume and the\n"
+     "  shortest and longest element edge; writes into DIR (default out/<case>_mesh):\n"
+     "  summary.json (elements, nodes, unknowns at the order, regions, mesh quality, the\n"
+     "  mesher's warnings), mesh.vtu (region_id per cell, for ParaView) and mesh.png (2D:\n"
+     "  the mesh coloured by region; 3D: its cut by the plane through the origin normal to\n"
+     "  --plane, default y, i.e. the xz plane). The open boundary's shell is left out.\n"
+     "  --order 1|2       the order whose unknowns are counted\n"
+     "  --mesh-scale S    multiply every mesh size by S, as in solve\n"
+     "  --plane x|y|z     3D: the cut mesh.png shows\n"
+     "  --param NAME=VALUE  set one of the case file's `parameters:` (repeatable)\n"},
     {"compare", "magfem compare REFERENCE.csv TEST.csv", "compare two probe CSVs",
      "  Per field component: the rms discrepancy of thesis eq. 3.117 and the pointwise rms\n"
      "  error, in % of the reference (n/a where the reference component is zero), and the\n"

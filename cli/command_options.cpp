@@ -6,6 +6,7 @@
 #include "casefile/cli_number.hpp"
 #include "cli/command_help.hpp"
 #include "cli/materials_command.hpp"
+#include "cli/mesh_command.hpp"
 #include "studies/actuator.hpp"
 #include "studies/optimize.hpp"
 #include "studies/study.hpp"
@@ -149,6 +150,8 @@ std::vector<OptionInfo> command_options(const std::string& command) {
     return actuator_option_infos();
   if (command == "validate")
     return validate_option_infos();
+  if (command == "mesh")
+    return mesh_option_infos();
   if (command == "materials")
     return materials_option_table().options();
   return {};

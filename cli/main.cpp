@@ -17,6 +17,7 @@
 #include "cli/command_help.hpp"
 #include "cli/command_options.hpp"
 #include "cli/materials_command.hpp"
+#include "cli/mesh_command.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
@@ -384,6 +385,8 @@ int main(int argc, char** argv) {
       return *code;
     if (argc >= 2 && std::strcmp(argv[1], "materials") == 0)
       return magfem::run_materials_command(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc >= 2 && std::strcmp(argv[1], "mesh") == 0)
+      return magfem::run_mesh_command(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
       return magfem::run_validate(
           magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));

@@ -6,15 +6,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/output_stage.hpp"
+#include "materials/material_library.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesher2d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/force2d.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/solver_summary.hpp"
-#include "core/output_stage.hpp"
-#include "materials/material_library.hpp"
-#include "mesh/mesh_error.hpp"
-#include "mesh/mesher2d.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probes2d.hpp"
@@ -112,15 +112,28 @@ void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e) {
                    e.reason);
 }
 
-std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
-  const auto t_start = Clock::now();
-  auto run = std::make_unique<Run2D>();
+namespace {
+
+void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
   if (ov.order)
     spec.order = ov.order;
   if (ov.mesh_scale > 0)
     spec.geometry2d.options.size_scale *= ov.mesh_scale;
   if (ov.domain_radius > 0)
     spec.geometry2d.outer.radius = ov.domain_radius;
+}
+
+} // namespace
+
+Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides) {
+  apply_overrides(spec, overrides);
+  return mesh_case(spec);
+}
+
+std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
+  const auto t_start = Clock::now();
+  auto run = std::make_unique<Run2D>();
+  apply_overrides(spec, ov);
   run->spec = std::move(spec);
   run->spec.newton.linear.progress = ov.progress;
   // A planar or axisymmetric factor stays affordable up to the direct limit (nested

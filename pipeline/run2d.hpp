@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/force_results.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/progress.hpp"
 #include "mesh/mesh2d.hpp"
 #include "mesh/mesh_error.hpp"
+#include "pipeline/force_results.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/field2d.hpp"
 #include "postproc/probe_table.hpp"
@@ -64,6 +64,9 @@ struct Run2D {
 
 // A mesher error (bad part) as the InputError naming the case file's region and field.
 [[noreturn]] void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e);
+
+// The mesh run_case_2d would solve on (the overrides applied to spec): `magfem mesh`.
+Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides);
 
 // Meshes and solves; throws InputError (bad case), SolveError (no convergence).
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});

@@ -10,6 +10,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/constants.hpp"
+#include "core/output_stage.hpp"
+#include "materials/material_library.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/mesh_fingerprint3d.hpp"
+#include "mesh/mesher3d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
@@ -17,12 +23,6 @@
 #include "pipeline/result_checks.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
-#include "core/constants.hpp"
-#include "core/output_stage.hpp"
-#include "materials/material_library.hpp"
-#include "mesh/mesh_error.hpp"
-#include "mesh/mesh_fingerprint3d.hpp"
-#include "mesh/mesher3d.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
 #include "postproc/vtu_export3d.hpp"
@@ -136,6 +136,11 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
 }
 
 } // namespace
+
+Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3D& estimate) {
+  apply_overrides(spec, overrides);
+  return mesh_case(spec, overrides, estimate);
+}
 
 void check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
   apply_overrides(spec, ov);

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/coil_run3d.hpp"
-#include "pipeline/run2d.hpp"
 #include "mesh/mesh3d.hpp"
 #include "mesh/mesh_estimate3d.hpp"
+#include "pipeline/coil_run3d.hpp"
+#include "pipeline/run2d.hpp"
 #include "postproc/energy3d.hpp"
 #include "postproc/field3d.hpp"
 #include "postproc/recovered_b3d.hpp"
@@ -56,6 +56,9 @@ double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& overrides = {})
 // --mesh-scale that would fit when the case cannot be solved within the limit. A geometry
 // the mesher rejects throws its MeshError (run_case_3d would name the part).
 void check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
+// The mesh run_case_3d would solve on (the overrides applied to spec, the memory guard
+// included; straight-sided: order 2 curves the sphere edges later): `magfem mesh`.
+Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3D& estimate);
 std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
 std::string describe_run_3d(const Run3D& run);
 

@@ -7,13 +7,14 @@
 #include <Eigen/Dense>
 
 #include "core/constants.hpp"
+#include "postproc/tet_plane_cut.hpp"
 #include "solver/triangle_quadrature.hpp"
 
 namespace magfem {
 
 namespace {
 
-using Polygon = std::vector<Eigen::Vector2d>;
+using Polygon = TetPlaneCut;
 
 constexpr int disk_sides = 256; // see section_flux3d.hpp for the error this leaves
 
@@ -77,35 +78,6 @@ Polygon clip_to_outline(Polygon p, const std::vector<HalfPlane>& planes) {
   return p;
 }
 
-// The plane's cut through straight tet `x` as a convex polygon in (u, v), vertices in
-// counter-clockwise order; empty if the plane misses it. A vertex with d = 0 counts as on the
-// + side, so faces in the plane belong to the tet below only.
-Polygon cut_polygon(const std::array<Eigen::Vector3d, 4>& x, const PlaneFrame& f) {
-  std::array<double, 4> d;
-  int above = 0;
-  for (int i = 0; i < 4; ++i) {
-    d[i] = (x[i] - f.center).dot(f.n);
-    above += d[i] >= 0;
-  }
-  if (above == 0 || above == 4)
-    return {};
-  Polygon p;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if ((d[i] >= 0) != (d[j] >= 0)) {
-        const Eigen::Vector3d y = x[i] + d[i] / (d[i] - d[j]) * (x[j] - x[i]) - f.center;
-        p.emplace_back(y.dot(f.u), y.dot(f.v));
-      }
-  Eigen::Vector2d mid = Eigen::Vector2d::Zero();
-  for (const auto& y : p)
-    mid += y / static_cast<double>(p.size());
-  std::sort(p.begin(), p.end(), [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return std::atan2(a.y() - mid.y(), a.x() - mid.x()) <
-           std::atan2(b.y() - mid.y(), b.x() - mid.x());
-  });
-  return p;
-}
-
 void add(SectionPart& to, const SectionPart& from) {
   to.area_m2 += from.area_m2;
   to.flux_Wb += from.flux_Wb;
@@ -150,7 +122,7 @@ SectionFlux integrate_section_3d(const Field3D& field, const SectionSpec& sectio
     std::array<Eigen::Vector3d, 4> x;
     for (int i = 0; i < 4; ++i)
       x[i] = mesh.nodes[mesh.tets[t][i]];
-    const Polygon cut = cut_polygon(x, section.frame);
+    const Polygon cut = cut_tet_by_plane(x, section.frame);
     if (cut.size() < 3)
       continue;
     const Polygon p = clip_to_outline(cut, planes);

@@ -6,7 +6,7 @@ _magfem() {
   cur="${COMP_WORDS[COMP_CWORD]}"
   prev="${COMP_WORDS[COMP_CWORD-1]}"
   command="${COMP_WORDS[1]}"
-  local commands="solve analytic compare sweep study optimize actuator materials validate help"
+  local commands="solve mesh analytic compare sweep study optimize actuator materials validate help"
 
   if ((COMP_CWORD == 1)); then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
@@ -16,7 +16,7 @@ _magfem() {
     --out) COMPREPLY=($(compgen -d -- "$cur")); return ;;
     --order) COMPREPLY=($(compgen -W "1 2" -- "$cur")); return ;;
     --model) COMPREPLY=($(compgen -W "charge harmonic" -- "$cur")); return ;;
-    --axis) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
+    --axis | --plane) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
     --mesh-scale | --max-memory | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
       --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature | --coil-pitch | --constraint) return ;;
@@ -29,6 +29,7 @@ _magfem() {
   local options
   case "$command" in
     solve) options="--out --order --mesh-scale --max-memory --param --quiet --help" ;;
+    mesh) options="--out --order --mesh-scale --plane --param --help" ;;
     analytic) options="--out --model --tolerance --n-max --param --help" ;;
     compare) options="--help" ;;
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --quiet --help" ;;
@@ -45,7 +46,7 @@ _magfem() {
   fi
   case "$command" in
     compare) COMPREPLY=($(compgen -f -X '!*.csv' -- "$cur") $(compgen -d -- "$cur")) ;;
-    solve | analytic | sweep | study | optimize | actuator) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
+    solve | mesh | analytic | sweep | study | optimize | actuator) COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")) ;;
   esac
 }
 complete -o filenames -F _magfem magfem
