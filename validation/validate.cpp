@@ -11,12 +11,12 @@
 #include <sstream>
 #include <thread>
 
+#include "core/input_error.hpp"
+#include "core/output_stage.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/run_checkpoint.hpp"
 #include "validation/validate_checkpoint.hpp"
 #include "validation/validate_report.hpp"
-#include "core/input_error.hpp"
-#include "core/output_stage.hpp"
 
 namespace magfem {
 
@@ -187,6 +187,7 @@ int run_validate(const ValidateOptions& options) {
   run.options = options;
   run.catalogue_file = options.catalogue.empty() ? default_catalogue() : options.catalogue;
   const Catalogue catalogue = read_catalogue(run.catalogue_file);
+  run.sources = catalogue.sources;
   const auto selected = select(catalogue, options);
 
   run.results.resize(selected.size());

@@ -1,0 +1,132 @@
+#include "validation/report_plot.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "studies/gnuplot.hpp"
+
+namespace magfem {
+
+namespace {
+
+// The y range when the data alone would give gnuplot a degenerate one: a flat curve (all
+// values equal to round-off) would otherwise get ticks in its last digits (12.981, 12.982).
+// Returns "" when gnuplot's autoscale is fine.
+std::string flat_range(const Plot& plot) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const auto& s : plot.series)
+    for (double y : s.y)
+      if (std::isfinite(y))
+        lo = std::min(lo, y), hi = std::max(hi, y);
+  if (!(hi >= lo))
+    return "";
+  const double mag = std::max(std::abs(lo), std::abs(hi));
+  if (hi - lo > 1e-3 * mag)
+    return "";
+  const double half = mag > 0 ? 0.1 * mag : 1.0;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "set yrange [%.17g:%.17g]\n", (lo + hi) / 2 - half,
+                (lo + hi) / 2 + half);
+  return buf;
+}
+
+std::string datablock(const PlotSeries& s, std::size_t k) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "$d" << k << " << EOD\n";
+  for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+      d << s.x[i] << ' ' << s.y[i] << '\n';
+  return d.str() + "EOD\n";
+}
+
+std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Prefixes ids and the references to them, in both quote styles gnuplot writes.
+std::string prefix_ids(std::string svg, const std::string& prefix) {
+  for (const std::string key : {"id='", "id=\"", "href='#", "href=\"#", "url(#"}) {
+    for (auto p = svg.find(key); p != std::string::npos; p = svg.find(key, p + key.size()))
+      svg.insert(p + key.size(), prefix);
+  }
+  return svg;
+}
+
+std::filesystem::path scratch_dir() {
+  static std::atomic<int> counter{0};
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("magfem_plot_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+} // namespace
+
+std::string plot_script(const Plot& plot, const std::string& svg_file) {
+  static const std::array<const char*, 6> colours = {"#1f77b4", "#d62728", "#2ca02c",
+                                                     "#9467bd", "#ff7f0e", "#8c564b"};
+  std::ostringstream g;
+  // noenhanced: labels such as T_y and B_rho are names, not subscripts.
+  g << "set terminal svg size " << report_plot_width << "," << report_plot_height
+    << " font 'sans-serif,12' background rgb 'white' noenhanced\n"
+    << "set output '" << svg_file << "'\n"
+    << "set xlabel \"" << gnuplot_title(plot.x_label) << "\"\n"
+    << "set ylabel \"" << gnuplot_title(plot.y_label)
+    << "\"\n"
+    // %g prints a round tick as written (0.5, 20, 1e-05), never 0.50000001.
+    << "set format x '%g'\nset format y '%g'\n"
+    << "set grid lc rgb '#dddddd'\nset border lc rgb '#444444'\n"
+    // Below the axes, inside the image: long series names cannot cover a curve or be cut.
+    << "set key below left Left reverse samplen 2\n"
+    // x spans the data (a margin, no extension to the next tick: theta 0..90 is not drawn
+    // from -10 to 100); y gets 5 % room and ends on ticks.
+    << "set autoscale xfix\nset offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n"
+    << flat_range(plot);
+  for (std::size_t k = 0; k < plot.series.size(); ++k)
+    g << datablock(plot.series[k], k);
+  g << "plot ";
+  for (std::size_t k = 0; k < plot.series.size(); ++k) {
+    const PlotSeries& s = plot.series[k];
+    g << (k ? ", \\\n     " : "") << "$d" << k << " using 1:2 "
+      << (s.points_only ? "with points pt 6 ps 1.2 lw 2" : "with lines lw 2") << " lc rgb '"
+      << colours[k % colours.size()] << "' title \"" << gnuplot_title(s.name) << "\"";
+  }
+  return g.str() + "\n";
+}
+
+std::string plot_svg(const Plot& plot, const std::string& id_prefix, std::string& why) {
+  if (plot.series.empty()) {
+    why = "no data";
+    return "";
+  }
+  const auto dir = scratch_dir();
+  const auto svg_file = dir / "plot.svg";
+  const auto script = dir / "plot.gp";
+  std::ofstream(script) << plot_script(plot, svg_file.string());
+  std::string svg;
+  if (run_gnuplot(script, {}, why))
+    svg = read_file(svg_file);
+  std::error_code ignored; // a scratch folder left behind is not worth failing the report for
+  std::filesystem::remove_all(dir, ignored);
+  const auto start = svg.find("<svg");
+  if (start == std::string::npos) {
+    if (why.empty())
+      why = "gnuplot wrote no SVG";
+    return "";
+  }
+  return prefix_ids(svg.substr(start), id_prefix);
+}
+
+} // namespace magfem
