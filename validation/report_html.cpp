@@ -33,11 +33,12 @@ const char* const page_style =
     "table.entries tr.group th{background:#eef2f7;padding-top:8px}"
     "td.n{font-variant-numeric:tabular-nums}"
     "section.entry{border-top:1px solid #ccc;margin-top:1.2em}"
-    "section.entry h3{margin:.6em 0 .3em}"
+    "section.entry h3{margin:.6em 0 0}p.id{margin:0 0 .3em}"
     "dl{display:grid;grid-template-columns:7.5em minmax(0,1fr);gap:.2em .8em;margin:.4em 0}"
     "dt{font-weight:600;color:#555}dd{margin:0}"
     ".side-by-side{display:grid;grid-template-columns:minmax(0,1fr) 600px;gap:1.2em}"
     "@media (max-width:1100px){.side-by-side{grid-template-columns:minmax(0,1fr)}}"
+    ".figures{display:grid;grid-template-columns:repeat(auto-fit,minmax(420px,1fr));gap:1em}"
     "figure{margin:.4em 0 .8em}figcaption{font-weight:600;margin-bottom:.2em}"
     "figure svg{max-width:100%;height:auto;display:block}"
     "pre{font-size:12px;overflow-x:auto;background:#f7f7f7;padding:.5em}"
@@ -239,22 +240,23 @@ std::string tolerance_text(const CatalogueEntry& e, const PageText& text) {
          ": " + text(readable_reason(e.tolerance_reason, e.section));
 }
 
+// "published 12 N m; analytic 12.365 N m (error 3 %)": one line for what is compared.
 std::string values_text(const EntryResult& r) {
   const CatalogueEntry& e = *r.entry;
-  auto one = [&](const char* what, std::optional<double> v, std::optional<double> err) {
+  std::string s = e.published ? "published " + with_unit(round_text(*e.published, 6), e.unit) : "";
+  auto add = [&](const char* what, std::optional<double> v, std::optional<double> err) {
     if (!v)
-      return std::string(what) + " not computed";
-    return std::string(what) + " " + with_unit(round_text(*v, 5), e.unit) +
-           (err && e.check == CatalogueEntry::Check::relative
-                ? " (error " + round_text(*err, 2) + " %)"
-                : "");
+      return;
+    s += (s.empty() ? "" : "; ") + std::string(what) + " " + with_unit(round_text(*v, 5), e.unit);
+    if (err && e.check == CatalogueEntry::Check::relative)
+      s += " (error " + round_text(*err, 2) + " %)";
   };
-  std::string s = one("FE", r.fe, r.fe_error_pct) + "; " +
-                  one("analytic", r.analytic, r.analytic_error_pct) + ".";
+  add("FE", r.fe, r.fe_error_pct);
+  add("analytic", r.analytic, r.analytic_error_pct);
   if (r.discretisation_pct)
-    s += " Discretisation estimate (change from the next coarser mesh): " +
+    s += "; discretisation estimate (change from the next coarser mesh) " +
          round_text(*r.discretisation_pct, 2) +
-         (e.check == CatalogueEntry::Check::at_most ? " points." : " %.");
+         (e.check == CatalogueEntry::Check::at_most ? " points" : " %");
   return s;
 }
 
@@ -264,12 +266,11 @@ std::string entry_facts(const EntryResult& r, const ValidationRun& run, const Pa
                   html_escape(e.section) + "</dd>\n";
   if (!e.paper.empty())
     h += "<dt>The paper</dt><dd>" + text(e.paper) + "</dd>\n";
-  if (e.published)
-    h += "<dt>Published</dt><dd>" + with_unit(round_text(*e.published, 6), e.unit) + "</dd>\n";
-  if (r.status != "skipped") {
-    h += "<dt>magfem</dt><dd>" + values_text(r) + "</dd>\n";
+  const std::string values = values_text(r);
+  if (!values.empty())
+    h += "<dt>Values</dt><dd>" + values + "</dd>\n";
+  if (r.status != "skipped")
     h += "<dt>Tolerance</dt><dd>" + tolerance_text(e, text) + "</dd>\n";
-  }
   if (!r.eval.method.empty())
     h += "<dt>Method</dt><dd>" + text(r.eval.method) + "</dd>\n";
   if (!e.case_file.empty())
@@ -279,7 +280,7 @@ std::string entry_facts(const EntryResult& r, const ValidationRun& run, const Pa
   if (!r.note.empty())
     h += std::string("<dt>") + (r.status == "skipped" ? "Skipped" : "Note") + "</dt><dd>" +
          text(r.note) + "</dd>\n";
-  return h + "<dt>Entry</dt><dd><code>" + html_escape(e.id) + "</code></dd>\n</dl>\n";
+  return h + "</dl>\n";
 }
 
 // A plot's identity, so that entries sharing one figure's curve draw it once.
@@ -314,8 +315,9 @@ struct PlotDrawer {
   }
 };
 
-// The facts and run details on the left, the plots beside them on a wide window (below on
-// a narrow one): the page stays short without shrinking a plot.
+// One plot sits beside the facts on a wide window (below them on a narrow one), so that the
+// page stays short without shrinking it; two or more go in a row below the facts instead of
+// a tall column beside a short text.
 std::string entry_section(const EntryResult& r, const ValidationRun& run, const PageText& text,
                           PlotDrawer& plots) {
   const CatalogueEntry& e = *r.entry;
@@ -327,12 +329,18 @@ std::string entry_section(const EntryResult& r, const ValidationRun& run, const 
   std::string figures;
   for (const auto& p : r.eval.plots)
     figures += plots.figure(p, e.id, text);
-  const std::string body = figures.empty() ? facts
-                                           : "<div class=side-by-side><div>" + facts +
-                                                 "</div><div>" + figures + "</div></div>\n";
+  std::size_t n_figures = 0;
+  for (auto p = figures.find("<figure>"); p != std::string::npos;
+       p = figures.find("<figure>", p + 1))
+    ++n_figures;
+  std::string body = facts;
+  if (n_figures == 1 || (n_figures == 0 && !figures.empty()))
+    body = "<div class=side-by-side><div>" + facts + "</div><div>" + figures + "</div></div>\n";
+  else if (n_figures > 1)
+    body = facts + "<div class=figures>" + figures + "</div>\n";
   return "<section class=entry id=\"" + html_escape(e.id) + "\">\n<h3>" + status_badge(r.status) +
-         " " + text(e.quantity) + " <a class=muted href=\"#table\">&uarr; table</a></h3>\n" + body +
-         "</section>\n";
+         " " + text(e.quantity) + "</h3>\n<p class=\"muted id\"><code>" + html_escape(e.id) +
+         "</code> &middot; <a href=\"#table\">back to the table</a></p>\n" + body + "</section>\n";
 }
 
 std::string project_root(const std::string& catalogue_file) {

@@ -17,8 +17,14 @@ namespace magfem {
 
 namespace {
 
+// Values this small are round-off of a quantity that is zero (a force that vanishes by
+// symmetry comes out as 1e-13 N): drawn on their own, their noise would fill the axes and
+// read as a curve. The plotted quantities are SI or percent, where 1e-9 is never a value.
+constexpr double round_off_level = 1e-9;
+
 // The y range when the data alone would give gnuplot a degenerate one: a flat curve (all
-// values equal to round-off) would otherwise get ticks in its last digits (12.981, 12.982).
+// values equal to round-off) would otherwise get ticks in its last digits (12.981, 12.982),
+// and one of round-off alone ticks of 5e-14.
 // Returns "" when gnuplot's autoscale is fine.
 std::string flat_range(const Plot& plot) {
   double lo = INFINITY, hi = -INFINITY;
@@ -29,6 +35,9 @@ std::string flat_range(const Plot& plot) {
   if (!(hi >= lo))
     return "";
   const double mag = std::max(std::abs(lo), std::abs(hi));
+  if (mag < round_off_level)
+    return "set yrange [-1:1]\nset label 1 'all values below 1e-9: zero to round-off' at graph "
+           "0.5, 0.9 center\n";
   if (hi - lo > 1e-3 * mag)
     return "";
   const double half = mag > 0 ? 0.1 * mag : 1.0;

@@ -50,6 +50,14 @@ Plot awkward_plot() {
   return p;
 }
 
+// A force that vanishes by symmetry, computed as round-off.
+Plot round_off_plot() {
+  return {"Axial force",
+          "theta (deg)",
+          "F_z (N)",
+          {{"charge model F_z", {0, 90, 180}, {2.4e-14, -1e-14, 1.8e-13}, false}}};
+}
+
 Plot flat_plot() {
   return {"A constant", "x", "y", {{"flat", {0, 1, 2}, {9.583, 9.583, 9.583}, false}}};
 }
@@ -78,7 +86,7 @@ struct FakeRun {
       if (r.status == "pass" && failed.empty()) {
         r.status = "fail";
         r.note = "error: cannot read " + source_dir + "/examples/3d/compensator_table42.yaml";
-        r.eval.plots = {awkward_plot(), flat_plot()};
+        r.eval.plots = {awkward_plot(), flat_plot(), round_off_plot()};
         failed.push_back(e.id);
       }
       if (r.status == "finding")
@@ -226,7 +234,7 @@ TEST(ValidateReport, PlotsHaveRoundTicksAndLegendsInsideTheImage) {
     GTEST_SKIP() << why;
   const std::string html = validation_html(FakeRun().run);
   const auto plots = svgs(html);
-  ASSERT_EQ(plots.size(), 2u);
+  ASSERT_EQ(plots.size(), 3u);
   for (const auto& svg : plots) {
     expect_round_ticks(svg);
     expect_text_inside(svg);
@@ -235,6 +243,13 @@ TEST(ValidateReport, PlotsHaveRoundTicksAndLegendsInsideTheImage) {
       << "legend text";
   EXPECT_NE(plots[0].find("id=\"p0_"), std::string::npos) << "ids prefixed per plot";
   EXPECT_NE(plots[1].find("id=\"p1_"), std::string::npos);
+  for (const auto& t : svg_texts(plots[2])) {
+    if (!is_number(t))
+      continue;
+    EXPECT_TRUE(std::stod(t) == 0 || std::abs(std::stod(t)) >= 0.1)
+        << "round-off drawn as data: tick " << t;
+  }
+  EXPECT_NE(plots[2].find("zero to round-off"), std::string::npos);
 }
 
 // One real entry through the binary: its case file shows relative to the project.
