@@ -29,7 +29,14 @@ const char* const page_style =
     ".skipped{background:#e6e6e6}"
     "table.entries{border-collapse:collapse;width:100%;table-layout:fixed;font-size:13px}"
     "table.entries td,table.entries th{border-bottom:1px solid #ddd;padding:3px 6px;"
-    "white-space:nowrap;overflow:hidden;text-overflow:ellipsis;text-align:left}"
+    "white-space:nowrap;overflow:hidden;text-overflow:ellipsis;text-align:left;"
+    "vertical-align:top}"
+    // Figure and quantity may take two lines: one line cut the words that tell apart the
+    // entries of one table (B_rho / B_theta / B_phi at the end of a long description).
+    "table.entries td.wrap{white-space:normal}"
+    "td.wrap>div{display:-webkit-box;-webkit-line-clamp:2;-webkit-box-orient:vertical;"
+    "overflow:hidden}"
+    ".counts .zero{background:#f2f2f2;color:#777}"
     "table.entries tr.group th{background:#eef2f7;padding-top:8px}"
     "td.n{font-variant-numeric:tabular-nums}"
     "section.entry{border-top:1px solid #ccc;margin-top:1.2em}"
@@ -133,16 +140,22 @@ std::string summary(const ValidationRun& run) {
     by_status[r.status].push_back(&r);
   auto n = [&](const char* s) { return by_status.count(s) ? by_status.at(s).size() : 0; };
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<p class=muted>magfem %s (commit %s), %s tier, %zu entries in %.0f s on %d "
-                "jobs.</p>\n<p class=counts><span class=pass>%zu pass</span><span class=fail>%zu "
-                "fail</span><span class=finding>%zu findings</span><span class=skipped>%zu "
-                "skipped</span></p>\n",
-                html_escape(magfem_version()).c_str(),
-                html_escape(magfem_git_commit().substr(0, 12)).c_str(),
-                to_string(run.options.tier).c_str(), run.results.size(), run.wall_seconds, run.jobs,
-                n("pass"), n("fail"), n("finding"), n("skipped"));
+  std::snprintf(
+      buf, sizeof buf,
+      "<p class=muted>magfem %s (commit %s), %s tier, %zu entries in %.0f s on %d "
+      "jobs.</p>\n",
+      html_escape(magfem_version()).c_str(), html_escape(magfem_git_commit().substr(0, 12)).c_str(),
+      to_string(run.options.tier).c_str(), run.results.size(), run.wall_seconds, run.jobs);
   std::string h = buf;
+  h += "<p class=counts>";
+  // A count of zero in grey: "0 fail" in red reads as a failure at a glance.
+  for (const auto& [status, label] : {std::pair{"pass", " pass"},
+                                      {"fail", " fail"},
+                                      {"finding", " findings"},
+                                      {"skipped", " skipped"}})
+    h += "<span class=" + std::string(n(status) ? status : "zero") + ">" +
+         std::to_string(n(status)) + label + "</span>";
+  h += "</p>\n";
   auto links = [&](const char* status, const char* heading) {
     if (!by_status.count(status))
       return;
@@ -189,10 +202,11 @@ std::string sources_list(const ValidationRun& run) {
 
 std::string table_row(const EntryResult& r) {
   const CatalogueEntry& e = *r.entry;
-  return "<tr><td>" + html_escape(e.section) + "</td><td title=\"" + html_escape(e.quantity) +
-         "\"><a href=\"#" + html_escape(e.id) + "\">" + html_escape(short_quantity(e.quantity)) +
-         "</a></td><td>" + status_badge(r.status) + "</td><td class=n>" + value_vs_reference(r) +
-         "</td><td class=n>" + error_vs_tolerance(r) + "</td></tr>\n";
+  return "<tr><td class=wrap><div>" + html_escape(e.section) +
+         "</div></td><td class=wrap title=\"" + html_escape(e.quantity) + "\"><div><a href=\"#" +
+         html_escape(e.id) + "\">" + html_escape(short_quantity(e.quantity, 120)) +
+         "</a></div></td><td>" + status_badge(r.status) + "</td><td class=n>" +
+         value_vs_reference(r) + "</td><td class=n>" + error_vs_tolerance(r) + "</td></tr>\n";
 }
 
 // The results grouped by source (sources in order of first appearance, entries in run order

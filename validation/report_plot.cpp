@@ -22,28 +22,35 @@ namespace {
 // read as a curve. The plotted quantities are SI or percent, where 1e-9 is never a value.
 constexpr double round_off_level = 1e-9;
 
-// The y range when the data alone would give gnuplot a degenerate one: a flat curve (all
-// values equal to round-off) would otherwise get ticks in its last digits (12.981, 12.982),
-// and one of round-off alone ticks of 5e-14.
+// The range of one axis when the data alone would make gnuplot print long tick labels. A
+// span of a few parts in a thousand of the values (a loss of 38.97..39.04 W) gets ticks in
+// their fourth and fifth digits (38.96, 38.97, ...); a span of at least 2 units of the
+// values' second digit keeps every tick at 3 significant digits, at the price of drawing such
+// a curve nearly flat, which is what a 0.2 % change is. Round-off alone is drawn as zero.
 // Returns "" when gnuplot's autoscale is fine.
-std::string flat_range(const Plot& plot) {
+std::string axis_range(const char* axis, const std::vector<const std::vector<double>*>& data) {
   double lo = INFINITY, hi = -INFINITY;
-  for (const auto& s : plot.series)
-    for (double y : s.y)
-      if (std::isfinite(y))
-        lo = std::min(lo, y), hi = std::max(hi, y);
+  for (const auto* values : data)
+    for (double v : *values)
+      if (std::isfinite(v))
+        lo = std::min(lo, v), hi = std::max(hi, v);
   if (!(hi >= lo))
     return "";
   const double mag = std::max(std::abs(lo), std::abs(hi));
-  if (mag < round_off_level)
-    return "set yrange [-1:1]\nset label 1 'all values below 1e-9: zero to round-off' at graph "
-           "0.5, 0.9 center\n";
-  if (hi - lo > 1e-3 * mag)
+  char buf[160];
+  if (mag < round_off_level) {
+    std::snprintf(buf, sizeof buf,
+                  "set %srange [-1:1]\nset label 1 'all values below 1e-9: zero to round-off' "
+                  "at graph 0.5, 0.9 center\n",
+                  axis);
+    return buf;
+  }
+  const double min_span = 2 * std::pow(10.0, std::floor(std::log10(mag)) - 1);
+  if (hi - lo >= min_span)
     return "";
-  const double half = mag > 0 ? 0.1 * mag : 1.0;
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "set yrange [%.17g:%.17g]\n", (lo + hi) / 2 - half,
-                (lo + hi) / 2 + half);
+  const double mid = (lo + hi) / 2;
+  std::snprintf(buf, sizeof buf, "set %srange [%.17g:%.17g]\n", axis, mid - min_span / 2,
+                mid + min_span / 2);
   return buf;
 }
 
@@ -86,6 +93,9 @@ std::filesystem::path scratch_dir() {
 std::string plot_script(const Plot& plot, const std::string& svg_file) {
   static const std::array<const char*, 6> colours = {"#1f77b4", "#d62728", "#2ca02c",
                                                      "#9467bd", "#ff7f0e", "#8c564b"};
+  std::vector<const std::vector<double>*> xs, ys;
+  for (const auto& s : plot.series)
+    xs.push_back(&s.x), ys.push_back(&s.y);
   std::ostringstream g;
   // noenhanced: labels such as T_y and B_rho are names, not subscripts.
   g << "set terminal svg size " << report_plot_width << "," << report_plot_height
@@ -102,7 +112,7 @@ std::string plot_script(const Plot& plot, const std::string& svg_file) {
     // x spans the data (a margin, no extension to the next tick: theta 0..90 is not drawn
     // from -10 to 100); y gets 5 % room and ends on ticks.
     << "set autoscale xfix\nset offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n"
-    << flat_range(plot);
+    << axis_range("x", xs) << axis_range("y", ys);
   for (std::size_t k = 0; k < plot.series.size(); ++k)
     g << datablock(plot.series[k], k);
   g << "plot ";

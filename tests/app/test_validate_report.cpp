@@ -58,8 +58,12 @@ Plot round_off_plot() {
           {{"charge model F_z", {0, 90, 180}, {2.4e-14, -1e-14, 1.8e-13}, false}}};
 }
 
-Plot flat_plot() {
-  return {"A constant", "x", "y", {{"flat", {0, 1, 2}, {9.583, 9.583, 9.583}, false}}};
+// Nearly flat curves: a constant, and a loss changing by 0.2 % over two pitches.
+Plot flat_plot(double a, double b) {
+  return {"Nearly flat",
+          "coil pitch (deg)",
+          "loss (W)",
+          {{"loss", {58, 59, 60}, {a, (a + b) / 2, b}, false}}};
 }
 
 // The shipped catalogue with a result per entry: the first computed entry fails with an error
@@ -86,7 +90,8 @@ struct FakeRun {
       if (r.status == "pass" && failed.empty()) {
         r.status = "fail";
         r.note = "error: cannot read " + source_dir + "/examples/3d/compensator_table42.yaml";
-        r.eval.plots = {awkward_plot(), flat_plot(), round_off_plot()};
+        r.eval.plots = {awkward_plot(), flat_plot(9.583, 9.583), flat_plot(39.04, 38.97),
+                        round_off_plot()};
         failed.push_back(e.id);
       }
       if (r.status == "finding")
@@ -234,7 +239,7 @@ TEST(ValidateReport, PlotsHaveRoundTicksAndLegendsInsideTheImage) {
     GTEST_SKIP() << why;
   const std::string html = validation_html(FakeRun().run);
   const auto plots = svgs(html);
-  ASSERT_EQ(plots.size(), 3u);
+  ASSERT_EQ(plots.size(), 4u);
   for (const auto& svg : plots) {
     expect_round_ticks(svg);
     expect_text_inside(svg);
@@ -243,13 +248,13 @@ TEST(ValidateReport, PlotsHaveRoundTicksAndLegendsInsideTheImage) {
       << "legend text";
   EXPECT_NE(plots[0].find("id=\"p0_"), std::string::npos) << "ids prefixed per plot";
   EXPECT_NE(plots[1].find("id=\"p1_"), std::string::npos);
-  for (const auto& t : svg_texts(plots[2])) {
+  for (const auto& t : svg_texts(plots[3])) {
     if (!is_number(t))
       continue;
     EXPECT_TRUE(std::stod(t) == 0 || std::abs(std::stod(t)) >= 0.1)
         << "round-off drawn as data: tick " << t;
   }
-  EXPECT_NE(plots[2].find("zero to round-off"), std::string::npos);
+  EXPECT_NE(plots[3].find("zero to round-off"), std::string::npos);
 }
 
 // One real entry through the binary: its case file shows relative to the project.
