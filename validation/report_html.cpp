@@ -37,6 +37,9 @@ const char* const page_style =
     "td.wrap>div{display:-webkit-box;-webkit-line-clamp:2;-webkit-box-orient:vertical;"
     "overflow:hidden}"
     ".counts .zero{background:#f2f2f2;color:#777}"
+    // On a narrow window fixed column shares cut the status and the error: let cells wrap.
+    "@media (max-width:900px){table.entries{table-layout:auto}"
+    "table.entries td,table.entries th{white-space:normal}}"
     "table.entries tr.group th{background:#eef2f7;padding-top:8px}"
     "td.n{font-variant-numeric:tabular-nums}"
     "section.entry{border-top:1px solid #ccc;margin-top:1.2em}"
@@ -118,7 +121,8 @@ std::string value_vs_reference(const EntryResult& r) {
   return v + " vs " + (e.published ? with_unit(round_text(*e.published), e.unit) : "?");
 }
 
-// The larger error of the two values against the tolerance: "0.81 % &le; 3 %".
+// The larger error of the two values against the tolerance: "-0.81 % within &plusmn;3 %", or
+// for a value that is itself a percentage "0.0028 % &le; 0.1 %".
 std::string error_vs_tolerance(const EntryResult& r) {
   const CatalogueEntry& e = *r.entry;
   std::optional<double> worst;
@@ -131,7 +135,11 @@ std::string error_vs_tolerance(const EntryResult& r) {
   if (e.expect == CatalogueEntry::Expect::finding)
     return err + " <span class=muted>(finding)</span>";
   const bool ok = std::abs(*worst) <= e.tolerance_pct;
-  return err + (ok ? " &le; " : " &gt; ") + round_text(e.tolerance_pct, 3) + " %";
+  const std::string limit = round_text(e.tolerance_pct, 3) + " %";
+  // A signed error against a two-sided band: "-12 % &gt; 10 %" would read as false.
+  if (e.check == CatalogueEntry::Check::relative)
+    return err + (ok ? " within &plusmn;" : " outside &plusmn;") + limit;
+  return err + (ok ? " &le; " : " &gt; ") + limit;
 }
 
 std::string summary(const ValidationRun& run) {
@@ -227,8 +235,8 @@ std::vector<const EntryResult*> by_source(const ValidationRun& run) {
 // Rows grouped by source, each group headed by its citation.
 std::string entries_table(const ValidationRun& run) {
   std::string h = "<h2 id=\"table\">Entries</h2>\n<table class=entries><colgroup><col "
-                  "style=\"width:14%\"><col style=\"width:35%\"><col style=\"width:7%\"><col "
-                  "style=\"width:28%\"><col style=\"width:16%\"></colgroup>\n<tr><th>Figure</th>"
+                  "style=\"width:13%\"><col style=\"width:40%\"><col style=\"width:7%\"><col "
+                  "style=\"width:24%\"><col style=\"width:16%\"></colgroup>\n<tr><th>Figure</th>"
                   "<th>Quantity</th><th>Status</th><th>Value vs published</th><th>Error vs "
                   "tolerance</th></tr>\n";
   std::string group;
