@@ -62,10 +62,12 @@ shot() {
   echo "  $out/$1.png"
 }
 
-# Entry ids: first three sections with a figure, every failure, the first two findings.
+# Entry ids: the first section with a figure from each source, every failure, the first two
+# findings.
 anchors=$(awk '
   /<section class=entry id="/ { match($0, /id="[^"]*"/); id = substr($0, RSTART + 4, RLENGTH - 5) }
-  /<figure>/ && id != "" && !seen_fig[id]++ && n_fig < 3 { n_fig++; print "plot " id }
+  /<dt>Source<\/dt><dd><a href="#src-/ { match($0, /#src-[^"]*/); src = substr($0, RSTART, RLENGTH) }
+  /<figure>/ && id != "" && !seen_fig[id]++ && !seen_src[src]++ { print "plot " id }
   /<h3><span class="badge fail">/ { print "fail " id }
   /<h3><span class="badge finding">/ && n_find < 2 { n_find++; print "finding " id }
 ' "$html")
