@@ -195,6 +195,7 @@ int run_validate(const ValidateOptions& options) {
   run.options = options;
   run.catalogue_file = options.catalogue.empty() ? default_catalogue() : options.catalogue;
   const Catalogue catalogue = read_catalogue(run.catalogue_file);
+  run.sources = catalogue.sources;
   const auto selected = select(catalogue, options);
 
   run.results.resize(selected.size());

@@ -35,6 +35,7 @@ struct EntryResult {
 struct ValidationRun {
   ValidateOptions options;
   std::string catalogue_file;
+  std::vector<SourceCitation> sources; // the catalogue's citations (report.html)
   std::vector<EntryResult> results;
   double wall_seconds = 0;
   int jobs = 1;

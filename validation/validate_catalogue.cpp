@@ -3,12 +3,14 @@
 #include <filesystem>
 #include <set>
 
-#include "validation/validate_evaluators.hpp"
 #include "core/input_error.hpp"
+#include "validation/validate_evaluators.hpp"
 
 namespace magfem {
 
-std::string to_string(ValidationTier tier) { return tier == ValidationTier::quick ? "quick" : "full"; }
+std::string to_string(ValidationTier tier) {
+  return tier == ValidationTier::quick ? "quick" : "full";
+}
 
 std::string to_string(CatalogueEntry::Check check) {
   return check == CatalogueEntry::Check::relative ? "relative" : "at_most";
@@ -131,19 +133,42 @@ CatalogueEntry read_entry(const YamlNode& n, const std::filesystem::path& folder
   return e;
 }
 
+SourceCitation read_source(const YamlNode& n) {
+  n.allow_keys({"file", "cite", "authors", "title", "venue", "year", "link", "note"});
+  return {n.at("file").as_string(),  n.at("cite").as_string(),  n.at("authors").as_string(),
+          n.at("title").as_string(), n.at("venue").as_string(), n.at("year").as_string(),
+          n.get_string("link", ""),  n.get_string("note", "")};
+}
+
+// With a `sources` list, an entry citing a document the list lacks would reach the report
+// without its citation: refuse it here, where the line is known.
+void check_source_listed(const Catalogue& c, const YamlNode& n) {
+  if (c.sources.empty())
+    return;
+  const CatalogueEntry& e = c.entries.back();
+  for (const auto& s : c.sources)
+    if (s.file == e.source)
+      return;
+  fail_entry(n.at("source"), e.id, "source '" + e.source + "' is not listed under sources");
+}
+
 } // namespace
 
 Catalogue read_catalogue(const std::string& path) {
   if (!std::filesystem::is_regular_file(path))
     throw InputError(path, 0, "", "catalogue not found");
   const YamlNode root = YamlNode::load_file(path);
-  root.allow_keys({"entries"});
+  root.allow_keys({"sources", "entries"});
   const auto folder = std::filesystem::path(path).parent_path();
   Catalogue c;
   c.file = path;
+  if (auto sources = root.find("sources"))
+    for (const YamlNode& n : sources->items())
+      c.sources.push_back(read_source(n));
   std::set<std::string> ids;
   for (const YamlNode& n : root.at("entries").items()) {
     c.entries.push_back(read_entry(n, folder));
+    check_source_listed(c, n);
     if (!ids.insert(c.entries.back().id).second)
       fail_entry(n.at("id"), c.entries.back().id, "duplicate id");
   }

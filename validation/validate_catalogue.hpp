@@ -28,23 +28,34 @@ struct CatalogueEntry {
   // compute: pass/fail; finding: published value we show cannot be reproduced as printed
   // (the evaluator still runs: it is the independent computation); skipped: not evaluated.
   enum class Expect { compute, finding, skipped } expect = Expect::compute;
-  std::string reason; // finding / skipped: why
-  std::string paper;  // what the paper says (report paragraph)
+  std::string reason;                          // finding / skipped: why
+  std::string paper;                           // what the paper says (report paragraph)
   ValidationTier tier = ValidationTier::quick; // lowest tier that runs the entry
   std::string evaluator;
-  std::string evaluator_quantity;          // evaluate.quantity
-  std::string case_file;                   // resolved path, empty if none
-  std::optional<YamlNode> evaluate;        // the whole evaluate map (evaluator parameters)
+  std::string evaluator_quantity;   // evaluate.quantity
+  std::string case_file;            // resolved path, empty if none
+  std::optional<YamlNode> evaluate; // the whole evaluate map (evaluator parameters)
   int line = 0;
+};
+
+// The citation of a source document (catalogue `sources:`), printed by the report.
+struct SourceCitation {
+  std::string file; // seed file, as CatalogueEntry::source names it
+  std::string cite; // short form for tables, e.g. "Harwin 2018"
+  std::string authors, title, venue, year;
+  std::string link; // DOI or URL, may be empty
+  std::string note; // what the source text does not print, may be empty
 };
 
 struct Catalogue {
   std::string file;
+  std::vector<SourceCitation> sources; // in the catalogue's order
   std::vector<CatalogueEntry> entries;
 };
 
 // Reads and checks the catalogue: every field, unique ids, the evaluator and its quantity
-// known to the registry, case files present (paths relative to the catalogue's folder).
+// known to the registry, case files present (paths relative to the catalogue's folder), and
+// when the catalogue lists `sources`, every entry's source among them.
 // Throws InputError naming the entry id, file and line.
 Catalogue read_catalogue(const std::string& path);
 
