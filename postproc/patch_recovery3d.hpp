@@ -23,9 +23,9 @@
 // Construction: for every mesh vertex v and every region r with a tet at v, the patch is r's
 // tets at v (its second ring within r when it has fewer than min_patch_tets, as at region
 // edges and corners, where a one-sided patch would extrapolate); a degree-p polynomial in
-// (x - x_v) / h is fitted to G_h at the points of a rule that makes the normal equations
-// exact on straight tets (order 1: 4 points a tet; order 2: 14, unisolvent for quadratics
-// even in one tet). Nodal values per (DOF, region): a vertex takes
+// (x - x_v) / h is fitted to G_h at the 4 degree-2 rule points of every tet of the patch
+// (volume-weighted least squares; a patch whose points do not determine the polynomial
+// falls back to a lower degree). Nodal values per (DOF, region): a vertex takes
 // its own patch's polynomial, a P2 edge node the mean of its two end vertices' polynomials at
 // the node; inside a tet of r, G* interpolates r's nodal values with the element's shape
 // functions (isoparametric on curved tets). Like RecoveredB3D, a region never sees another
@@ -50,6 +50,11 @@ public:
 
   // Recovered G* = -grad phi* (A/m) at bary of tet t (not a shell tet).
   Eigen::Vector3d G(std::size_t t, const std::array<double, 4>& bary) const;
+  // G_h at the four vertices of straight tet t (it is linear there): G_h at bary is
+  // sum_i bary_i corners(t)[i]. Not for curved tets.
+  const std::array<Eigen::Vector3d, 4>& corners(std::size_t t) const { return corner_[t]; }
+  // G* at tet t's DOF nodes (its region's values), in local order; returns their count.
+  int nodal_values(std::size_t t, std::array<Eigen::Vector3d, 10>& out) const;
   // The element's own G_h = -grad phi_h (A/m) at bary of tet t: H_h less the coils' H_s in
   // reduced regions.
   Eigen::Vector3d G_h(std::size_t t, const std::array<double, 4>& bary) const;
@@ -70,6 +75,7 @@ private:
   std::vector<int> first_;             // per DOF: its slots first_[d] .. first_[d + 1] - 1
   std::vector<int> part_;              // region of each slot
   std::vector<Eigen::Vector3d> value_; // G* of each slot, A/m
+  std::vector<std::array<Eigen::Vector3d, 4>> corner_; // G_h at the vertices, straight tets
   std::size_t n_degraded_ = 0;
 };
 

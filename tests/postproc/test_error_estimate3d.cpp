@@ -75,12 +75,17 @@ struct Measured {
 template <class Exact> Measured measure(const test::SphereCase& c, const Exact& exact_of) {
   const auto s = test::solve_sphere_case(c);
   EXPECT_TRUE(s->report.converged);
+  const auto t0 = std::chrono::steady_clock::now();
   const PatchRecovery3D rec(*s->field);
+  const double rec_s = test::seconds_since(t0);
   const std::vector<std::string> names = {"magnet", "shell"};
   const double energy =
       summarize_energy_3d(*s->field, {names.begin(), names.begin() + s->problem.parts.size()})
           .total_J;
+  const auto t1 = std::chrono::steady_clock::now();
   const ErrorEstimate3D est = estimate_error_3d(rec, energy);
+  std::printf("recovery %.3f s, indicator %.3f s, solve %.3f s\n", rec_s, test::seconds_since(t1),
+              s->report.solve_s);
   Measured m;
   m.estimated2 = est.error_norm2_J;
   m.true2 =
