@@ -18,8 +18,9 @@ struct Run3D;
 std::vector<ForceResult> compute_forces_3d(const Run3D& run);
 
 // Error estimates of the stress-tensor forces (sphere and box) in `forces` (as
-// compute_forces_3d made them, in that order): |F(B*) - F| per component with B* the patch
-// recovery (postproc/force_estimate3d.hpp). Other methods (Lorentz) are left unestimated.
+// compute_forces_3d made them, in that order): per component, the spread of the reported
+// value and the same surface integral of the element B and of the patch-recovered B*
+// (postproc/force_estimate3d.hpp); why, in force3d.cpp. Lorentz forces are left unestimated.
 void estimate_force_errors_3d(const Run3D& run, const PatchRecovery3D& recovery,
                               std::vector<ForceResult>& forces);
 

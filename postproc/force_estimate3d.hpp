@@ -1,15 +1,9 @@
 #pragma once
-// Error estimate of a Maxwell-stress force and torque from one mesh: the same surface
-// quadrature evaluated with the superconvergent patch-recovered B* (patch_recovery3d.hpp)
-// instead of the nodal-average B the reported result uses (maxwell_stress3d.hpp).
-//
-// Why this measures the error: the stress tensor is quadratic in B, so the force error is,
-// to first order, the surface integral of dT(B; B - B_h). B* is one order more accurate
-// than the averaged field (its error is O(h^(p+1)) against O(h^p) where the averages
-// reproduce the element field's own node errors), so F(B*) - F(B_avg) approximates
-// F(B) - F(B_avg): a recovery-based estimate of the reported quantity, in its unit, with the
-// same (asymptotic, not guaranteed) reliability as the energy estimate. It is not a bound.
-// The quadrature is the reported result's, so its own error cancels in the difference.
+// The Maxwell-stress force and torque of the superconvergent patch-recovered B*
+// (patch_recovery3d.hpp) on given surface points: one of the fields whose disagreement on
+// the reported surface is the force's error estimate (app/force3d.cpp). Where B* is one
+// order better than the nodal average (patches inside a region), F(B*) - F(B_avg)
+// approximates the reported result's error; it is an estimate, not a bound.
 #include <vector>
 
 #include "postproc/maxwell_stress.hpp"
