@@ -121,8 +121,8 @@ void check_order(int order, double coarse, double fine) {
   for (const Measured* m : {&a, &b}) {
     EXPECT_GT(m->effectivity(), 0.3) << "order " << order;
     EXPECT_LT(m->effectivity(), 3.0) << "order " << order;
-    // Measured 0.88..1.02 (commit of this test). A factor 2 in the permeability of H*
-    // (sqrt 2 in eta) or a dropped region leaves this band while staying within 0.3..3.
+    // Measured 0.88..1.02 (commit of this test). Order 2 recovered with degree 1 instead of 2
+    // gives 1.7 (within 0.3..3); dropping the background air gives 0.06.
     EXPECT_GT(m->effectivity(), 0.75) << "order " << order;
     EXPECT_LT(m->effectivity(), 1.3) << "order " << order;
   }
@@ -157,7 +157,9 @@ TEST(ErrorEstimate3D, SphereInPermeableShellOrder2) {
       });
   EXPECT_GT(m.effectivity(), 0.3);
   EXPECT_LT(m.effectivity(), 3.0);
-  // Measured 0.998; H* taken with mu0 in the shell would give ~0.1.
+  // Measured 0.998. Patches that mix the regions (H jumps by mu_r across the shell) give 43.
+  // A wrong mu in the shell's eta_K is not visible here: the shell carries under 1 % of the
+  // error energy (mu |e_H|^2 = |e_B|^2 / mu), which is also why it matters little.
   EXPECT_GT(m.effectivity(), 0.75);
   EXPECT_LT(m.effectivity(), 1.3);
 }
