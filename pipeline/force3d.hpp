@@ -7,6 +7,7 @@
 
 #include "pipeline/force_results.hpp"
 #include "casefile/case_spec.hpp"
+#include "postproc/patch_recovery3d.hpp"
 
 namespace magfem {
 
@@ -15,6 +16,13 @@ struct Run3D;
 // Maxwell stress tensor on every `sphere` force of the case, from the air-only recovered B
 // (postproc/maxwell_stress3d.hpp); a sphere that crosses matter is an InputError.
 std::vector<ForceResult> compute_forces_3d(const Run3D& run);
+
+// Error estimates of the stress-tensor forces (sphere and box) in `forces` (as
+// compute_forces_3d made them, in that order): per component, the spread of the reported
+// value and the same surface integral of the element B and of the patch-recovered B*
+// (postproc/force_estimate3d.hpp); why, in force3d.cpp. Lorentz forces are left unestimated.
+void estimate_force_errors_3d(const Run3D& run, const PatchRecovery3D& recovery,
+                              std::vector<ForceResult>& forces);
 
 // The case with a stress sphere about the origin added to its forces (named `name`), so that
 // the mesh is refined on it like on a sphere probe.

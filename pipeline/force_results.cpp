@@ -23,9 +23,13 @@ double relative_difference(const ForceResult& a, const ForceResult& b, double ra
 std::string forces_csv(const std::vector<ForceResult>& forces) {
   const bool any_check =
       std::any_of(forces.begin(), forces.end(), [](const auto& f) { return f.checked; });
+  const bool any_estimate =
+      std::any_of(forces.begin(), forces.end(), [](const auto& f) { return f.estimated; });
   std::string out = "name,method,Fx,Fy,Fz,Tx,Ty,Tz";
   if (any_check)
     out += ",check_Fx,check_Fy,check_Fz,check_Tx,check_Ty,check_Tz,check_rel_diff";
+  if (any_estimate)
+    out += ",Fx_err,Fy_err,Fz_err,Tx_err,Ty_err,Tz_err";
   out += "\n";
   char buf[512];
   for (const auto& f : forces) {
@@ -40,6 +44,15 @@ std::string forces_csv(const std::vector<ForceResult>& forces) {
                       f.check_torque.y(), f.check_torque.z(), f.check_relative_difference);
       else
         std::snprintf(buf, sizeof buf, ",,,,,,,");
+      out += buf;
+    }
+    if (any_estimate) {
+      if (f.estimated)
+        std::snprintf(buf, sizeof buf, ",%.4g,%.4g,%.4g,%.4g,%.4g,%.4g", f.force_err.x(),
+                      f.force_err.y(), f.force_err.z(), f.torque_err.x(), f.torque_err.y(),
+                      f.torque_err.z());
+      else
+        std::snprintf(buf, sizeof buf, ",,,,,,");
       out += buf;
     }
     out += "\n";
@@ -60,6 +73,10 @@ nlohmann::ordered_json forces_json(const std::vector<ForceResult>& forces) {
       e["check_torque_Nm"] = vec(f.check_torque);
       e["check_relative_difference"] = f.check_relative_difference;
     }
+    if (f.estimated)
+      e["error_estimate"] = {{"force_N", vec(f.force_err)},
+                             {"torque_Nm", vec(f.torque_err)},
+                             {"method", f.error_method}};
     j.push_back(e);
   }
   return j;
@@ -79,6 +96,11 @@ std::string describe_forces(const std::vector<ForceResult>& forces, bool per_met
     if (f.checked) {
       std::snprintf(buf, sizeof buf, "; second surface differs by %.3g %%",
                     100 * f.check_relative_difference);
+      out += buf;
+    }
+    if (f.estimated) {
+      std::snprintf(buf, sizeof buf, "; estimated error |F| %.2g %s, |T| %.2g %s",
+                    f.force_err.norm(), fu, f.torque_err.norm(), tu);
       out += buf;
     }
     out += "\n";

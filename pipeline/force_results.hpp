@@ -19,9 +19,17 @@ struct ForceResult {
   Eigen::Vector3d check_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d check_torque = Eigen::Vector3d::Zero();
   double check_relative_difference = 0;
+  // Error estimate from the one mesh, in the result's units (per component, absolute):
+  // `error_method` says how it was made (3D stress tensor: pipeline/force3d.cpp). Not every
+  // method has one yet (estimated false: no error_estimate in summary.json, empty cells).
+  bool estimated = false;
+  Eigen::Vector3d force_err = Eigen::Vector3d::Zero();  // N
+  Eigen::Vector3d torque_err = Eigen::Vector3d::Zero(); // N m
+  std::string error_method;
 };
 
-// forces.csv: name,method,Fx,Fy,Fz,Tx,Ty,Tz (and the check columns when any force has one).
+// forces.csv: name,method,Fx,Fy,Fz,Tx,Ty,Tz (and the check columns when any force has one,
+// then Fx_err..Tz_err when any force has an error estimate: appended, never reordered).
 // Spread of a consistency check: the difference of force (and torque / radius) relative to
 // the largest of |F| and |T| / radius; radius is the size of the surface.
 double relative_difference(const ForceResult& a, const ForceResult& b, double radius);

@@ -263,6 +263,13 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   for (auto& f : coil_lorentz_forces(*run))
     run->forces.push_back(f);
   run->coil_results = compute_coil_results(*run, assembler, u);
+  // Every solve says how accurate it is (issue 29): the energy-norm estimate and one for
+  // each stress-tensor force, from one patch recovery.
+  const auto t_estimate = Clock::now();
+  const PatchRecovery3D recovery(*run->field);
+  run->error_estimate = estimate_error_3d(recovery, run->energy.total_J);
+  estimate_force_errors_3d(*run, recovery, run->forces);
+  run->error_estimate_s = since(t_estimate);
   check_finite(run->recovered_B.values(), "recovered flux density");
   check_finite(run->energy.total_J, "magnetic energy");
   check_forces_finite(run->forces);
@@ -289,9 +296,15 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
         material_names.push_back(r.material->name);
       material_of_part.push_back(it->second);
     }
-    write_vtu(stage.path_for("solution.vtu").string(),
-              make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0,
-                          material_names));
+    VtuGrid grid =
+        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
+    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
+    VtuArray indicator{"error_indicator", 1, {}};
+    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
+      if (!run.problem.is_shell(t))
+        indicator.values.push_back(run.error_estimate.eta2_J[t]);
+    grid.cell_data.push_back(std::move(indicator));
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
   }
   nlohmann::ordered_json j;
   add_provenance(j);
@@ -307,6 +320,11 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
                        {"curved_tets", run.dofs->n_curved()},
                        {"straightened_edge_nodes", run.dofs->n_straightened()}};
   j["energy_J"] = run.energy.total_J;
+  j["error_estimate"] = {{"energy_error_pct", run.error_estimate.energy_error_pct},
+                         {"indicator", run.error_estimate.indicator},
+                         {"error_norm2_J", run.error_estimate.error_norm2_J},
+                         {"scope", "physical domain; the open-boundary shell is not estimated"},
+                         {"seconds", run.error_estimate_s}};
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
   j["residual_history"] = run.report.residual_history;
@@ -317,6 +335,7 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
                     {"linear_setup", run.report.linear_setup_s},
                     {"linear_solve", run.report.linear_solve_s},
                     {"postprocess", run.timings.postprocess},
+                    {"error_estimate", run.error_estimate_s},
                     {"total", run.timings.total}};
   j["peak_memory_MB"] = peak_memory_mb();
   j["memory_guard"] = {
@@ -394,6 +413,10 @@ std::string describe_run_3d(const Run3D& run) {
                     r.peak_B_T);
       s += buf;
     }
+  std::snprintf(buf, sizeof buf, "accuracy energy error %.3g %% (estimated: %s, %.2f s)\n",
+                run.error_estimate.energy_error_pct, run.error_estimate.indicator.c_str(),
+                run.error_estimate_s);
+  s += buf;
   s += describe_forces(run.forces, false);
   for (const auto& f : run.sections) {
     std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",

@@ -11,6 +11,7 @@
 #include "pipeline/coil_run3d.hpp"
 #include "pipeline/run2d.hpp"
 #include "postproc/energy3d.hpp"
+#include "postproc/error_estimate3d.hpp"
 #include "postproc/field3d.hpp"
 #include "postproc/recovered_b3d.hpp"
 #include "postproc/section_flux3d.hpp"
@@ -36,6 +37,8 @@ struct Run3D {
   std::vector<SectionFlux> sections; // parallel to spec.sections
   std::vector<ForceResult> forces;
   CoilResults coil_results;
+  ErrorEstimate3D error_estimate;    // energy-norm indicator per tet and in all
+  double error_estimate_s = 0;       // recovery, indicator and force estimates, wall clock
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
   int threads = 1; // element-loop threads of the assembly

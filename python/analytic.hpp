@@ -1,5 +1,5 @@
 #pragma once
-// magfem._core.Analytic: a case answered by the analytic models (app/run_analytic.hpp), with
+// magfem._core.Analytic: a case answered by the analytic models (pipeline/run_analytic.hpp), with
 // what Python reads from it. The models are not kept after the run, so there is no field at
 // arbitrary points here: probes are the points (python/magfem/solution.py wraps it into
 // magfem.AnalyticSolution).

@@ -91,7 +91,7 @@ std::string Solution::forces_json() const {
 std::string Solution::coils_json() const {
   if (run3d_)
     return coil_results_json(run3d_->coil_results).dump();
-  // The keys of summary.json's "coils" in 2D (app/run2d.cpp).
+  // The keys of summary.json's "coils" in 2D (pipeline/run2d.cpp).
   auto j = nlohmann::ordered_json::array();
   for (const auto& c : run2d_->coils)
     j.push_back({{"name", c.name},

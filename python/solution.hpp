@@ -1,5 +1,5 @@
 #pragma once
-// magfem._core.Solution: a solved case (the Run2D or Run3D of app/run2d.hpp, app/run3d.hpp,
+// magfem._core.Solution: a solved case (the Run2D or Run3D of pipeline/run2d.hpp, pipeline/run3d.hpp,
 // mesh and field kept alive) with what Python reads from it. python/magfem/solution.py wraps
 // it into the public magfem.Solution (units, dicts, docstrings).
 #include <memory>
