@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "app/actuator.hpp"
+#include "app/adapt2d.hpp"
 #include "app/build_info.hpp"
 #include "app/cli_number.hpp"
 #include "app/command_help.hpp"
@@ -50,6 +51,9 @@ struct Args {
   bool analytic_sweep = false;
   bool resume = false; // sweep: continue from the checkpoint in --out
   bool quiet = false;  // no progress lines on stderr
+  // solve --accuracy / --max-passes / --max-unknowns: override the case file's adapt:
+  std::optional<double> accuracy_pct, max_unknowns;
+  std::optional<int> max_passes;
   int jobs = 0;
 };
 
@@ -79,7 +83,21 @@ Args parse_args(int argc, char** argv) {
         throw magfem::InputError("<command line>", 0, arg, "must be positive (GB)");
     } else if (arg == "--param" && (a.command == "solve" || a.command == "analytic"))
       magfem::parse_cli_parameter(value(), a.parameters);
-    else if (arg == "--model")
+    else if (arg == "--accuracy" && a.command == "solve") {
+      a.accuracy_pct = magfem::parse_cli_number(arg, value());
+      if (!(*a.accuracy_pct > 0 && *a.accuracy_pct < 100))
+        throw magfem::InputError("<command line>", 0, arg,
+                                 "must be between 0 and 100 (exclusive), in percent");
+    } else if (arg == "--max-passes" && a.command == "solve") {
+      const double n = magfem::parse_cli_number(arg, value());
+      if (!(n >= 1) || n != std::floor(n))
+        throw magfem::InputError("<command line>", 0, arg, "must be a whole number >= 1");
+      a.max_passes = static_cast<int>(n);
+    } else if (arg == "--max-unknowns" && a.command == "solve") {
+      a.max_unknowns = magfem::parse_cli_number(arg, value());
+      if (!(*a.max_unknowns > 0))
+        throw magfem::InputError("<command line>", 0, arg, "must be positive");
+    } else if (arg == "--model")
       a.analytic.model = value();
     else if (arg == "--tolerance")
       a.analytic.tolerance = magfem::parse_cli_number(arg, value());
@@ -148,10 +166,30 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
   return 0;
 }
 
+// The command line's --accuracy / --max-passes / --max-unknowns over the case file's adapt:.
+void apply_adapt_options(const Args& args, magfem::CaseSpec& spec) {
+  if (spec.dimension == 3 && args.accuracy_pct)
+    throw magfem::InputError("<command line>", 0, "--accuracy",
+                             "adaptive refinement is for 2D and axisymmetric cases only for now "
+                             "(there is no 3D error estimator yet); solve 3D cases with "
+                             "--mesh-scale");
+  if (args.accuracy_pct)
+    spec.adapt.accuracy_pct = *args.accuracy_pct;
+  if ((args.max_passes || args.max_unknowns) && !spec.adapt.enabled())
+    throw magfem::InputError("<command line>", 0,
+                             args.max_passes ? "--max-passes" : "--max-unknowns",
+                             "applies to adaptive solves: give --accuracy or an adapt: section");
+  if (args.max_passes)
+    spec.adapt.max_passes = *args.max_passes;
+  if (args.max_unknowns)
+    spec.adapt.max_unknowns = *args.max_unknowns;
+}
+
 int run_solve(const Args& args) {
   // Under mpirun: MPI starts here, before anything can fail on one process only.
   const magfem::MpiWorld world = magfem::join_mpi_world();
   auto spec = magfem::read_case(args.case_file, args.parameters);
+  apply_adapt_options(args, spec);
   magfem::Progress progress;
   magfem::RunOverrides overrides = args.overrides;
   if (!args.quiet && world.is_root())
@@ -168,7 +206,13 @@ int run_solve(const Args& args) {
   }
   if (spec.dimension == 3)
     return run_solve_3d(args, std::move(spec), overrides);
-  auto run = magfem::run_case_2d(std::move(spec), overrides);
+  auto run = spec.adapt.enabled() ? magfem::run_adaptive_2d(spec, overrides,
+                                                            [](const magfem::AdaptPass2D& p) {
+                                                              std::cout
+                                                                  << magfem::describe_adapt_pass(p)
+                                                                  << std::flush;
+                                                            })
+                                  : magfem::run_case_2d(std::move(spec), overrides);
   std::cout << magfem::describe_run_2d(*run);
   print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
   return 0;
