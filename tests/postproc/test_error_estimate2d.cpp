@@ -72,7 +72,9 @@ double exact_solenoid_energy() {
   const double l = coaxial_coil_self_inductance(CoaxialCoil{0.010, 0.015, -0.015, 0.015, 500});
   return 0.5 * l * 2.0 * 2.0;
 }
-double exact_cylinder_energy() { return B_r * B_r / mu0 * pi * a * a / 4; }
+double exact_cylinder_energy() {
+  return B_r * B_r / mu0 * pi * a * a / 4;
+}
 double exact_sphere_energy() {
   return 3 * 0.5 * mu0 * std::pow(B_r / (3 * mu0), 2) * 4.0 / 3 * pi * a * a * a;
 }
@@ -97,8 +99,8 @@ struct PassCheck {
 
 // A short adaptive run of the case toward accuracy_pct, every pass's estimated and true
 // energy error.
-std::vector<PassCheck> adaptive_effectivity(const std::string& name, const char* text,
-                                            double exact, double accuracy_pct) {
+std::vector<PassCheck> adaptive_effectivity(const std::string& name, const char* text, double exact,
+                                            double accuracy_pct) {
   CaseSpec spec = read_case(test::write_temp_case(name + ".yaml", text));
   spec.adapt.accuracy_pct = accuracy_pct;
   spec.adapt.max_passes = 2;
@@ -135,11 +137,13 @@ void expect_effectivity(const std::vector<PassCheck>& passes) {
 } // namespace
 
 TEST(ErrorEstimate2D, AxisymmetricSolenoidEffectivity) {
-  expect_effectivity(adaptive_effectivity("ee_solenoid", solenoid_case, exact_solenoid_energy(), 1e-3));
+  expect_effectivity(
+      adaptive_effectivity("ee_solenoid", solenoid_case, exact_solenoid_energy(), 1e-3));
 }
 
 TEST(ErrorEstimate2D, PlanarDiametricCylinderEffectivity) {
-  expect_effectivity(adaptive_effectivity("ee_cylinder", cylinder_case, exact_cylinder_energy(), 5e-3));
+  expect_effectivity(
+      adaptive_effectivity("ee_cylinder", cylinder_case, exact_cylinder_energy(), 5e-3));
 }
 
 TEST(ErrorEstimate2D, AxisymmetricMagnetizedSphereEffectivity) {
