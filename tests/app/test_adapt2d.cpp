@@ -73,24 +73,30 @@ TEST(Adapt2D, ReachesTheTargetWithFewerUnknownsThanUniformRefinement) {
   ASSERT_TRUE(adaptive->adapt->converged);
   const double exact = exact_solenoid_energy();
   const double true_pct = true_error_pct(adaptive->energy.total_J_per_m, exact);
-  int uniform_unknowns = 0;
-  double uniform_true = 0;
-  for (double s = 1.0; s > 0.2; s *= 0.8) {
+  // The largest uniform mesh that still misses the target, and the first one that meets it.
+  int missed_unknowns = 0, met_unknowns = 0;
+  double met_true = 0;
+  for (double s = 1.0; s > 0.2 && met_unknowns == 0; s *= 0.8) {
     RunOverrides ov;
     ov.mesh_scale = s;
     const auto run = run_case_2d(spec, ov);
-    uniform_unknowns = run->dofs->n_dofs();
-    uniform_true = true_error_pct(run->energy.total_J_per_m, exact);
-    if (run->error.energy_error_pct <= target)
-      break;
+    if (run->error.energy_error_pct > target) {
+      missed_unknowns = run->dofs->n_dofs();
+    } else {
+      met_unknowns = run->dofs->n_dofs();
+      met_true = true_error_pct(run->energy.total_J_per_m, exact);
+    }
   }
   std::cout << "adaptive: " << adaptive->adapt->passes.size() << " passes, "
             << adaptive->dofs->n_dofs() << " unknowns, estimated "
             << adaptive->error.energy_error_pct << " %, true " << true_pct
-            << " %; uniform: " << uniform_unknowns << " unknowns, true " << uniform_true << " %\n";
+            << " %; uniform: misses the target at " << missed_unknowns << " unknowns, meets it at "
+            << met_unknowns << " (true " << met_true << " %)\n";
   // The bound: the true error is never more than 3x the estimate (here the target).
   EXPECT_LT(true_pct, 3 * target);
-  EXPECT_LT(adaptive->dofs->n_dofs(), uniform_unknowns);
+  // Fewer unknowns than even the largest uniform mesh that misses the target: the uniform
+  // steps (0.8x in size) cannot blur the comparison in adaptivity's favour.
+  EXPECT_LT(adaptive->dofs->n_dofs(), missed_unknowns);
 }
 
 TEST(Adapt2D, NamedForceConvergesAndItsEstimateHolds) {
