@@ -133,7 +133,7 @@ double mesher_floor(const MeshOptions2D& o) {
 
 } // namespace
 
-std::vector<double> adapted_sizes(const Run2D& run, double target_pct) {
+std::vector<double> adapted_sizes(const Run2D& run, double target_pct, bool coarsen) {
   const std::vector<double> h = longest_edges(run.mesh);
   const std::size_t n = h.size();
   // The total eta^2 that target_pct allows (energy_error_pct = 100 eta^2 / (2 W)), shared
@@ -146,7 +146,7 @@ std::vector<double> adapted_sizes(const Run2D& run, double target_pct) {
     const double eta = std::sqrt(std::max(run.error.eta2[t], 0.0));
     double ratio = eta > 0 ? std::pow(eta_target / eta, 1.0 / p) : max_ratio;
     ratio = std::clamp(ratio, min_ratio, max_ratio);
-    if (run.problem.is_shell(t))
+    if (!coarsen || run.problem.is_shell(t))
       ratio = std::min(ratio, 1.0);
     out[t] = h[t] * ratio;
   }
@@ -171,10 +171,12 @@ std::unique_ptr<Run2D> run_adaptive_2d(const CaseSpec& spec, const RunOverrides&
     } else if (pass >= a.max_passes) {
       history.stop_reason = "max_passes (" + std::to_string(a.max_passes) + ") reached";
     } else {
-      const double target = p.energy_error_pct > a.accuracy_pct
-                                ? aim_below_target * a.accuracy_pct
-                                : quantity_push * p.energy_error_pct;
-      const std::vector<double> next = adapted_sizes(*run, target);
+      // Energy within the target, a quantity not: refine further and coarsen nowhere, so that
+      // the quantity's sequence of passes converges instead of trading one region for another.
+      const bool energy_reached = p.energy_error_pct <= a.accuracy_pct;
+      const double target =
+          energy_reached ? quantity_push * p.energy_error_pct : aim_below_target * a.accuracy_pct;
+      const std::vector<double> next = adapted_sizes(*run, target, !energy_reached);
       const std::vector<double> h = longest_edges(run->mesh);
       double growth = 0; // the element count scales like the inverse square of the size
       for (std::size_t t = 0; t < h.size(); ++t)

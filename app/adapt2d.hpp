@@ -29,7 +29,7 @@ std::string describe_adapt_pass(const AdaptPass2D& pass);
 // the rule of Zienkiewicz and Zhu (1987): eta_K scales like h^p in the energy norm when the
 // number of elements is held fixed. Shell elements never grow (they keep the four layers the
 // mesher gives the open boundary). target_pct: the energy error aimed at (energy_error_pct's
-// measure). Exposed for the tests.
-std::vector<double> adapted_sizes(const Run2D& run, double target_pct);
+// measure). coarsen = false: no element grows (ratio <= 1). Exposed for the tests.
+std::vector<double> adapted_sizes(const Run2D& run, double target_pct, bool coarsen);
 
 } // namespace magfem
