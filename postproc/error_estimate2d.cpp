@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 
 #include <Eigen/Dense>
 
@@ -33,10 +34,11 @@ double area_of(const Mesh2D& mesh, std::size_t t) {
 struct PatchFit {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double scale = 1;
-  Eigen::Matrix<double, Eigen::Dynamic, 2> coef;
+  Eigen::Matrix<double, 6, 2> coef = Eigen::Matrix<double, 6, 2>::Zero();
 
-  static Eigen::VectorXd basis(int order, const Eigen::Vector2d& s) {
-    Eigen::VectorXd p(order == 1 ? 3 : 6);
+  // Fixed size (no allocation in the hot loop); the quadratic terms are zero for order 1.
+  static Eigen::Matrix<double, 6, 1> basis(int order, const Eigen::Vector2d& s) {
+    Eigen::Matrix<double, 6, 1> p = Eigen::Matrix<double, 6, 1>::Zero();
     p.head<3>() << 1, s.x(), s.y();
     if (order > 1)
       p.tail<3>() << s.x() * s.x(), s.x() * s.y(), s.y() * s.y();
@@ -87,36 +89,56 @@ std::vector<int> patch_of(const Mesh2D& mesh, const VertexTriangles& vt, int v, 
 // polynomial of the element's degree to B_h sampled at the quadrature points of every element
 // of the patch, where B_h is most accurate. The fit stays within one region: across an
 // interface B_t jumps by mu_r and a common polynomial would call the jump an error.
-PatchFit fit_patch(const Field2D& field, const std::vector<int>& patch, const Vec2& centre) {
-  const auto& mesh = *field.problem().mesh;
-  const int order = field.dofs().order();
-  const auto& rule = triangle_rule(order == 1 ? 1 : 2);
+// B_h and the point at the sampling points of every element, computed once: each element is
+// in the patches of its three vertices.
+struct Samples {
+  int per_element = 0;
+  std::vector<Eigen::Vector2d> x, b; // [triangle * per_element + k]
+
+  explicit Samples(const Field2D& field) {
+    const auto& rule = triangle_rule(field.dofs().order() == 1 ? 1 : 2);
+    const std::size_t n = field.problem().mesh->n_triangles();
+    per_element = static_cast<int>(rule.size());
+    x.reserve(n * rule.size());
+    b.reserve(n * rule.size());
+    for (std::size_t t = 0; t < n; ++t)
+      for (const auto& q : rule) {
+        x.push_back(field.point(t, q.bary));
+        b.push_back(field.B(t, q.bary));
+      }
+  }
+};
+
+PatchFit fit_patch(const Mesh2D& mesh, int order, const Samples& samples,
+                   const std::vector<int>& patch, const Vec2& centre) {
   PatchFit fit;
   fit.centre = centre;
+  double reach = 0; // the patch's extent about the centre: scaled coordinates are O(1)
   for (int t : patch)
     for (int v : mesh.triangles[t])
-      fit.scale = std::max(fit.scale == 1 ? 0.0 : fit.scale, (mesh.nodes[v] - centre).norm());
-  const int n_coef = order == 1 ? 3 : 6;
-  Eigen::MatrixXd ata = Eigen::MatrixXd::Zero(n_coef, n_coef);
-  Eigen::Matrix<double, Eigen::Dynamic, 2> atb = Eigen::MatrixXd::Zero(n_coef, 2);
+      reach = std::max(reach, (mesh.nodes[v] - centre).norm());
+  fit.scale = reach;
+  Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 2> atb = Eigen::Matrix<double, 6, 2>::Zero();
   for (int t : patch)
-    for (const auto& q : rule) {
-      const Eigen::VectorXd p =
-          PatchFit::basis(order, (field.point(t, q.bary) - centre) / fit.scale);
+    for (int k = t * samples.per_element; k < (t + 1) * samples.per_element; ++k) {
+      const Eigen::Matrix<double, 6, 1> p =
+          PatchFit::basis(order, (samples.x[k] - centre) / fit.scale);
       ata += p * p.transpose();
-      atb += p * field.B(t, q.bary).transpose();
+      atb += p * samples.b[k].transpose();
     }
-  // A patch too small or too flat for the full polynomial (a sliver chain along a boundary)
-  // keeps only its constant and linear terms rather than fitting noise.
-  Eigen::LDLT<Eigen::MatrixXd> ldlt(ata);
-  const double diag_min = ldlt.vectorD().minCoeff(), diag_max = ldlt.vectorD().maxCoeff();
-  if (ldlt.info() == Eigen::Success && diag_min > 1e-10 * diag_max) {
-    fit.coef = ldlt.solve(atb);
-    return fit;
+  if (order > 1) {
+    // A patch too small or too flat for the full quadratic (a sliver chain along a boundary)
+    // keeps only its constant and linear terms rather than fitting noise.
+    const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(ata);
+    const double d_min = ldlt.vectorD().minCoeff(), d_max = ldlt.vectorD().maxCoeff();
+    if (ldlt.info() == Eigen::Success && d_min > 1e-10 * d_max) {
+      fit.coef = ldlt.solve(atb);
+      return fit;
+    }
   }
-  fit.coef = Eigen::MatrixXd::Zero(n_coef, 2);
-  const Eigen::LDLT<Eigen::MatrixXd> low(ata.topLeftCorner(3, 3));
-  fit.coef.topRows(3) = low.solve(atb.topRows(3));
+  const Eigen::LDLT<Eigen::Matrix3d> low(ata.topLeftCorner<3, 3>());
+  fit.coef.topRows<3>() = low.solve(atb.topRows<3>());
   return fit;
 }
 
@@ -124,14 +146,16 @@ PatchFit fit_patch(const Field2D& field, const std::vector<int>& patch, const Ve
 class Recovery {
 public:
   explicit Recovery(const Field2D& field)
-      : field_(field), mesh_(*field.problem().mesh), vt_(mesh_), head_(mesh_.n_nodes(), -1) {}
+      : mesh_(*field.problem().mesh), order_(field.dofs().order()), samples_(field), vt_(mesh_),
+        head_(mesh_.n_nodes(), -1) {}
 
   const PatchFit& at(int v, int part) {
     for (int k = head_[v]; k >= 0; k = entries_[k].next)
       if (entries_[k].part == part)
         return entries_[k].fit;
     entries_.push_back(
-        {part, head_[v], fit_patch(field_, patch_of(mesh_, vt_, v, part), mesh_.nodes[v])});
+        {part, head_[v],
+         fit_patch(mesh_, order_, samples_, patch_of(mesh_, vt_, v, part), mesh_.nodes[v])});
     head_[v] = static_cast<int>(entries_.size()) - 1;
     return entries_.back().fit;
   }
@@ -141,11 +165,12 @@ private:
     int part, next;
     PatchFit fit;
   };
-  const Field2D& field_;
   const Mesh2D& mesh_;
+  int order_;
+  Samples samples_;
   VertexTriangles vt_;
   std::vector<int> head_;
-  std::vector<Entry> entries_; // deque-like use: references are read before the next push
+  std::deque<Entry> entries_; // a deque: at() hands out references that later pushes keep valid
 };
 
 // B* at the element's DOF points: a vertex takes its own patch's value, a midpoint the mean
