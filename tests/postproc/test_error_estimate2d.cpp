@@ -4,8 +4,10 @@
 //
 // The true error. The passes of an adaptive run mesh the same polygons (mesher2d.hpp,
 // refine_sizes), so the discrete problem differs from pass to pass only by the mesh. Its
-// energy error is |W_ref - W_h| / W_ref, with W_ref from the same polygons at a third of the
-// last pass's element sizes (energy error O(h^{2p}): 81x smaller for P2 than the last pass).
+// energy error is |W_ref - W_h| / W_ref, with W_ref from the same polygons on a much finer
+// mesh (reference_energy). The outer circles are the exception: vertices added on them move
+// onto the circle; the cases keep their chord tolerance small enough that this stays below
+// the errors measured (at 0.005 mm the sphere's second pass read an effectivity of 0.2).
 // For a linear Galerkin solution |W - W_h| = ||B - B_h||_E^2 / 2 exactly, which is what the
 // estimate's energy_error_pct measures. Each reference is also checked against the closed
 // form of the smooth geometry, to the polygon's own error (the chord tolerance).
@@ -16,7 +18,6 @@
 
 #include "app/adapt2d.hpp"
 #include "core/constants.hpp"
-#include "mesh/adaptive_size2d.hpp"
 #include "tests/app/case_helpers.hpp"
 #include "validation/coil_closed_forms.hpp"
 
@@ -66,6 +67,26 @@ mesh: {size: 8.0, chord_tolerance: 0.001}
 solver: {order: 2}
 )";
 
+// The solenoid around a linear iron core (mu_r 200) that sticks out of the winding: B_t jumps
+// by 200 across the core's faces, where the recovery must stay on each side and H(B*) must use
+// each side's law. No closed form: the same-polygon reference alone. (The iron carries little
+// of the error: an indicator using the air's reluctivity in the iron too still read 1.15 and
+// 1.36 here, so this case guards the recovery across the faces, not the law.)
+const char* cored_solenoid_case = R"(
+dimension: axi
+unit: mm
+materials:
+  iron: {kind: linear, mu_r: 200}
+regions:
+  - {name: winding, shape: rectangle, center: [12.5, 0], width: 5, height: 30, turns: 500,
+     current: 2.0, mesh_size: 4.0}
+  - {name: core, shape: rectangle, center: [4, 5], width: 8, height: 40, material: iron,
+     mesh_size: 4.0}
+boundary: {type: open, radius: 50, shell_ratio: 1.5}
+mesh: {size: 8.0, chord_tolerance: 0.002}
+solver: {order: 2}
+)";
+
 constexpr double a = 0.010, B_r = 1.0; // the magnets: metres, tesla
 
 double exact_solenoid_energy() {
@@ -79,17 +100,18 @@ double exact_sphere_energy() {
   return 3 * 0.5 * mu0 * std::pow(B_r / (3 * mu0), 2) * 4.0 / 3 * pi * a * a * a;
 }
 
-// The energy of the same polygons at a third of the last run's element sizes.
-double reference_energy(const CaseSpec& spec, const Run2D& last) {
-  std::vector<double> h = longest_edges(last.mesh);
-  for (double& x : h)
-    x /= 2;
-  const SizeField2D sizes = adaptive_size_field(last.mesh, h, 0.0);
-  RunOverrides ov;
-  ov.refine_sizes = &sizes;
-  const auto ref = run_case_2d(spec, ov);
+// The energy of the same polygons on a much finer mesh: the adaptive loop run on, to a tenth
+// of the last pass's estimated error (it lands further below: each pass overshoots), finer
+// than the tested passes everywhere, including at the iron corners, where uniform refinement
+// gains little. Its own estimate is printed: it must be far below the errors it measures.
+double reference_energy(CaseSpec spec, const Run2D& last) {
+  spec.adapt.accuracy_pct = last.error.energy_error_pct / 10;
+  spec.adapt.max_passes = 3;
+  const auto ref = run_adaptive_2d(spec, {});
   std::cout << "  reference: " << ref->dofs->n_dofs() << " unknowns, estimated error "
             << ref->error.energy_error_pct << " %\n";
+  // A reference within a quarter of the tested error biases an effectivity by 25 % at most.
+  EXPECT_LT(ref->error.energy_error_pct, last.error.energy_error_pct / 4);
   return ref->energy.total_J_per_m;
 }
 
@@ -109,8 +131,10 @@ std::vector<PassCheck> adaptive_effectivity(const std::string& name, const char*
   // The polygons' own error against the smooth geometry: a polygon of sagitta s inside a
   // circle of radius a misses (2/3) s / a of its area; 3 s / a leaves a margin.
   const double s = spec.geometry2d.options.chord_tolerance;
-  std::cout << "  reference vs closed form: " << (w_ref - exact) / exact << "\n";
-  EXPECT_NEAR(w_ref, exact, 3 * s / a * exact) << name;
+  if (exact > 0) { // 0: no closed form
+    std::cout << "  reference vs closed form: " << (w_ref - exact) / exact << "\n";
+    EXPECT_NEAR(w_ref, exact, 3 * s / a * exact) << name;
+  }
   std::vector<PassCheck> out;
   for (const auto& p : run->adapt->passes) {
     const double w = p.energy_J;
@@ -148,4 +172,8 @@ TEST(ErrorEstimate2D, PlanarDiametricCylinderEffectivity) {
 
 TEST(ErrorEstimate2D, AxisymmetricMagnetizedSphereEffectivity) {
   expect_effectivity(adaptive_effectivity("ee_sphere", sphere_case, exact_sphere_energy(), 3e-3));
+}
+
+TEST(ErrorEstimate2D, AxisymmetricSolenoidWithIronCoreEffectivity) {
+  expect_effectivity(adaptive_effectivity("ee_cored", cored_solenoid_case, 0.0, 1e-3));
 }
