@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "casefile/adapt_reader.hpp"
 #include "casefile/case_parameters.hpp"
 #include "casefile/case_spec.hpp"
 #include "casefile/force_reader.hpp"
@@ -306,7 +307,7 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
   const YamlNode root = YamlNode::load_string(quote_expressions(text), path);
   root.allow_keys({"title", "description", "dimension", "unit", "parameters", "stack_length",
                    "materials", "regions", "coils", "boundary", "mesh", "solver", "probes",
-                   "forces", "sections", "output"});
+                   "forces", "sections", "output", "adapt"});
   CaseSpec c;
   c.file = path;
   // Parameters first: every field below then reads plain numbers (the unit cannot be one).
@@ -364,6 +365,8 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
     read_forces(root.at("forces"), c);
   if (root.has("sections"))
     read_sections(root.at("sections"), c);
+  if (root.has("adapt"))
+    read_adapt(root.at("adapt"), c);
   if (root.has("output")) {
     const auto o = root.at("output");
     o.allow_keys({"vtu", "inductance", "revolved_vtu"});

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "casefile/adapt_spec.hpp"
 #include "casefile/case_parameter.hpp"
 #include "materials/magnetization.hpp"
 #include "materials/material.hpp"
@@ -51,6 +52,7 @@ struct CaseSpec {
   std::vector<int> coil_lines;           // parallel to geometry3d.coils
   bool coil_inductance = true;           // 3D: the inductance matrix (one extra solve per coil)
   std::vector<CaseParameter> parameters; // the `parameters:` section, resolved (file order)
+  AdaptSpec adapt;                       // `adapt:` (adaptive refinement; off by default)
 
   // `dimension: axi`: a 2D case in the r-z half plane (geometry2d.symmetry says so).
   bool axisymmetric() const {

@@ -16,6 +16,7 @@ struct CommandHelp {
 constexpr std::array<CommandHelp, 10> commands{{
     {"solve",
      "magfem solve CASE.yaml [--out DIR] [--order 1|2] [--mesh-scale S] [--max-memory GB]\n"
+     "                    [--accuracy PCT [--max-passes N] [--max-unknowns N]]\n"
      "                    [--param NAME=VALUE ...] [--quiet]",
      "mesh and solve a case by FE",
      "  Writes into DIR (default out/<case name>): summary.json (energy, forces, coils,\n"
@@ -26,6 +27,11 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  --max-memory GB   3D: refuse (exit 2) a mesh whose estimated peak memory exceeds GB\n"
      "                    (default: the memory available now) and say which --mesh-scale\n"
      "                    would fit; the estimate is made before meshing\n"
+     "  --accuracy PCT    2D/axi: refine adaptively until the estimated energy error and\n"
+     "                    the change of the case's adapt.quantities are below PCT percent\n"
+     "                    (overrides the case's adapt:; summary.json gains adapt.passes)\n"
+     "  --max-passes N    adaptive passes at most (default 10); then converged: false\n"
+     "  --max-unknowns N  stop before a pass that would need more unknowns (default 4e6)\n"
      "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"
      "  --param NAME=VALUE  set one of the case file's `parameters:` (repeatable)\n"
      "  Linear 3D cases also run distributed: mpirun -n N magfem solve CASE.yaml --out DIR\n"

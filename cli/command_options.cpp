@@ -1,5 +1,6 @@
 #include "cli/command_options.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -47,10 +48,30 @@ void add_quiet(Table& t) {
   t.flag("--quiet", [](CommandArgs& a, auto&, auto&) { a.quiet = true; });
 }
 
+void add_accuracy(Table& t) {
+  t.value("--accuracy", "PCT", [](CommandArgs& a, const std::string& o, const std::string& v) {
+    a.accuracy_pct = parse_cli_number(o, v);
+    if (!(*a.accuracy_pct > 0 && *a.accuracy_pct < 100))
+      throw_option_error(o, "must be between 0 and 100 (exclusive), in percent");
+  });
+  t.value("--max-passes", "N", [](CommandArgs& a, const std::string& o, const std::string& v) {
+    const double n = parse_cli_number(o, v);
+    if (!(n >= 1) || n != std::floor(n))
+      throw_option_error(o, "must be a whole number >= 1");
+    a.max_passes = static_cast<int>(n);
+  });
+  t.value("--max-unknowns", "N", [](CommandArgs& a, const std::string& o, const std::string& v) {
+    a.max_unknowns = parse_cli_number(o, v);
+    if (!(*a.max_unknowns > 0))
+      throw_option_error(o, "must be positive");
+  });
+}
+
 Table solve_table() {
   Table t("solve");
   add_out(t);
   add_mesh(t);
+  add_accuracy(t);
   add_param(t);
   add_quiet(t);
   return t;

@@ -2,6 +2,7 @@
 // The options of the commands the front end runs itself (solve, analytic, compare, sweep),
 // each command with its own table: an option another command takes is refused here, not
 // silently ignored. study, optimize, actuator and validate parse theirs in their folders.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct CommandArgs {
   bool resume = false; // sweep: continue from the checkpoint in --out
   bool quiet = false;  // no progress lines on stderr
   int jobs = 0;
+  // solve --accuracy / --max-passes / --max-unknowns: override the case file's adapt:
+  std::optional<double> accuracy_pct, max_unknowns;
+  std::optional<int> max_passes;
 };
 
 CommandArgs parse_command_args(int argc, char** argv);

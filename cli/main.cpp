@@ -21,6 +21,7 @@
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
+#include "pipeline/adapt2d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/run2d.hpp"
@@ -63,10 +64,30 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
   return 0;
 }
 
+// The command line's --accuracy / --max-passes / --max-unknowns over the case file's adapt:.
+void apply_adapt_options(const Args& args, magfem::CaseSpec& spec) {
+  if (spec.dimension == 3 && args.accuracy_pct)
+    throw magfem::InputError("<command line>", 0, "--accuracy",
+                             "adaptive refinement is for 2D and axisymmetric cases only for now "
+                             "(3D results report their estimated error; refine them with "
+                             "--mesh-scale)");
+  if (args.accuracy_pct)
+    spec.adapt.accuracy_pct = *args.accuracy_pct;
+  if ((args.max_passes || args.max_unknowns) && !spec.adapt.enabled())
+    throw magfem::InputError("<command line>", 0,
+                             args.max_passes ? "--max-passes" : "--max-unknowns",
+                             "applies to adaptive solves: give --accuracy or an adapt: section");
+  if (args.max_passes)
+    spec.adapt.max_passes = *args.max_passes;
+  if (args.max_unknowns)
+    spec.adapt.max_unknowns = *args.max_unknowns;
+}
+
 int run_solve(const Args& args) {
   // Under mpirun: MPI starts here, before anything can fail on one process only.
   const magfem::MpiWorld world = magfem::join_mpi_world();
   auto spec = magfem::read_case(args.case_file, args.parameters);
+  apply_adapt_options(args, spec);
   magfem::Progress progress;
   magfem::RunOverrides overrides = args.overrides;
   if (!args.quiet && world.is_root())
@@ -83,7 +104,13 @@ int run_solve(const Args& args) {
   }
   if (spec.dimension == 3)
     return run_solve_3d(args, std::move(spec), overrides);
-  auto run = magfem::run_case_2d(std::move(spec), overrides);
+  auto run = spec.adapt.enabled() ? magfem::run_adaptive_2d(spec, overrides,
+                                                            [](const magfem::AdaptPass2D& p) {
+                                                              std::cout
+                                                                  << magfem::describe_adapt_pass(p)
+                                                                  << std::flush;
+                                                            })
+                                  : magfem::run_case_2d(std::move(spec), overrides);
   std::cout << magfem::describe_run_2d(*run);
   print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
   return 0;

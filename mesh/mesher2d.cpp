@@ -365,7 +365,7 @@ void check_mesh(const Mesh2D& mesh, const Geometry2D& g) {
 
 } // namespace
 
-Mesh2D build_mesh_2d(const Geometry2D& g) {
+Mesh2D build_mesh_2d(const Geometry2D& g, const SizeField2D* refine_sizes) {
   // Pass 1 cuts every outline to its own region's size.
   const RegionMap2D coarse(g, [&g](int region, const Vec2&) {
     const MeshOptions2D& o = g.options;
@@ -384,7 +384,7 @@ Mesh2D build_mesh_2d(const Geometry2D& g) {
     insert_outlines(cdt, map, merge_distance(g), g.symmetry == Symmetry2D::axisymmetric);
     classify(cdt, map);
     drop_hidden_constraints(cdt);
-    refine(cdt, g, field);
+    refine(cdt, g, refine_sizes ? *refine_sizes : field);
     classify(cdt, map);
     Mesh2D mesh = export_mesh(cdt, g, map);
     check_mesh(mesh, g);

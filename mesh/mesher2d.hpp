@@ -43,9 +43,15 @@
 // vertices, or a mesh CGAL cannot build.
 #include "mesh/geometry2d.hpp"
 #include "mesh/mesh2d.hpp"
+#include "mesh/size_field2d.hpp"
 
 namespace magfem {
 
-Mesh2D build_mesh_2d(const Geometry2D& geometry);
+// refine_sizes (adaptive refinement, adaptive_size2d.hpp): when given, it replaces the graded
+// field as the size bound of the Delaunay refinement, while the outlines are still cut to the
+// case's own sizes. So every pass of an adaptive run meshes the same polygons (the geometry
+// error is the chord tolerance's business, fixed by the case) and differences between passes
+// are discretisation error only. CGAL still splits boundary chords (on the chord) as needed.
+Mesh2D build_mesh_2d(const Geometry2D& geometry, const SizeField2D* refine_sizes = nullptr);
 
 } // namespace magfem

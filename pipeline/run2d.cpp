@@ -1,6 +1,7 @@
 #include "pipeline/run2d.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -30,9 +31,9 @@ double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-Mesh2D mesh_case(const CaseSpec& spec) {
+Mesh2D mesh_case(const CaseSpec& spec, const SizeField2D* refine_sizes) {
   try {
-    return build_mesh_2d(spec.geometry2d);
+    return build_mesh_2d(spec.geometry2d, refine_sizes);
   } catch (const MeshError& e) {
     throw_mesh_error_2d(spec, e);
   }
@@ -86,6 +87,16 @@ std::vector<CoilResult2D> coil_results(const Run2D& run) {
   return out;
 }
 
+// The per-element indicator eta_K^2 (J/m planar, J axisymmetric) as cell data, in the order
+// of make_vtu_2d's cells (the shell is not written).
+void add_error_indicator(VtuGrid& grid, const Run2D& run) {
+  VtuArray a{"error_indicator", 1, {}};
+  for (std::size_t t = 0; t < run.mesh.n_triangles(); ++t)
+    if (!run.problem.is_shell(t))
+      a.values.push_back(run.error.eta2[t]);
+  grid.cell_data.push_back(std::move(a));
+}
+
 nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
   auto j = nlohmann::ordered_json::array();
   for (const auto& c : coils)
@@ -94,6 +105,37 @@ nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
                  {"current_A", c.current_A},
                  {"flux_linkage_Wb", c.flux_linkage_Wb},
                  {"inductance_H", c.inductance_H}});
+  return j;
+}
+
+// NaN (not known on the first pass) as null.
+nlohmann::ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json adapt_json(const AdaptHistory2D& h) {
+  nlohmann::ordered_json j;
+  j["accuracy_pct"] = h.accuracy_pct;
+  j["converged"] = h.converged;
+  if (!h.converged)
+    j["stop_reason"] = h.stop_reason;
+  j["passes"] = nlohmann::ordered_json::array();
+  for (const auto& p : h.passes) {
+    nlohmann::ordered_json q = nlohmann::ordered_json::object(), e = q;
+    for (std::size_t i = 0; i < p.quantities.size(); ++i) {
+      q[p.quantities[i].first] = p.quantities[i].second;
+      e[p.quantities[i].first] = number_or_null(p.quantity_error_pct[i]);
+    }
+    j["passes"].push_back({{"pass", p.pass},
+                           {"elements", p.elements},
+                           {"unknowns", p.unknowns},
+                           {"energy_J", p.energy_J},
+                           {"energy_error_pct", p.energy_error_pct},
+                           {"delta_energy_pct", number_or_null(p.delta_energy_pct)},
+                           {"quantities", q},
+                           {"quantity_error_pct", e},
+                           {"seconds", p.seconds}});
+  }
   return j;
 }
 
@@ -127,7 +169,7 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
 
 Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides) {
   apply_overrides(spec, overrides);
-  return mesh_case(spec);
+  return mesh_case(spec, overrides.refine_sizes);
 }
 
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
@@ -147,7 +189,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
 
   auto t0 = Clock::now();
   stage("meshing");
-  run->mesh = mesh_case(run->spec);
+  run->mesh = mesh_case(run->spec, ov.refine_sizes);
   run->timings.mesh = since(t0);
   check_stress_surfaces_2d(run->spec, run->mesh); // before the solve: fail fast
 
@@ -175,6 +217,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   for (const auto& r : run->spec.regions)
     names.push_back(r.name);
   run->energy = summarize_energy_2d(*run->field, names);
+  run->error = estimate_error_2d(*run->field, run->energy.total_J_per_m);
   const PointLocator2D locator(run->mesh);
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
@@ -204,8 +247,9 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
         material_names.push_back(r.material->name);
       material_of_part.push_back(it->second);
     }
-    write_vtu(stage.path_for("solution.vtu").string(),
-              make_vtu_2d(*run.field, material_of_part, 0, material_names));
+    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
+    add_error_indicator(grid, run);
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
     if (run.spec.write_revolved_vtu)
       write_vtu(stage.path_for("solution_revolved.vtu").string(),
                 make_vtu_revolved(*run.field, material_of_part, 0, material_names));
@@ -230,6 +274,9 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   j["energy_per"] = axi                         ? "body of revolution"
                     : run.spec.stack_length > 0 ? "stack"
                                                 : "metre of length";
+  j["error_estimate"] = {{"energy_error_pct", run.error.energy_error_pct},
+                         {"energy_norm_error_pct", run.error.energy_norm_error_pct},
+                         {"indicator", run.error.indicator}};
   j["converged"] = run.report.converged;
   j["iterations"] = run.report.iterations;
   j["residual_history"] = run.report.residual_history;
@@ -263,6 +310,8 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   }
   if (!run.coils.empty())
     j["coils"] = coils_json(run.coils);
+  if (run.adapt)
+    j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
@@ -282,6 +331,16 @@ std::string describe_run_2d(const Run2D& run) {
   std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
                 run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
   s += buf;
+  std::snprintf(
+      buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
+      run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
+  s += buf;
+  if (run.adapt) {
+    const auto& a = *run.adapt;
+    std::snprintf(buf, sizeof buf, "adapt    %s %.3g %% after %zu pass(es)\n",
+                  a.converged ? "reached" : "did NOT reach", a.accuracy_pct, a.passes.size());
+    s += buf;
+  }
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.area_m2 > 0) {
       std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),

@@ -3,6 +3,7 @@
 // A library (not just main) so that tests run whole cases in-process.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,8 +11,10 @@
 #include "core/progress.hpp"
 #include "mesh/mesh2d.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/size_field2d.hpp"
 #include "pipeline/force_results.hpp"
 #include "postproc/energy2d.hpp"
+#include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
 #include "postproc/probe_table.hpp"
 #include "solver/dof_map2d.hpp"
@@ -38,6 +41,9 @@ struct RunOverrides {
   double shared_memory_mb = 0;
   // The processes of an mpirun solving this case together (3D linear cases only; run3d.hpp).
   MpiWorld world{};
+  // Adaptive refinement (adapt2d.hpp): the size bound of the mesher's refinement for this
+  // pass (not owned; null = the case's sizes).
+  const SizeField2D* refine_sizes = nullptr;
 };
 
 // An axisymmetric coil (region with turns and current): its flux linkage with the total field
@@ -45,6 +51,26 @@ struct RunOverrides {
 struct CoilResult2D {
   std::string name;
   double turns = 0, current_A = 0, flux_linkage_Wb = 0, inductance_H = 0;
+};
+
+// One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
+struct AdaptPass2D {
+  int pass = 0;
+  std::size_t elements = 0;
+  int unknowns = 0;
+  double energy_J = 0;         // as summary.json energy_J (per metre, stack or revolution)
+  double energy_error_pct = 0; // the estimator's (error_estimate2d.hpp)
+  double delta_energy_pct = 0; // |W - W_previous| / W; NaN on the first pass
+  std::vector<std::pair<std::string, double>> quantities; // the named quantities' values
+  std::vector<double> quantity_error_pct; // their estimated relative errors (NaN: unknown yet)
+  double seconds = 0;
+};
+
+struct AdaptHistory2D {
+  double accuracy_pct = 0;
+  bool converged = false;
+  std::string stop_reason; // why it stopped without converging (empty when converged)
+  std::vector<AdaptPass2D> passes;
 };
 
 struct Run2D {
@@ -55,11 +81,13 @@ struct Run2D {
   std::unique_ptr<Field2D> field;
   NewtonReport report;
   EnergySummary2D energy;
+  ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
   std::vector<CoilResult2D> coils;   // axisymmetric only
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
+  std::optional<AdaptHistory2D> adapt; // set by run_adaptive_2d (adapt2d.hpp)
 };
 
 // A mesher error (bad part) as the InputError naming the case file's region and field.

@@ -19,7 +19,7 @@ _magfem() {
     --axis | --plane) COMPREPLY=($(compgen -W "x y z" -- "$cur")); return ;;
     --tier) COMPREPLY=($(compgen -W "quick full" -- "$cur")); return ;;
     --mesh-scale | --max-memory | --tolerance | --n-max | --rotate | --move | --angles | --positions | --point | --surface-radius | \
-      --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature | --coil-pitch | --constraint) return ;;
+      --jobs | --only | --source | --param | --vary | --xtol | --rotor | --orientations | --torque | --coil-quadrature | --coil-pitch | --constraint | --accuracy | --max-passes | --max-unknowns) return ;;
     --export) COMPREPLY=($(compgen -W "steel_1010 steel_1018 M-19 pure_iron" -- "$cur")); return ;;
     --objective | --maximize | --minimize)
       COMPREPLY=($(compgen -W "peak_torque torque_at:" -- "$cur"))
@@ -28,7 +28,7 @@ _magfem() {
   esac
   local options
   case "$command" in
-    solve) options="--out --order --mesh-scale --max-memory --param --quiet --help" ;;
+    solve) options="--out --order --mesh-scale --max-memory --accuracy --max-passes --max-unknowns --param --quiet --help" ;;
     mesh) options="--out --order --mesh-scale --plane --param --help" ;;
     analytic) options="--out --model --tolerance --n-max --param --help" ;;
     compare) options="--help" ;;

@@ -1,0 +1,39 @@
+#pragma once
+// A-posteriori error estimate of a 2D (A_z) or axisymmetric (A_phi) solution: Zienkiewicz-Zhu
+// recovery of B, region by region.
+//
+// Why recovery and not residuals: the P1/P2 B_h is discontinuous across elements, and the
+// exact B is smoother than B_h everywhere except across material interfaces, where only
+// B_n and H_t are continuous. Averaging B_h at the DOF points of each region separately (never
+// across an interface, where B_t jumps by mu_r) gives a recovered B* that is closer to B than
+// B_h is; B* - B_h then measures the error. Residual estimators need constants that depend on
+// the element shape and on mu_r, which would have to be tuned per problem; the recovery needs
+// none and its effectivity is tested against exact answers (tests/postproc/).
+//
+// Per element K (shell elements excluded: their metric maps the exterior to infinity, their
+// size is set by the mesher, and the field there is the smooth far field):
+//   eta_K^2 = integral_K (B* - B_h) . (H(B*) - H(B_h)) dV      (J/m planar, J axisymmetric)
+// with H from the region's law (magnets: the remanence cancels in the difference; soft iron:
+// monotone, so the product is >= 0). For a linear problem solved by Galerkin,
+//   |W - W_h| = (1/2) ||B - B_h||_E^2  exactly,
+// so sum_K eta_K^2 / 2 estimates the error of the stored energy itself; the estimate is
+// reported relative to the energy, and as the relative error in the energy norm.
+#include <string>
+#include <vector>
+
+#include "postproc/field2d.hpp"
+
+namespace magfem {
+
+struct ErrorEstimate2D {
+  std::string indicator = "zz_recovery_per_region"; // summary.json error_estimate.indicator
+  std::vector<double> eta2;         // per triangle: eta_K^2 (J/m planar, J axi; 0 in the shell)
+  double total_eta2 = 0;            // sum of eta2
+  double energy_error_pct = 0;      // 100 * (total_eta2 / 2) / W: estimated relative error of W
+  double energy_norm_error_pct = 0; // 100 * sqrt(total_eta2 / (2 W)): relative energy-norm error
+};
+
+// energy: the solution's stored energy W (J/m planar, J axisymmetric; energy2d.hpp).
+ErrorEstimate2D estimate_error_2d(const Field2D& field, double energy);
+
+} // namespace magfem
