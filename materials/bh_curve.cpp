@@ -272,6 +272,13 @@ void BhCurve::nu_of_b2(double b2, double& nu, double& dnu_db2) const {
   dnu_db2 = -dmu * nu * nu * nu / d;
 }
 
+double BhCurve::peak_permeability() const {
+  double peak = initial_slope();
+  for (std::size_t k = 1; k < h_.size(); ++k)
+    peak = std::max(peak, b_[k] / h_[k]);
+  return peak;
+}
+
 double BhCurve::energy_density(double b) const {
   static constexpr std::array<double, 8> x = {
       -0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,

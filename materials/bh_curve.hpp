@@ -54,9 +54,9 @@ public:
 
   // Negative arguments are accepted: the curve is odd (b_of_h(-h) = -b_of_h(h), likewise
   // h_of_b) and the derivatives are even.
-  double b_of_h(double h) const;    // h >= 0
+  double b_of_h(double h) const; // h >= 0
   double dbdh(double h) const;
-  double h_of_b(double b) const;    // b >= 0
+  double h_of_b(double b) const; // b >= 0
   double dhdb(double b) const;
   // Stored energy density integral_0^|b| h(b') db' (J/m^3): 8-point Gauss-Legendre on each
   // piece between the table's B values (the curve is smooth between them, not across them, nor
@@ -74,6 +74,8 @@ public:
   const std::vector<double>& b_table() const { return b_; }
   // dB/dH at H = 0 in H/m (the permeability the curve starts with; >= mu0).
   double initial_slope() const { return slope_b_.front(); }
+  // The largest secant permeability B/H over the table's points in H/m (>= initial_slope).
+  double peak_permeability() const;
 
 private:
   std::vector<double> h_, b_;

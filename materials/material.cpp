@@ -29,6 +29,12 @@ void Material::permeability(double h2, double& mu, double& dmu_dh2) const {
   dmu_dh2 = 0.0;
 }
 
+double Material::start_permeability() const {
+  if (kind != MaterialKind::soft)
+    return mu0 * mu_r;
+  return curve->peak_permeability();
+}
+
 Material Material::make_linear(std::string name, double mu_r, std::string source) {
   Material m;
   m.name = std::move(name);

@@ -81,7 +81,7 @@ Eigen::VectorXd Assembler3D::restrict_to_free(const Eigen::VectorXd& phi_full) c
 }
 
 void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double* re, double* ke,
-                          TangentKind kind) const {
+                          TangentKind kind, bool start_law) const {
   const auto& mesh = *problem_.mesh;
   const auto& tet = mesh.tets[t];
   const auto& nodes = mesh.nodes;
@@ -147,7 +147,10 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
       if (source_inside) // nonlinear: the degree of the source table's rule
         h += src->table.H(t, static_cast<int>(qi));
       double mu = 0, dmu = 0;
-      mat.permeability(h.squaredNorm(), mu, dmu);
+      if (start_law)
+        mu = mat.start_permeability();
+      else
+        mat.permeability(h.squaredNorm(), mu, dmu);
       flux = -mu * h;
       if (mat.is_magnet())
         flux -= mat.B_r * phys.magnetization.unit_at(x);
@@ -179,6 +182,20 @@ int Assembler3D::loop_threads() const {
 
 void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                            Eigen::SparseMatrix<double>* matrix, TangentKind kind) const {
+  assemble(u, residual, matrix, kind, false);
+}
+
+bool Assembler3D::start_problem(Eigen::VectorXd& residual,
+                                Eigen::SparseMatrix<double>& matrix) const {
+  if (linear_)
+    return false;
+  assemble(Eigen::VectorXd::Zero(n_eqs_), residual, &matrix, TangentKind::newton, true);
+  return true;
+}
+
+void Assembler3D::assemble(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
+                           Eigen::SparseMatrix<double>* matrix, TangentKind kind,
+                           bool start_law) const {
   const Eigen::VectorXd phi_full = expand(u);
   residual = Eigen::VectorXd::Zero(n_eqs_);
   if (matrix)
@@ -192,7 +209,7 @@ void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   parallel_element_scatter(
       problem_.mesh->n_tets(), n + (matrix ? n * n : 0), n_eqs_, loop_threads(),
       [&](std::size_t t, double* out) {
-        element(t, phi_full, out, matrix ? out + n : nullptr, kind);
+        element(t, phi_full, out, matrix ? out + n : nullptr, kind, start_law);
       },
       [&](std::size_t t, const double* re, std::size_t lo, std::size_t hi) {
         const int* eq = &element_eqs_[t * n];

@@ -37,6 +37,9 @@ public:
   void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                 Eigen::SparseMatrix<double>* matrix, TangentKind kind) const override;
   double load_norm() const override { return load_norm_; }
+  // Nonlinear problems: the residual at u = 0 and the matrix of the problem in which every
+  // soft material has its start permeability (Material::start_permeability).
+  bool start_problem(Eigen::VectorXd& residual, Eigen::SparseMatrix<double>& matrix) const override;
   int threads() const { return loop_threads(); } // of the element loops
 
   // Free-DOF vector -> all DOFs (constrained ones are zero) and back.
@@ -51,11 +54,14 @@ public:
   const std::vector<int>& dof_to_equation() const { return dof_to_eq_; }
 
   // Element residual re (n) and, if ke != nullptr, tangent ke (n x n, row major) of tet t at
-  // the full DOF vector phi_full. Public for tests.
+  // the full DOF vector phi_full. Public for tests. `start_law`: soft materials take their
+  // start permeability (a linear law) instead of their B-H curve.
   void element(std::size_t t, const Eigen::VectorXd& phi_full, double* re, double* ke,
-               TangentKind kind) const;
+               TangentKind kind, bool start_law = false) const;
 
 private:
+  void assemble(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
+                Eigen::SparseMatrix<double>* matrix, TangentKind kind, bool start_law) const;
   // -integral mu H_0 . grad N_i over the reduced elements (H_0 = coil field), per equation.
   Eigen::VectorXd source_load(int coil) const; // coil < 0: all coils at their currents
   void element_source(std::size_t t, int coil, double* re) const;

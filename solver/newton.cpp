@@ -88,9 +88,40 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
   }
 
   const TangentKind kind = system.is_linear() ? TangentKind::newton : options.method;
+  // Iteration 1 may be the start problem's solve instead of a Newton step.
+  int first = 1;
+  if (options.linear_start && !system.is_linear() && u.isZero(0)) {
+    Eigen::VectorXd r0;
+    Eigen::SparseMatrix<double> k0;
+    if (system.start_problem(r0, k0)) {
+      t0 = Clock::now();
+      // Only a starting point: a loose Krylov solve will do (the loop resets the tolerance).
+      if (options.forcing_max > 0)
+        linear.set_cg_tolerance(std::max(options.linear.cg_tolerance, options.forcing_max));
+      linear.factorize(k0);
+      u = linear.solve(-r0);
+      if (options.forcing_max > 0)
+        linear.set_cg_tolerance(options.linear.cg_tolerance);
+      report.solve_s += seconds_since(t0);
+      report.linear_iterations += linear.last_iterations();
+      t0 = Clock::now();
+      system.evaluate(u, r, &k, kind);
+      report.assemble_s += seconds_since(t0);
+      r_norm = r.norm();
+      report.residual_history.push_back(r_norm / scale);
+      report.step_lengths.push_back(1.0);
+      report.iterations = first++;
+      if (Progress* p = options.linear.progress) {
+        char line[120];
+        std::snprintf(line, sizeof line, "Newton start (linear solve): relative residual %.3e",
+                      r_norm / scale);
+        p->note(line);
+      }
+    }
+  }
   const double tight = options.linear.cg_tolerance;
   double forcing = options.forcing_max, previous_r_norm = r_norm;
-  for (int it = 1; it <= options.max_iterations; ++it) {
+  for (int it = first; it <= options.max_iterations; ++it) {
     t0 = Clock::now();
     if (!system.is_linear() && options.forcing_max > 0) {
       if (it > 1) { // Eisenstat-Walker choice 2 (gamma 0.9, alpha 2) with its safeguard

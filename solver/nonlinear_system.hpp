@@ -20,6 +20,12 @@ public:
                         Eigen::SparseMatrix<double>* matrix, TangentKind kind) const = 0;
   // Norm of the external load, the scale for relative residuals.
   virtual double load_norm() const = 0;
+  // A linear problem K u0 = -r whose solution is a better place for Newton to start than
+  // u = 0: fills r and K (lower triangle) and returns true, or returns false (start at zero).
+  virtual bool start_problem(Eigen::VectorXd& /*residual*/,
+                             Eigen::SparseMatrix<double>& /*matrix*/) const {
+    return false;
+  }
 };
 
 } // namespace magfem
