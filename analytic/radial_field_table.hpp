@@ -10,7 +10,7 @@
 //
 // Interpolation: 4 x 4 Lagrange (cubic) in (theta, phi) on an equal-angle grid, periodic in phi
 // and continued over the poles by f(-theta, phi) = f(theta, phi + pi). The step is what the
-// caller trades for accuracy (tests/app/test_actuator_coil_pitch.cpp measures it).
+// caller trades for accuracy (tests/studies/test_actuator_coil_pitch.cpp measures it).
 #include <vector>
 
 #include <Eigen/Core>

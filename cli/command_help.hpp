@@ -1,7 +1,7 @@
 #pragma once
 // Usage text: the overview (`magfem --help`) and one page per command (`magfem help COMMAND`,
 // `magfem COMMAND --help`). The bash completion (scripts/magfem-completion.bash) offers the
-// same commands and options; tests/app/test_cli_install checks that the two agree.
+// same commands and options; tests/install/check_completion.sh checks that the two agree (and both against the option tables).
 #include <optional>
 #include <string>
 #include <vector>

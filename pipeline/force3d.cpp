@@ -114,7 +114,7 @@ void set_estimate(ForceResult& r, const ForceTorque& element, const ForceTorque&
 // element B (discontinuous) and the patch-recovered B* converge to the same field, and for
 // the exact field all three integrals agree, so their disagreement measures the
 // discretization error on the surface. Neither difference alone is reliable: on the
-// compensator at 90 deg (tests/app/test_error_estimate_fe3d.cpp) B* is not better than the
+// compensator at 90 deg (tests/studies/test_error_estimate_fe3d.cpp) B* is not better than the
 // average in a one-element-layer air gap (every gap vertex is on a magnet, its patch
 // one-sided), and |F(B*) - F| alone was 4x below the true torque error at mesh scales 1.6..3;
 // |F_element - F| alone 1.1..1.8x below; the spread 0.87..1.3x the true error.

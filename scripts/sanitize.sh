@@ -4,7 +4,7 @@
 #   scripts/sanitize.sh            all targets; the unit and example tests (ctest -L)
 #   scripts/sanitize.sh --parsers  only the input readers (core, materials, casefile) and their
 #                                  tests: no CGAL/TetGen/VTK code, small enough for CI
-# Extra arguments after the mode go to ctest (full mode), e.g. -R test_app_cli.
+# Extra arguments after the mode go to ctest (full mode), e.g. -R test_cli_cli.
 # Reports from third-party code are suppressed in tests/sanitize/*.supp, each with its reason.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -58,7 +58,7 @@ struct CoilPitchStudy {
 
 // Table step of the rotor's B_r (degrees). Largest torque-constant error against the charge
 // model at every quadrature point, relative to the largest constant (12 coils at 52 deg, three
-// orientations; tests/app/test_actuator_coil_pitch.cpp): 2 deg 8e-4, 1 deg 7e-5, 0.5 deg 6e-6.
+// orientations; tests/studies/test_actuator_coil_pitch.cpp): 2 deg 8e-4, 1 deg 7e-5, 0.5 deg 6e-6.
 // 1 deg is well below the coil quadrature's own 1e-3 (analytic/torque_constants.hpp).
 inline constexpr double coil_pitch_table_step_deg = 1.0;
 

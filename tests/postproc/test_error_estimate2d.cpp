@@ -18,7 +18,7 @@
 
 #include "pipeline/adapt2d.hpp"
 #include "core/constants.hpp"
-#include "tests/app/case_helpers.hpp"
+#include "tests/case_helpers.hpp"
 #include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;

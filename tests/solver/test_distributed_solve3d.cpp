@@ -1,6 +1,6 @@
 // The element shares of a distributed solve: every tetrahedron assembled by exactly one
 // process, in contiguous ranges whose sizes differ by at most one. (The distributed solve
-// itself runs under mpirun in tests/app/test_mpi.cpp.)
+// itself runs under mpirun in tests/cli/test_mpi.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>

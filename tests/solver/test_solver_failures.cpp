@@ -2,7 +2,7 @@
 // matrix that is not positive definite, CG (incomplete Cholesky or AMG) stopped by its
 // iteration limit or by an indefinite system, a PETSc "solve" that stopped without reaching
 // the tolerance (caught by the true residual), Newton at its iteration limit and on a
-// non-finite residual. (The CLI maps these to exit 3 with no outputs: tests/app/test_cli.cpp.)
+// non-finite residual. (The CLI maps these to exit 3 with no outputs: tests/cli/test_cli.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>

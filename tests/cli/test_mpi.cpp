@@ -1,0 +1,183 @@
+// `mpirun -n 2 magfem solve` against the serial run of the same small linear 3D case
+// (examples/3d/magnet_and_ball_small.yaml): both succeed, summary.json says 1 and 2 ranks, the
+// energy and every probe value agree to the solver tolerance, and the distributed run wrote
+// one set of outputs and printed one report. Cases the distributed mode refuses end quickly
+// with exit 2 on every process instead of hanging; a Krylov failure with exit 3.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/case_helpers.hpp"
+#include "postproc/probe_compare.hpp"
+#include "tests/run_cli.hpp"
+
+namespace fs = std::filesystem;
+using magfem::test::CliOutcome;
+
+namespace {
+
+// Both runs stop CG at |b - A x| <= 1e-12 |b| (the case's linear_tolerance), so the two
+// solutions differ by e with |A e| <= 2e-12 |b|, i.e. |e| / |x| <= 2e-12 cond(A). For this P1
+// mesh with its mu_r 100 ball and open-boundary shell cond(A) is below ~1e5, so the fields
+// (and the energy, a smooth function of them) agree to ~2e-7 in the worst case; 1e-6 leaves
+// room for the probe files' printed digits. An assembly or gather error (a rank's elements
+// twice or missing, a solution block misplaced) changes them by percents.
+constexpr double agreement_tol = 1e-6;
+
+// A fresh output folder of this test process (several worktrees may run the suite at once).
+fs::path fresh_dir(const std::string& name) {
+  const auto dir =
+      fs::temp_directory_path() / "magfem_tests" / ("mpi_" + std::to_string(getpid())) / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string mpirun_path() {
+  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"})
+    if (fs::exists(fs::path(dir) / "mpirun"))
+      return (fs::path(dir) / "mpirun").string();
+  return "";
+}
+
+// `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
+// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both.
+CliOutcome run_mpi(int n, const std::string& args) {
+  std::string cmd = mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
+  if (geteuid() == 0) {
+    cmd += "--allow-run-as-root ";
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  }
+  return magfem::test::run_command(cmd + magfem::test::magfem_binary() + " " + args);
+}
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+// Largest |a - b| over the B columns of two probe tables, relative to the largest |B| there.
+double probe_difference(const magfem::ProbeTable& a, const magfem::ProbeTable& b) {
+  EXPECT_EQ(a.columns, b.columns);
+  EXPECT_EQ(a.rows.size(), b.rows.size());
+  double diff = 0, scale = 0;
+  for (const char* c : {"Bx", "By", "Bz"}) {
+    const std::size_t k = a.column(c);
+    for (std::size_t i = 0; i < std::min(a.rows.size(), b.rows.size()); ++i) {
+      diff = std::max(diff, std::abs(a.rows[i][k] - b.rows[i][k]));
+      scale = std::max(scale, std::abs(a.rows[i][k]));
+    }
+  }
+  return scale > 0 ? diff / scale : diff;
+}
+
+class Mpi : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (mpirun_path().empty())
+      GTEST_SKIP() << "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
+  }
+};
+
+TEST_F(Mpi, TwoRanksGiveTheSerialFieldWithOneSetOfOutputs) {
+  const std::string example = magfem::test::example("3d/magnet_and_ball_small.yaml");
+  const fs::path serial_dir = fresh_dir("serial"), mpi_dir = fresh_dir("two_ranks");
+  const CliOutcome serial =
+      magfem::test::run_cli("solve " + example + " --out " + serial_dir.string());
+  ASSERT_EQ(serial.status, 0) << serial.out;
+  const CliOutcome mpi = run_mpi(2, "solve " + example + " --out " + mpi_dir.string());
+  ASSERT_EQ(mpi.status, 0) << mpi.out;
+
+  const auto s = read_json(serial_dir / "summary.json");
+  const auto m = read_json(mpi_dir / "summary.json");
+  EXPECT_EQ(s["ranks"], 1);
+  EXPECT_EQ(m["ranks"], 2);
+  EXPECT_EQ(m["unknowns"], s["unknowns"]);
+  EXPECT_EQ(m["linear_solver"], "cg");
+  EXPECT_EQ(m["preconditioner"], "boomeramg");
+  const double e_serial = s["energy_J"], e_mpi = m["energy_J"];
+  const double energy_rel = std::abs(e_mpi - e_serial) / std::abs(e_serial);
+  EXPECT_LE(energy_rel, agreement_tol) << e_serial << " J serially, " << e_mpi << " J on 2 ranks";
+  std::printf("energy: serial %.15g J, 2 ranks %.15g J, relative difference %.2e (tolerance "
+              "%.0e)\n",
+              e_serial, e_mpi, energy_rel, agreement_tol);
+
+  ASSERT_FALSE(m["probes"].empty());
+  for (const auto& name : m["probes"]) {
+    const std::string file = name;
+    const double d = probe_difference(magfem::read_probe_csv((serial_dir / file).string()),
+                                      magfem::read_probe_csv((mpi_dir / file).string()));
+    EXPECT_LE(d, agreement_tol) << file;
+    std::printf("%s: largest B difference %.2e of the largest |B|\n", file.c_str(), d);
+  }
+
+  // One set of outputs: exactly the serial run's files, no staging folder or stray copy left
+  // by a second writer; one report on the console.
+  std::set<std::string> serial_files, mpi_files;
+  for (const auto& e : fs::directory_iterator(serial_dir))
+    serial_files.insert(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(mpi_dir))
+    mpi_files.insert(e.path().filename().string());
+  EXPECT_EQ(mpi_files, serial_files);
+  EXPECT_EQ(count(mpi.out, "wrote    "), 1u) << mpi.out;
+  EXPECT_EQ(count(mpi.out, "energy   "), 1u) << mpi.out;
+  fs::remove_all(serial_dir.parent_path());
+}
+
+// Refusals come before any meshing, on every process alike, with exit 2: never a hang.
+TEST_F(Mpi, RefusedCasesEndWithExitTwo) {
+  const fs::path out = fresh_dir("refused");
+  const CliOutcome nonlinear =
+      run_mpi(2, "solve " + magfem::test::example("3d/team20.yaml") + " --out " + out.string());
+  EXPECT_EQ(nonlinear.status, 2) << nonlinear.out;
+  EXPECT_NE(nonlinear.out.find("not distributed"), std::string::npos) << nonlinear.out;
+  const CliOutcome planar =
+      run_mpi(2, "solve " + magfem::test::example("2d/c_core.yaml") + " --out " + out.string());
+  EXPECT_EQ(planar.status, 2) << planar.out;
+  EXPECT_NE(planar.out.find("without mpirun"), std::string::npos) << planar.out;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  fs::remove_all(out.parent_path());
+}
+
+// A CG that stops on its iteration limit is a solver failure on every process alike: exit 3,
+// no outputs, no process left waiting.
+TEST_F(Mpi, KrylovFailureIsExitThreeWithoutOutputs) {
+  std::ifstream in(magfem::test::example("3d/magnet_and_ball_small.yaml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string tol = "  linear_tolerance: 1e-12";
+  ASSERT_NE(text.find(tol), std::string::npos);
+  text.replace(text.find(tol), tol.size(), "  linear_max_iterations: 3\n" + tol);
+  const fs::path dir = fresh_dir("krylov_failure");
+  fs::create_directories(dir);
+  const fs::path case_file = dir / "three_iterations.yaml";
+  std::ofstream(case_file) << text;
+  const CliOutcome o =
+      run_mpi(2, "solve " + case_file.string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(o.status, 3) << o.out;
+  EXPECT_NE(o.out.find("did not converge"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
+  fs::remove_all(dir.parent_path());
+}
+
+} // namespace

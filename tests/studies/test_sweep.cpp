@@ -1,0 +1,165 @@
+// Sweeps (issue 6): angle lists, group rotation, the separating stress sphere, and the
+// analytic sweep of two uniformly magnetized spheres against the exact dipole-dipole force
+// and torque (the exterior field of a uniformly magnetized sphere is exactly a dipole, and by
+// the mean-value property the force and torque on such a sphere in a harmonic field are
+// exactly those on a point dipole at its centre).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "studies/sweep.hpp"
+#include "tests/case_helpers.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+
+using namespace magfem;
+
+namespace {
+
+// examples/3d/two_spheres.yaml: a fixed sphere (radius 5 mm, B_r 1.2 T along z) at the
+// origin and a sphere of radius 4 mm magnetized along x at (0, 0, 14) mm in group `arm`,
+// meshed for the FE sweep (refined on the stress spheres, ~250k P2 unknowns).
+std::string two_spheres() {
+  return test::example("3d/two_spheres.yaml");
+}
+
+struct Dipole {
+  Eigen::Vector3d m, x;
+};
+
+// Force on b in the field of a, and torque on b about the origin (r x F + m_b x B_a).
+void dipole_dipole(const Dipole& a, const Dipole& b, Eigen::Vector3d& f, Eigen::Vector3d& t) {
+  const Eigen::Vector3d r = b.x - a.x;
+  const double d = r.norm();
+  const Eigen::Vector3d u = r / d;
+  const double k = mu0 / (4 * pi);
+  f = 3 * k / std::pow(d, 4) *
+      (a.m.dot(u) * b.m + b.m.dot(u) * a.m + a.m.dot(b.m) * u - 5 * a.m.dot(u) * b.m.dot(u) * u);
+  const Eigen::Vector3d field = k / std::pow(d, 3) * (3 * u * a.m.dot(u) - a.m);
+  t = b.x.cross(f) + b.m.cross(field);
+}
+
+double moment(double radius, double b_r) {
+  return 4.0 / 3.0 * pi * std::pow(radius, 3) * b_r / mu0;
+}
+
+} // namespace
+
+TEST(Sweep, AngleListsAndAxes) {
+  EXPECT_EQ(parse_angle_list("0:10:180").size(), 19u);
+  EXPECT_DOUBLE_EQ(parse_angle_list("0:10:180").back(), 180.0);
+  EXPECT_EQ(parse_angle_list("0:0.1:1").size(), 11u); // END kept despite round-off
+  EXPECT_EQ(parse_angle_list("5,-3,12.5"), (std::vector<double>{5, -3, 12.5}));
+  EXPECT_THROW(parse_angle_list("0:0:10"), InputError);
+  EXPECT_THROW(parse_angle_list("10:1:0"), InputError);
+  EXPECT_THROW(parse_angle_list("1,x"), InputError);
+  EXPECT_TRUE(parse_axis("y").isApprox(Eigen::Vector3d::UnitY()));
+  EXPECT_NEAR(parse_axis("1,1,0").norm(), 1.0, 1e-15);
+  EXPECT_THROW(parse_axis("0,0,0"), InputError);
+  EXPECT_THROW(parse_axis("w"), InputError);
+}
+
+TEST(Sweep, RotatingAGroupMovesItsPartsAndMagnetizationsOnly) {
+  const auto spec = read_case(two_spheres());
+  const auto turned =
+      rotate_group(spec, "arm", Eigen::Vector3d::UnitY(), pi / 2, Eigen::Vector3d::Zero());
+  // +90 deg about y takes +z to +x and +x to -z (right-hand rule).
+  EXPECT_TRUE(
+      turned.geometry3d.parts[1].placement.translation.isApprox(Eigen::Vector3d(0.014, 0, 0)));
+  EXPECT_TRUE(turned.regions[1].magnetization.direction.isApprox(Eigen::Vector3d(0, 0, -1)));
+  EXPECT_TRUE(turned.geometry3d.parts[0].placement.translation.isZero());
+  EXPECT_TRUE(turned.regions[0].magnetization.direction.isApprox(Eigen::Vector3d::UnitZ()));
+  try {
+    rotate_group(spec, "rotor", Eigen::Vector3d::UnitY(), 0.1, Eigen::Vector3d::Zero());
+    FAIL() << "unknown group accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'arm'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Sweep, StressSphereLiesInTheGapBetweenTheGroupAndTheRest) {
+  const auto spec = read_case(test::example("3d/compensator_table42.yaml"));
+  const auto s = stress_surface(spec, "outer", std::nullopt);
+  EXPECT_TRUE(s.group_outside);
+  // Inner magnet ends at 29 mm, outer starts at 30 mm: the middle is 29.5 mm. The radial
+  // ranges are sampled with a small safety margin, hence 0.1 mm.
+  EXPECT_NEAR(s.radius, 0.0295, 1e-4);
+  EXPECT_THROW(stress_surface(spec, "outer", 0.0305), InputError); // inside the outer magnet
+  EXPECT_NEAR(stress_surface(spec, "outer", 0.0292).radius, 0.0292, 1e-15);
+}
+
+// The two spheres' exact interaction (see the header) at every row of a sweep about `axis`.
+static void expect_dipole_dipole(const std::vector<SweepRow>& rows, const Eigen::Vector3d& axis,
+                                 double tolerance) {
+  for (const auto& row : rows) {
+    ASSERT_TRUE(row.ok) << row.error;
+    const Eigen::Matrix3d r =
+        Eigen::AngleAxisd(row.angle_deg * deg_to_rad, axis).toRotationMatrix();
+    const Dipole a{moment(0.005, 1.2) * Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Zero()};
+    const Dipole b{moment(0.004, 1.2) * (r * Eigen::Vector3d::UnitX()),
+                   r * Eigen::Vector3d(0, 0, 0.014)};
+    Eigen::Vector3d f, t;
+    dipole_dipole(a, b, f, t);
+    EXPECT_LT((row.force - f).norm(), tolerance * f.norm())
+        << row.angle_deg << ": " << row.force.transpose() << " vs " << f.transpose();
+    EXPECT_LT((row.torque - t).norm(), tolerance * t.norm())
+        << row.angle_deg << ": " << row.torque.transpose() << " vs " << t.transpose();
+  }
+}
+
+TEST(Sweep, AnalyticSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
+  const auto spec = read_case(two_spheres());
+  SweepOptions o;
+  o.group = "arm";
+  o.axis = Eigen::Vector3d(0, 1, 1).normalized();
+  o.angles_deg = {0, 40, 135};
+  o.analytic = true;
+  const auto rows = run_sweep(spec, o);
+  ASSERT_EQ(rows.size(), 3u);
+  // The analytic interaction integrates to a relative tolerance of 1e-6 per box; 1e-5
+  // of the magnitude leaves room for the sum of the face contributions.
+  expect_dipole_dipole(rows, o.axis, 1e-5);
+  // The arm sphere is off the centre: not a case for the harmonic form, but it lies outside
+  // the centred sphere (magnetized along its own axis), whose exterior field it sees.
+  EXPECT_EQ(sweep_method(rows, o), "exterior_field_interaction");
+}
+
+TEST(Sweep, AnalyticCompensatorSweepUsesTheHarmonicForm) {
+  // examples/3d/compensator_table42.yaml (concentric hemisphere and hemispherical shell):
+  // the sweep picks the harmonic interaction by itself. 12.3653 N m at 90 deg is the charge
+  // interaction's converged torque on the inner magnet (test_charge_gravity_compensator), so
+  // the outer group feels +12.3653 about y; the two methods agree to ~1e-9
+  // (test_axisymmetric_interaction), 1e-5 N m here is the 6 digits quoted.
+  const auto spec = read_case(test::example("3d/compensator_table42.yaml"));
+  SweepOptions o;
+  o.group = "outer";
+  o.axis = Eigen::Vector3d::UnitY();
+  o.angles_deg = parse_angle_list("0:10:180");
+  o.analytic = true;
+  const auto rows = run_sweep(spec, o);
+  ASSERT_EQ(rows.size(), 19u);
+  EXPECT_EQ(sweep_method(rows, o), "harmonic_interaction");
+  double seconds = 0;
+  for (const auto& r : rows) {
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_LT(r.torque_bound, 1e-6 * 12.37);
+    seconds += r.seconds;
+  }
+  EXPECT_NEAR(rows[9].torque.y(), 12.3653, 1e-4);
+  EXPECT_LT(std::hypot(rows[9].torque.x(), rows[9].torque.z()), 1e-9 * 12.37);
+  EXPECT_NEAR(rows[0].force.z(), -536.315, 1e-3); // the reaction of the 536 N pull on the inner
+  RecordProperty("position_seconds_19", std::to_string(seconds));
+}
+
+TEST(Sweep, FiniteElementSweepOfTwoSpheresIsTheDipoleDipoleInteraction) {
+  const auto spec = read_case(two_spheres());
+  SweepOptions o;
+  o.group = "arm";
+  o.axis = Eigen::Vector3d(0, 1, 1).normalized();
+  o.angles_deg = {0, 135};
+  const auto rows = run_sweep(spec, o); // remeshes each position, stress sphere mid-gap
+  ASSERT_EQ(rows.size(), 2u);
+  // The issue's 0.5 %. Measured on this mesh: at most 0.25 % (force) and 0.2 % (torque),
+  // falling to 0.08 % at 630k unknowns: the error is the P2 field's at the stress sphere.
+  expect_dipole_dipole(rows, o.axis, 5e-3);
+}

@@ -1,0 +1,271 @@
+// `magfem validate` (issue 12): the catalogue reader, the pass/fail rule, the output contract
+// and bad input. The quick subset run (label `validation`) recomputes real figures; the
+// tolerances asserted are the catalogue's own (the runner's status), not numbers typed here.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "validation/validate.hpp"
+#include "validation/validate_report.hpp"
+#include "tests/case_helpers.hpp"
+#include "core/input_error.hpp"
+#include "tests/test_paths.hpp"
+
+using namespace magfem;
+
+namespace {
+
+const std::string catalogue =
+    std::string(magfem::test::source_dir()) + "/validation/catalogue.yaml";
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A temporary catalogue next to which case paths resolve against the source tree.
+std::string write_catalogue(const std::string& name, const std::string& entries) {
+  const auto dir = std::filesystem::temp_directory_path() / "magfem_tests" / "validate";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path) << "entries:\n" << entries;
+  return path.string();
+}
+
+// One Harwin entry (analytic, milliseconds) with a given published value and case line.
+std::string harwin_entry(const std::string& id, double published, const std::string& extra = "") {
+  std::ostringstream s;
+  s << "- id: " << id << "\n"
+    << "  source: 000_4b10982579af20cb.txt\n  section: Fig. 4\n  quantity: fitted current\n"
+    << "  unit: A/rad\n  published: " << published << "\n  tolerance_pct: 10\n"
+    << "  tolerance_reason: test\n"
+    << "  evaluate: {evaluator: harwin_fit_current, eq3_current: 6.6e4, radius_mm: 11.5, "
+       "band_deg: 15"
+    << extra << "}\n";
+  return s.str();
+}
+
+struct CliRun {
+  int code = -1;
+  std::string err;
+};
+
+CliRun run_cli(const std::string& args, const std::string& tag) {
+  const auto err = std::filesystem::temp_directory_path() / ("magfem_validate_" + tag + ".err");
+  const std::string cmd = std::string(magfem::test::magfem_binary()) + " validate " + args +
+                          " > /dev/null 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(err)};
+}
+
+EntryResult judged(CatalogueEntry& e, std::optional<double> fe, std::optional<double> analytic) {
+  EntryResult r;
+  r.entry = &e;
+  r.eval.fe = fe;
+  r.eval.analytic = analytic;
+  r.fe = fe;
+  r.analytic = analytic;
+  judge(r);
+  return r;
+}
+
+} // namespace
+
+TEST(Validate, TheShippedCatalogueReadsAndCoversEverySeed) {
+  const Catalogue c = read_catalogue(catalogue);
+  ASSERT_GT(c.entries.size(), 30u);
+  std::map<std::string, int> per_source;
+  int skipped = 0, findings = 0;
+  for (const auto& e : c.entries) {
+    ++per_source[e.source.substr(0, 3)];
+    skipped += e.expect == CatalogueEntry::Expect::skipped;
+    findings += e.expect == CatalogueEntry::Expect::finding;
+    if (e.expect != CatalogueEntry::Expect::skipped) {
+      EXPECT_TRUE(e.published.has_value()) << e.id;
+      EXPECT_FALSE(e.tolerance_reason.empty()) << e.id;
+    }
+  }
+  for (const char* seed : {"000", "001", "002", "003"})
+    EXPECT_GT(per_source[seed], 0) << "no entry from seed " << seed;
+  EXPECT_GT(skipped, 0);
+  EXPECT_GE(findings, 3); // the +47 % claim and Harwin's real-magnet Table 1
+}
+
+TEST(Validate, JudgeAppliesRelativeAndAtMostTolerances) {
+  CatalogueEntry e;
+  e.id = "x";
+  e.published = 12.0;
+  e.tolerance_pct = 5;
+  EXPECT_EQ(judged(e, 12.5, 11.5).status, "pass");         // 4.2 %, -4.2 %
+  EXPECT_EQ(judged(e, 12.7, std::nullopt).status, "fail"); // 5.8 %
+  EXPECT_EQ(judged(e, std::nullopt, 11.3).status, "fail"); // -5.8 %
+  EXPECT_NEAR(*judged(e, 12.6, std::nullopt).fe_error_pct, 5.0, 1e-12);
+  EXPECT_EQ(judged(e, std::nullopt, std::nullopt).status, "fail"); // nothing computed
+  e.check = CatalogueEntry::Check::at_most; // the value is itself a percentage
+  e.published = 1.0;
+  e.tolerance_pct = 0.5;
+  EXPECT_EQ(judged(e, 0.49, std::nullopt).status, "pass");
+  EXPECT_EQ(judged(e, 0.51, std::nullopt).status, "fail");
+  e.expect = CatalogueEntry::Expect::finding;
+  EXPECT_EQ(judged(e, 30.0, std::nullopt).status, "finding");
+}
+
+TEST(Validate, DiscretisationEstimateIsTheChangeFromTheCoarserMesh) {
+  CatalogueEntry e;
+  e.published = 10.0;
+  e.tolerance_pct = 5;
+  EntryResult r;
+  r.entry = &e;
+  r.eval.fe = r.fe = 10.0;
+  r.eval.fe_coarse = 10.2;
+  judge(r);
+  ASSERT_TRUE(r.discretisation_pct.has_value());
+  EXPECT_NEAR(*r.discretisation_pct, 2.0, 1e-12);
+}
+
+TEST(Validate, CatalogueErrorsNameTheEntry) {
+  const std::string missing = write_catalogue(
+      "missing_case.yaml", harwin_entry("ok.entry", 3.6e4) +
+                               harwin_entry("bad.entry", 3.6e4, ", case: no/such/case.yaml"));
+  try {
+    read_catalogue(missing);
+    FAIL() << "a missing case file must be an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.entry"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no/such/case.yaml"), std::string::npos) << e.what();
+  }
+  const std::string unknown = write_catalogue(
+      "unknown_quantity.yaml",
+      "- {id: q.entry, source: 003_x.txt, section: s, quantity: q, unit: N m, published: 1,\n"
+      "   tolerance_pct: 5, tolerance_reason: r,\n"
+      "   evaluate: {evaluator: compensator_sweep, quantity: torque_91,\n"
+      "              case: " +
+          test::example("3d/compensator_table42.yaml") + "}}\n");
+  try {
+    read_catalogue(unknown);
+    FAIL() << "an unknown quantity must be an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("q.entry"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("torque_91"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Validate, BadInputExitsWithCode2NamingTheCulprit) {
+  const auto out = std::filesystem::temp_directory_path() / "magfem_validate_bad";
+  std::filesystem::remove_all(out);
+  CliRun r = run_cli("--only no.such.entry --out " + out.string(), "only");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no.such.entry"), std::string::npos) << r.err;
+  const std::string missing = write_catalogue(
+      "cli_missing_case.yaml", harwin_entry("bad.case.entry", 3.6e4, ", case: missing.yaml"));
+  r = run_cli("--catalogue " + missing + " --out " + out.string(), "missing");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("bad.case.entry"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "results.csv")) << "bad input writes nothing";
+}
+
+TEST(Validate, AFailingEntryExitsWith4AndDoesNotStopTheOthers) {
+  // Published value off by far more than the 10 % tolerance: that entry fails, the next passes.
+  const std::string cat = write_catalogue("one_fails.yaml", harwin_entry("wrong.value", 9e4) +
+                                                                harwin_entry("right.value", 3.6e4));
+  const auto out = std::filesystem::temp_directory_path() / "magfem_validate_fail";
+  std::filesystem::remove_all(out);
+  const CliRun r = run_cli("--catalogue " + cat + " --out " + out.string(), "fail");
+  EXPECT_EQ(r.code, 4);
+  EXPECT_NE(r.err.find("wrong.value"), std::string::npos) << r.err;
+  const std::string csv = read_text(out / "results.csv");
+  EXPECT_NE(csv.find("wrong.value"), std::string::npos);
+  EXPECT_NE(csv.find(",fail,"), std::string::npos);
+  EXPECT_NE(csv.find(",pass,"), std::string::npos) << "the second entry still ran";
+}
+
+// The quick tier on a subset that exercises every evaluator kind: analytic closed forms and
+// 2D FE (Harwin), the charge interaction (compensator), the harmonic and charge models
+// (32-magnet benchmark). Exit 0, the contract columns, no `fail`, all four reports.
+TEST(Validate, QuickSubsetPassesWithTheContractColumns) {
+  const auto out = std::filesystem::temp_directory_path() / "magfem_validate_quick";
+  std::filesystem::remove_all(out);
+  const CliRun r = run_cli("--tier quick --jobs 2 --out " + out.string() +
+                               " --only harwin.fig4.fitted_current,harwin.t1.paper.max_ratio_8,"
+                               "harwin.t1.paper.max_over_mean_2,harwin.t1.real_magnet.max_ratio_8,"
+                               "thesis.c4.t42.zero_force_angle,thesis.c4.bonded_both.torque_90,"
+                               "thesis.b32.harmonic_vs_charge.B_rho,thesis.b32.cost.unbounded,"
+                               "thesis.c5.backiron_field.fe_segmented",
+                           "quick");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string csv = read_text(out / "results.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), validation_csv_header);
+  EXPECT_EQ(std::string(validation_csv_header),
+            "id,source,section,quantity,unit,published,fe,analytic,tolerance_pct,fe_error_pct,"
+            "analytic_error_pct,status,seconds");
+  EXPECT_EQ(csv.find(",fail,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",finding,"), std::string::npos);
+  EXPECT_NE(csv.find(",skipped,"), std::string::npos);
+  int rows = 0;
+  for (char c : csv)
+    rows += c == '\n';
+  EXPECT_EQ(rows, 10); // header + 9 entries
+  for (const char* f : {"results.json", "report.md", "report.html"})
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  const std::string json = read_text(out / "results.json");
+  EXPECT_NE(json.find("\"magfem_version\""), std::string::npos);
+  EXPECT_NE(json.find("\"git_commit\""), std::string::npos);
+  EXPECT_NE(json.find("\"unknowns\""), std::string::npos) << "FE sizes recorded";
+  const std::string html = read_text(out / "report.html");
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_EQ(html.find("http://"), html.find("http://www.w3.org/2000/svg"))
+      << "no network resources";
+}
+
+// Thesis sec. 5.3.3 through `magfem validate` (validation/validate_eval_thesis_ch5.cpp): the peak
+// mid-gap B_r with back-iron behind the magnets (+26 %) and behind magnets and coils (+80 %)
+// by the charge model with imaging; both within paper_targets D's 3 points (measured +24.8 %
+// and +82.1 %). Seconds.
+TEST(Validate, ActuatorBackIronFieldIncrease) {
+  const auto out = std::filesystem::temp_directory_path() / "magfem_validate_backiron";
+  std::filesystem::remove_all(out);
+  const CliRun r = run_cli("--out " + out.string() +
+                               " --only thesis.c5.backiron_field.magnet,"
+                               "thesis.c5.backiron_field.magnet_and_coil",
+                           "backiron");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string csv = read_text(out / "results.csv");
+  for (const char* row :
+       {"thesis.c5.backiron_field.magnet,", "thesis.c5.backiron_field.magnet_and_coil,"}) {
+    const auto at = csv.find(row);
+    ASSERT_NE(at, std::string::npos) << csv;
+    const std::string line = csv.substr(at, csv.find('\n', at) - at);
+    EXPECT_NE(line.find(",pass,"), std::string::npos) << line;
+  }
+}
+
+TEST(Validate, VoiceCoilTable1ByThePapersLineModel) {
+  // Seed 002's Table 1 through `magfem validate` (validation/validate_eval_voicecoil.cpp): with the
+  // paper's 2D line model and an integration range of 3 l, the a_i/a_o = 0.5 error at 1 um
+  // (13.4 %) and eq. 6's sheet current of the thin coil (136.2 A/mm) pass, the thin coil's
+  // 1.3 % at 1 um is a finding (no range gets below 2.17 %). Milliseconds per entry.
+  const auto out = std::filesystem::temp_directory_path() / "magfem_validate_voicecoil";
+  std::filesystem::remove_all(out);
+  const CliRun r = run_cli("--out " + out.string() +
+                               " --only voicecoil.table1.line_model.r05_1um,"
+                               "voicecoil.table1.line_model.r09_1um,"
+                               "voicecoil.table1.sheet_current.r09",
+                           "voicecoil");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string csv = read_text(out / "results.csv");
+  for (const char* row :
+       {"voicecoil.table1.line_model.r05_1um,", "voicecoil.table1.line_model.r09_1um,",
+        "voicecoil.table1.sheet_current.r09,"}) {
+    const auto at = csv.find(row);
+    ASSERT_NE(at, std::string::npos) << csv;
+    const std::string line = csv.substr(at, csv.find('\n', at) - at);
+    const bool finding = std::string(row).find("r09_1um") != std::string::npos;
+    EXPECT_NE(line.find(finding ? ",finding," : ",pass,"), std::string::npos) << line;
+  }
+}
