@@ -321,6 +321,7 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
                        {"straightened_edge_nodes", run.dofs->n_straightened()}};
   j["energy_J"] = run.energy.total_J;
   j["error_estimate"] = {{"energy_error_pct", run.error_estimate.energy_error_pct},
+                         {"energy_norm_error_pct", run.error_estimate.energy_norm_error_pct},
                          {"indicator", run.error_estimate.indicator},
                          {"error_norm2_J", run.error_estimate.error_norm2_J},
                          {"scope", "physical domain; the open-boundary shell is not estimated"},
@@ -413,9 +414,10 @@ std::string describe_run_3d(const Run3D& run) {
                     r.peak_B_T);
       s += buf;
     }
-  std::snprintf(buf, sizeof buf, "accuracy energy error %.3g %% (estimated: %s, %.2f s)\n",
-                run.error_estimate.energy_error_pct, run.error_estimate.indicator.c_str(),
-                run.error_estimate_s);
+  std::snprintf(buf, sizeof buf,
+                "error    estimated energy error %.3g %% (energy norm %.3g %%, %s, %.2f s)\n",
+                run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                run.error_estimate.indicator.c_str(), run.error_estimate_s);
   s += buf;
   s += describe_forces(run.forces, false);
   for (const auto& f : run.sections) {

@@ -57,7 +57,7 @@ double element_eta2(const PatchRecovery3D& rec, std::size_t t) {
 
 } // namespace
 
-double energy_error_pct(double error_norm2_J, double energy_norm2_J) {
+double energy_norm_error_pct(double error_norm2_J, double energy_norm2_J) {
   const double total = energy_norm2_J + error_norm2_J;
   return total > 0 ? 100 * std::sqrt(error_norm2_J / total) : 0.0;
 }
@@ -79,7 +79,8 @@ ErrorEstimate3D estimate_error_3d(const PatchRecovery3D& recovery, double energy
   for (double e : out.eta2_J) // in element order: the same bits whatever the thread count
     out.error_norm2_J += e;
   out.energy_norm2_J = 2 * energy_J;
-  out.energy_error_pct = energy_error_pct(out.error_norm2_J, out.energy_norm2_J);
+  out.energy_norm_error_pct = energy_norm_error_pct(out.error_norm2_J, out.energy_norm2_J);
+  out.energy_error_pct = out.energy_norm2_J > 0 ? 100 * out.error_norm2_J / out.energy_norm2_J : 0;
   out.degraded_patches = recovery.n_degraded();
   return out;
 }

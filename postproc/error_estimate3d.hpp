@@ -9,7 +9,12 @@
 // difference), the monotone B-H curve's own measure in nonlinear iron. For a linear problem
 // this is the squared energy norm of H - H_h with H* in place of H, and the relative error
 //
-//   energy_error_pct = 100 sqrt(sum eta_K^2 / (2 W_h + sum eta_K^2))
+//   energy_norm_error_pct = 100 sqrt(sum eta_K^2 / (2 W_h + sum eta_K^2))
+//
+// The stored energy itself is off by half the squared error norm (the same keys as the 2D
+// estimate, error_estimate2d.hpp), so its estimated relative error is
+//
+//   energy_error_pct = 100 (sum eta_K^2 / 2) / W_h.
 //
 // uses Galerkin orthogonality, ||H||^2 = ||H_h||^2 + ||H - H_h||^2 with ||H_h||^2 = 2 W_h
 // (energy3d.hpp: W measured from the remanent state is (1/2) int mu |H|^2).
@@ -29,7 +34,8 @@ struct ErrorEstimate3D {
   std::vector<double> eta2_J;       // per tet: eta_K^2 (J); 0 in the shell
   double error_norm2_J = 0;         // sum of eta_K^2 (J)
   double energy_norm2_J = 0;        // 2 W_h (J)
-  double energy_error_pct = 0;      // see above
+  double energy_norm_error_pct = 0; // relative error of the field in the energy norm (above)
+  double energy_error_pct = 0;      // relative error of the stored energy W (above)
   std::size_t degraded_patches = 0; // PatchRecovery3D::n_degraded
 };
 
@@ -37,7 +43,7 @@ struct ErrorEstimate3D {
 ErrorEstimate3D estimate_error_3d(const PatchRecovery3D& recovery, double energy_J,
                                   int threads = 0);
 
-// Relative energy error in % from the two sums (see above); 0 when both vanish.
-double energy_error_pct(double error_norm2_J, double energy_norm2_J);
+// Relative energy-norm error in % from the two sums (see above); 0 when both vanish.
+double energy_norm_error_pct(double error_norm2_J, double energy_norm2_J);
 
 } // namespace magfem
