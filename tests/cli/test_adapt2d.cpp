@@ -65,7 +65,7 @@ double true_error_pct(double value, double exact) {
 TEST(Adapt2D, ReachesTheTargetWithFewerUnknownsThanUniformRefinement) {
   // Target 1e-3 % of the energy: a few passes from the coarse start. Uniform refinement of the
   // same start (every size times s, s down by 0.8 a step) is judged by the same estimate,
-  // whose effectivity is tested in tests/postproc/test_error_estimate2d.cpp.
+  // whose effectivity is tested in tests/pipeline/test_error_estimate2d.cpp.
   constexpr double target = 1e-3;
   CaseSpec spec = read_case(test::write_temp_case("adapt_solenoid.yaml", solenoid_case));
   spec.adapt.accuracy_pct = target;
