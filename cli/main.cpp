@@ -297,7 +297,10 @@ int run_sweep(const Args& args) {
   }
   j["failed_positions"] = failed;
   j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
-  if (jobs.position_memory_mb > 0)
+  // The memory estimate when this process's positions shared the limit (as a serial run
+  // records it; under mpirun with one position at a time per process the file stays the
+  // serial --jobs 1 one).
+  if (jobs.position_memory_mb > 0 && jobs.requested > 1)
     j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
     j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
   j["peak_memory_MB"] = magfem::peak_memory_mb();
