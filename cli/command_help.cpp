@@ -104,7 +104,14 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  --resume   continue a sweep that was interrupted (Ctrl-C, kill, crash): every\n"
      "             finished position is kept in DIR/.magfem-checkpoint.jsonl as it\n"
      "             finishes, and is not solved again; the outputs are those of an\n"
-     "             uninterrupted run. Refused if the case file or options changed.\n"},
+     "             uninterrupted run. Refused if the case file or options changed.\n"
+     "  Under mpirun (mpirun -n N magfem sweep ...) the positions are dealt to the N\n"
+     "  processes one at a time as each finishes one; each position is a serial solve\n"
+     "  of its process, which takes its share of its machine's cores (positions at\n"
+     "  once unless --jobs, element-loop threads unless MAGFEM_THREADS). Rank 0 keeps\n"
+     "  the checkpoint (--resume works with or without mpirun) and writes the outputs\n"
+     "  of a serial run, byte for byte but for the times (summary.json `seconds`,\n"
+     "  `peak_memory_MB`). A bad option or case ends every process with exit 2.\n"},
     {"study",
      "magfem study CASE.yaml --param NAME=START:STEP:END|A,B,C [--param ...]\n"
      "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"

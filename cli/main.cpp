@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
+#include "core/thread_count.hpp"
 #include "pipeline/adapt2d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/resource_usage.hpp"
@@ -143,6 +145,43 @@ void report_restored(const magfem::RunCheckpoint& checkpoint) {
                  checkpoint.n_restored());
 }
 
+// Under mpirun a sweep's positions are dealt to the processes (studies/position_runner.hpp).
+// Each process takes its share of its machine's cores: that many positions at once unless
+// --jobs says otherwise, and that many threads in each position's element loops unless
+// MAGFEM_THREADS says otherwise (set here, before any of this process's threads reads it).
+// Said once, by rank 0.
+magfem::MpiWorld sweep_world(const Args& args) {
+  const magfem::MpiWorld world = magfem::join_mpi_world(true); // started by start_mpi_or_refuse
+  if (!world.distributed())
+    return world;
+  const int threads = magfem::threads_per_process(world);
+  setenv("MAGFEM_THREADS", std::to_string(threads).c_str(), 0);
+  if (world.is_root())
+    std::fprintf(stderr,
+                 "magfem: sweep on %d processes (%d on this machine), positions dealt one at a "
+                 "time: each process solves %d at once (%s) with %d element-loop threads "
+                 "(MAGFEM_THREADS)%s\n",
+                 world.size, world.size_on_node, args.jobs > 0 ? args.jobs : threads,
+                 args.jobs > 0 ? "--jobs" : "its share of the machine's cores",
+                 magfem::available_threads(),
+                 world.any_thread_calls_mpi
+                     ? ""
+                     : "; MPI gave no MPI_THREAD_MULTIPLE: rank 0 only deals, and the others "
+                       "solve one position at a time");
+  return world;
+}
+
+// The checkpoint of a sweep: rank 0's alone under mpirun (the other processes send it their
+// rows), so that a resumed run, with or without mpirun, finds every finished position.
+std::unique_ptr<magfem::RunCheckpoint>
+sweep_checkpoint(const magfem::MpiWorld& world, const Args& args, const std::string& identity) {
+  if (!world.is_root())
+    return nullptr;
+  auto checkpoint = std::make_unique<magfem::RunCheckpoint>(args.out_dir, identity, args.resume);
+  report_restored(*checkpoint);
+  return checkpoint;
+}
+
 // Axial sweep of an axisymmetric case (studies/sweep_axi.hpp).
 int run_sweep_axi(const Args& args) {
   using magfem::InputError;
@@ -159,16 +198,18 @@ int run_sweep_axi(const Args& args) {
   o.jobs = args.jobs;
   o.order = args.overrides.order;
   o.mesh_scale = args.overrides.mesh_scale;
-  magfem::RunCheckpoint checkpoint(
-      args.out_dir,
+  o.world = sweep_world(args);
+  const auto checkpoint = sweep_checkpoint(
+      o.world, args,
       magfem::checkpoint_identity("sweep --move", args.case_file,
                                   o.group + " order " + std::to_string(o.order) + " mesh-scale " +
-                                      magfem::RunCheckpoint::key_of(o.mesh_scale)),
-      args.resume);
-  report_restored(checkpoint);
-  o.checkpoint = &checkpoint;
+                                      magfem::RunCheckpoint::key_of(o.mesh_scale)));
+  o.checkpoint = checkpoint.get();
+  const bool quiet = args.quiet || !o.world.is_root();
   const auto rows =
-      magfem::run_sweep_axi(spec, o, args.quiet ? magfem::AxiSweepProgress{} : show_progress);
+      magfem::run_sweep_axi(spec, o, quiet ? magfem::AxiSweepProgress{} : show_progress);
+  if (!o.world.is_root()) // rank 0 has the rows, and writes and reports them
+    return magfem::code_of_root(0);
 
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
@@ -192,7 +233,7 @@ int run_sweep_axi(const Args& args) {
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
-  checkpoint.remove();
+  checkpoint->remove();
   std::printf("%12s %14s %9s\n", "position_mm", "Fz_N", "time_s");
   for (const auto& r : rows)
     if (r.ok)
@@ -201,11 +242,10 @@ int run_sweep_axi(const Args& args) {
       std::printf("%12.4f FAILED: %s\n", 1e3 * r.position_m, r.error.c_str());
   std::printf("wrote    %s/sweep.csv, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), total_s);
-  if (failed) {
+  std::fflush(stdout);
+  if (failed)
     std::cerr << "magfem: " << failed << " of " << rows.size() << " positions failed\n";
-    return 3;
-  }
-  return 0;
+  return magfem::code_of_root(failed ? 3 : 0);
 }
 
 int run_sweep(const Args& args) {
@@ -235,23 +275,25 @@ int run_sweep(const Args& args) {
   o.order = args.overrides.order;
   o.mesh_scale = args.overrides.mesh_scale;
   o.max_memory_gb = args.overrides.max_memory_gb;
-  magfem::RunCheckpoint checkpoint(
-      args.out_dir,
+  o.world = sweep_world(args);
+  const auto checkpoint = sweep_checkpoint(
+      o.world, args,
       magfem::checkpoint_identity("sweep --rotate", args.case_file,
                                   o.group + " axis " + args.axis + " point " + args.point +
                                       " surface-radius " + args.surface_radius +
                                       (o.analytic ? " analytic" : " fe") + " order " +
                                       std::to_string(o.order) + " mesh-scale " +
-                                      magfem::RunCheckpoint::key_of(o.mesh_scale)),
-      args.resume);
-  report_restored(checkpoint);
-  o.checkpoint = &checkpoint;
+                                      magfem::RunCheckpoint::key_of(o.mesh_scale)));
+  o.checkpoint = checkpoint.get();
 
   magfem::SweepJobs jobs;
-  const auto progress = args.quiet ? magfem::SweepProgress{} : show_progress;
+  const bool quiet = args.quiet || !o.world.is_root();
+  const auto progress = quiet ? magfem::SweepProgress{} : show_progress;
   const bool planar = spec.dimension == 2 && !spec.axisymmetric();
   const auto rows = planar ? magfem::run_sweep_planar(spec, o, progress, &jobs)
                            : magfem::run_sweep(spec, o, progress, &jobs);
+  if (!o.world.is_root()) // rank 0 has the rows, and writes and reports them
+    return magfem::code_of_root(0);
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows));
   std::string why;
@@ -283,13 +325,16 @@ int run_sweep(const Args& args) {
   }
   j["failed_positions"] = failed;
   j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
-  if (jobs.position_memory_mb > 0)
+  // The memory estimate when this process's positions shared the limit (as a serial run
+  // records it; under mpirun with one position at a time per process the file stays the
+  // serial --jobs 1 one).
+  if (jobs.position_memory_mb > 0 && jobs.requested > 1)
     j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
     j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
-  checkpoint.remove();
+  checkpoint->remove();
 
   std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", "angle_deg", "Tx_Nm", "Ty_Nm", "Tz_Nm",
               "Fx_N", "Fy_N", "Fz_N", "time_s");
@@ -303,11 +348,10 @@ int run_sweep(const Args& args) {
   std::printf("%s\n", magfem::sweep_method_note(rows, o).c_str());
   std::printf("wrote    %s/sweep.csv%s, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), plotted ? ", sweep.png" : "", total_s);
-  if (failed) {
+  std::fflush(stdout);
+  if (failed)
     std::cerr << "magfem: " << failed << " of " << rows.size() << " positions failed\n";
-    return 3;
-  }
-  return 0;
+  return magfem::code_of_root(failed ? 3 : 0);
 }
 
 int run_compare(const Args& args) {
@@ -377,14 +421,19 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
                            "unknown command '" + command + "'\n" + magfem::usage_overview());
 }
 
-// Only `solve` runs distributed; any other command under mpirun with several processes would
+// Under mpirun `solve` distributes one case (run_solve starts MPI) and `sweep` deals its
+// positions to the processes: MPI starts here, with any thread allowed to call it (one
+// thread of rank 0 deals while others solve), before the options are read, so that a bad
+// option ends every process alike (fail()). Any other command with several processes would
 // run once per process, each writing the same outputs.
-void refuse_other_commands_under_mpirun(int argc, char** argv) {
+void start_mpi_or_refuse(int argc, char** argv) {
   if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
     return;
-  if (magfem::join_mpi_world().distributed())
+  const bool sweep = std::strcmp(argv[1], "sweep") == 0;
+  if (magfem::join_mpi_world(sweep).distributed() && !sweep)
     throw magfem::InputError("<command line>", 0, "",
-                             std::string("only `magfem solve` runs distributed; run `magfem ") +
+                             std::string("only `magfem solve` and `magfem sweep` run "
+                                         "distributed; run `magfem ") +
                                  argv[1] + "` without mpirun");
 }
 
@@ -410,6 +459,7 @@ int main(int argc, char** argv) {
   try {
     if (const auto code = answer_help_or_version(argc, argv))
       return *code;
+    start_mpi_or_refuse(argc, argv);
     if (argc >= 2 && std::strcmp(argv[1], "materials") == 0)
       return magfem::run_materials_command(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "mesh") == 0)
@@ -426,7 +476,6 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
       return magfem::run_study_command(
           magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
-    refuse_other_commands_under_mpirun(argc, argv);
     const Args args = magfem::parse_command_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <dlfcn.h>
 #include <string>
 #include <thread>
 
@@ -24,6 +25,35 @@ int element_loop_threads(std::size_t n_elements) {
   constexpr std::size_t elements_per_thread = 20000;
   return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(available_threads()),
                                                 1 + n_elements / elements_per_thread));
+}
+
+namespace {
+
+using GetThreads = int (*)();
+using SetThreads = void (*)(int);
+
+// OpenBLAS's own entry points, if the process has OpenBLAS loaded (through CHOLMOD's BLAS).
+GetThreads openblas_get() {
+  return reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+}
+SetThreads openblas_set() {
+  return reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+}
+
+} // namespace
+
+BlasThreads::BlasThreads(int n) {
+  const GetThreads get = openblas_get();
+  const SetThreads set = openblas_set();
+  if (!get || !set)
+    return;
+  previous_ = get();
+  set(n);
+}
+
+BlasThreads::~BlasThreads() {
+  if (previous_ > 0)
+    openblas_set()(previous_);
 }
 
 } // namespace magfem

@@ -13,4 +13,20 @@ int available_threads();
 // that a thread's start-up outweighs its share of the work).
 int element_loop_threads(std::size_t n_elements);
 
+// OpenBLAS on `n` threads for the life of this object (then as before). Its thread count is
+// the one that changes results: CHOLMOD's supernodal factorization adds in an order that
+// depends on it (1 and 2 threads differ in the 9th digit of a 2D sweep's force), while
+// magfem's own loops give the same bits on any count. A no-op when the BLAS in use is not
+// OpenBLAS (found at run time, so magfem does not link OpenBLAS itself).
+class BlasThreads {
+public:
+  explicit BlasThreads(int n);
+  ~BlasThreads();
+  BlasThreads(const BlasThreads&) = delete;
+  BlasThreads& operator=(const BlasThreads&) = delete;
+
+private:
+  int previous_ = 0; // 0: not OpenBLAS
+};
+
 } // namespace magfem

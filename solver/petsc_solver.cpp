@@ -137,8 +137,12 @@ PC one_sweep_smoother(KSP smoother, PetscOptions db) {
 
 } // namespace
 
-void start_petsc() {
+void start_petsc(bool any_thread_calls_mpi) {
   const std::lock_guard lock(petsc_mutex());
+  // PETSc asks MPI for MPI_THREAD_FUNNELED unless told otherwise; the thread level is fixed
+  // when MPI starts, so it is chosen here, before the first PETSc call.
+  if (any_thread_calls_mpi)
+    PETSC_MPI_THREAD_REQUIRED = MPI_THREAD_MULTIPLE;
   ensure_petsc();
 }
 

@@ -46,8 +46,10 @@ struct KrylovOutcome {
   double true_relative_residual = -1;
 };
 
-// Starts PETSc and MPI for the rest of the process (no-op once started).
-void start_petsc();
+// Starts PETSc and MPI for the rest of the process (no-op once started). With
+// `any_thread_calls_mpi`, MPI is asked for MPI_THREAD_MULTIPLE (a sweep under mpirun: one
+// thread deals positions while others solve); otherwise PETSc's default, MPI_THREAD_FUNNELED.
+void start_petsc(bool any_thread_calls_mpi = false);
 
 class PetscSolver {
 public:

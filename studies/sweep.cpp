@@ -5,20 +5,19 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
-#include <thread>
 
-#include "pipeline/analytic_scene.hpp"
-#include "pipeline/force3d.hpp"
-#include "pipeline/memory_guard.hpp"
-#include "studies/position_runner.hpp"
-#include "pipeline/run3d.hpp"
-#include "pipeline/run_checkpoint.hpp"
-#include "core/constants.hpp"
-#include "core/input_error.hpp"
-#include "mesh/mesh_error.hpp"
 #include "analytic/axisymmetric_interaction.hpp"
 #include "analytic/exterior_field_interaction.hpp"
 #include "analytic/pair_interaction.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+#include "mesh/mesh_error.hpp"
+#include "pipeline/analytic_scene.hpp"
+#include "pipeline/force3d.hpp"
+#include "pipeline/memory_guard.hpp"
+#include "pipeline/run3d.hpp"
+#include "pipeline/run_checkpoint.hpp"
+#include "studies/position_runner.hpp"
 
 namespace magfem {
 namespace {
@@ -248,7 +247,7 @@ constexpr double position_spread = 1.1;
 
 void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<double>& angles,
                SweepJobs& jobs) {
-  if (o.analytic || jobs.requested < 2)
+  if (o.analytic || jobs.requested * o.world.size_on_node < 2)
     return;
   try {
     const CaseSpec first =
@@ -258,10 +257,11 @@ void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<do
   } catch (const std::exception&) {
     return;
   }
-  jobs.memory_limit_mb = memory_limit_mb(o.max_memory_gb);
+  // The processes of an mpirun on one machine share its memory as its positions do.
+  jobs.memory_limit_mb = memory_limit_mb(o.max_memory_gb) / o.world.size_on_node;
   const double fit = std::floor(jobs.memory_limit_mb / (position_spread * jobs.position_memory_mb));
   jobs.used = static_cast<int>(std::clamp(fit, 1.0, static_cast<double>(jobs.requested)));
-  if (jobs.used >= jobs.requested)
+  if (jobs.used >= jobs.requested || !o.world.is_root())
     return;
   char what[96];
   if (o.jobs > 0)
@@ -444,22 +444,24 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   }
 
   const int total = static_cast<int>(options.angles_deg.size());
-  std::vector<SweepRow> rows(total);
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   SweepJobs jobs;
-  jobs.requested = std::clamp(options.jobs > 0 ? options.jobs : static_cast<int>(cores), 1, total);
+  jobs.requested = default_position_workers(options.world, options.jobs, total);
   jobs.used = jobs.requested;
   plan_jobs(spec, options, options.angles_deg, jobs);
   if (jobs_used)
     *jobs_used = jobs;
   const int workers = jobs.used;
   RunOverrides fe = fe_overrides(options);
-  if (workers > 1 && jobs.memory_limit_mb > 0)
-    fe.parallel_runs = workers, fe.shared_memory_mb = jobs.memory_limit_mb;
+  // Each position running at once on this machine (under mpirun also those of the other
+  // processes on it) is checked against its share of the limit.
+  const int at_once = workers * options.world.size_on_node;
+  if (at_once > 1 && jobs.memory_limit_mb > 0)
+    fe.parallel_runs = at_once,
+    fe.shared_memory_mb = jobs.memory_limit_mb * options.world.size_on_node;
   return run_positions<SweepRow>(
       options.angles_deg, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
-      progress);
+      progress, options.world);
 }
 
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options) {

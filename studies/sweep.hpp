@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "casefile/case_spec.hpp"
+#include "solver/mpi_context.hpp"
 
 namespace magfem {
 
@@ -39,6 +40,9 @@ struct SweepOptions {
   double analytic_tolerance = 1e-6;                // analytic: charge interaction tolerance
   // Finished positions found there are not solved again; new ones are recorded (not owned).
   RunCheckpoint* checkpoint = nullptr;
+  // Under mpirun: the processes the positions are dealt to (studies/position_runner.hpp);
+  // `jobs` is then per process, and the checkpoint rank 0's alone.
+  MpiWorld world{};
 };
 
 struct SweepRow {
@@ -99,6 +103,7 @@ nlohmann::json sweep_row_to_json(const SweepRow& row);
 SweepRow sweep_row_from_json(const nlohmann::json& saved, double angle_deg);
 
 using SweepProgress = std::function<void(int done, int total)>;
+// Under mpirun every process calls this; rank 0 gets the rows, the others none.
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
                                 const SweepProgress& progress = {}, SweepJobs* jobs = nullptr);
 

@@ -1,13 +1,11 @@
 #include "studies/sweep_axi.hpp"
 
-#include <algorithm>
 #include <cstdio>
-#include <thread>
 
-#include "studies/position_runner.hpp"
+#include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/run_checkpoint.hpp"
-#include "core/input_error.hpp"
+#include "studies/position_runner.hpp"
 
 namespace magfem {
 namespace {
@@ -125,14 +123,11 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
   move_group_axi(spec, o.group, 0.0); // bad input fails here, not once per position
   bool reversed = false;
   group_force(spec, o.group, reversed);
-  const int total = static_cast<int>(o.positions_m.size());
-  std::vector<AxiSweepRow> rows(o.positions_m.size());
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const int n_jobs =
-      std::clamp(o.jobs > 0 ? o.jobs : static_cast<int>(cores), 1, std::max(total, 1));
+      default_position_workers(o.world, o.jobs, static_cast<int>(o.positions_m.size()));
   return run_positions<AxiSweepRow>(
       o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json},
-      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress);
+      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress, o.world);
 }
 
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {

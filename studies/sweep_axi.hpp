@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "casefile/case_spec.hpp"
+#include "solver/mpi_context.hpp"
 
 namespace magfem {
 
@@ -26,6 +27,8 @@ struct AxiSweepOptions {
   int order = 0;                   // RunOverrides::order
   // Finished positions found there are not solved again; new ones are recorded (not owned).
   RunCheckpoint* checkpoint = nullptr;
+  // Under mpirun: the processes the positions are dealt to (as SweepOptions::world).
+  MpiWorld world{};
 };
 
 struct AxiSweepRow {
@@ -43,7 +46,8 @@ struct AxiSweepRow {
 CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz);
 
 using AxiSweepProgress = std::function<void(int done, int total)>;
-// Throws InputError if the force on the group cannot be had from Lorentz forces.
+// Throws InputError if the force on the group cannot be had from Lorentz forces. Under
+// mpirun every process calls this; rank 0 gets the rows, the others none.
 std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& options,
                                        const AxiSweepProgress& progress = {});
 

@@ -1,13 +1,11 @@
 #include "studies/sweep_planar.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <thread>
 
-#include "studies/position_runner.hpp"
-#include "pipeline/run2d.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/run2d.hpp"
+#include "studies/position_runner.hpp"
 
 namespace magfem {
 namespace {
@@ -133,14 +131,13 @@ std::vector<SweepRow> run_sweep_planar(const CaseSpec& spec, const SweepOptions&
   // Mistakes every position would repeat fail here, on the main thread.
   group_force(rotate_group_planar(spec, o.group, 0.0, o.point), o.group, o.point);
   const int total = static_cast<int>(o.angles_deg.size());
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const int workers =
-      std::clamp(o.jobs > 0 ? o.jobs : static_cast<int>(cores), 1, std::max(total, 1));
+  const int workers = default_position_workers(o.world, o.jobs, total);
   if (jobs)
     jobs->requested = jobs->used = workers;
   return run_positions<SweepRow>(
       o.angles_deg, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json},
-      [&](SweepRow& row, double angle_deg) { solve_position(row, spec, o, angle_deg); }, progress);
+      [&](SweepRow& row, double angle_deg) { solve_position(row, spec, o, angle_deg); }, progress,
+      o.world);
 }
 
 } // namespace magfem

@@ -3,6 +3,11 @@
 // energy and every probe value agree to the solver tolerance, and the distributed run wrote
 // one set of outputs and printed one report. Cases the distributed mode refuses end quickly
 // with exit 2 on every process instead of hanging; a Krylov failure with exit 3.
+//
+// `mpirun -n 2|3 magfem sweep` (positions dealt to the processes, rank 0 writing): the serial
+// run's sweep.csv (and plot) byte for byte and its summary.json but for the times; --resume
+// under mpirun takes a serial run's checkpoint and solves only the positions it lacks; a bad
+// option or group ends every process with exit 2 and no outputs, never a hang.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +18,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <sys/wait.h>
@@ -54,9 +61,11 @@ std::string mpirun_path() {
 }
 
 // `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
-// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both.
+// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
+// process left waiting for another would hang the test: `timeout` ends it (exit 124).
 CliOutcome run_mpi(int n, const std::string& args) {
-  std::string cmd = mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
+  std::string cmd =
+      "timeout 120 " + mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
   if (geteuid() == 0) {
     cmd += "--allow-run-as-root ";
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
@@ -177,6 +186,142 @@ TEST_F(Mpi, KrylovFailureIsExitThreeWithoutOutputs) {
   EXPECT_EQ(o.status, 3) << o.out;
   EXPECT_NE(o.out.find("did not converge"), std::string::npos) << o.out;
   EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
+  fs::remove_all(dir.parent_path());
+}
+
+// The voice coil's coil moved through 6 positions, coarse (0.1-0.3 s a position): a sweep
+// whose every row goes through the dealer and the row codec. Serially with --jobs 1 it is the
+// reference the processes must reproduce.
+const std::string voice_coil_sweep = " --move coil --axis z --positions 0:1:5 --mesh-scale 3";
+
+std::string text_of(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// summary.json without what a rerun does not reproduce: each position's wall-clock `seconds`
+// and the process's peak memory (rank 0's, which also solved some positions).
+nlohmann::json without_times(const fs::path& summary) {
+  auto j = read_json(summary);
+  j.erase("peak_memory_MB");
+  for (auto& p : j["positions"])
+    p.erase("seconds");
+  return j;
+}
+
+CliOutcome serial_sweep(const std::string& case_and_motion, const fs::path& out) {
+  return magfem::test::run_cli("sweep " + case_and_motion + " --jobs 1 --quiet --out " +
+                               out.string());
+}
+
+// Byte-identical outputs need every row at its position's place whatever process solved it,
+// every double exact through the row codec, no position lost or solved twice. Would fail on:
+// rows written in arrival order, a position skipped by a process, a row's force re-rounded,
+// a row solved on two processes (a duplicated CSV line).
+TEST_F(Mpi, SweepDealtToTwoAndThreeProcessesWritesTheSerialOutputs) {
+  const std::string sweep =
+      "sweep " + magfem::test::example("axi/voice_coil_magnet.yaml") + voice_coil_sweep;
+  const fs::path serial = fresh_dir("sweep_serial");
+  const CliOutcome s =
+      serial_sweep(magfem::test::example("axi/voice_coil_magnet.yaml") + voice_coil_sweep, serial);
+  ASSERT_EQ(s.status, 0) << s.out;
+  for (const int n : {2, 3}) {
+    const fs::path dir = fresh_dir("sweep_" + std::to_string(n) + "_ranks");
+    const CliOutcome m = run_mpi(n, sweep + " --out " + dir.string());
+    ASSERT_EQ(m.status, 0) << m.out;
+    EXPECT_EQ(text_of(dir / "sweep.csv"), text_of(serial / "sweep.csv")) << n << " processes";
+    EXPECT_EQ(without_times(dir / "summary.json"), without_times(serial / "summary.json"));
+    EXPECT_EQ(count(m.out, "wrote    "), 1u) << m.out;
+    EXPECT_EQ(count(m.out, "sweep on " + std::to_string(n) + " processes"), 1u) << m.out;
+    EXPECT_FALSE(fs::exists(dir / ".magfem-checkpoint.jsonl"));
+  }
+  fs::remove_all(serial.parent_path());
+}
+
+// The planar sweep (the 3D sweep's row type and codec) with its plot: sweep.png too is the
+// serial run's, byte for byte (drawn from the same rows).
+TEST_F(Mpi, PlanarSweepOnTwoProcessesWritesTheSerialCsvAndPlot) {
+  const std::string motion = magfem::test::example("2d/re25_motor_torque.yaml") +
+                             " --rotate rotor --axis z --angles 0,120";
+  const fs::path serial = fresh_dir("planar_serial"), dir = fresh_dir("planar_2_ranks");
+  const CliOutcome s = serial_sweep(motion, serial);
+  ASSERT_EQ(s.status, 0) << s.out;
+  const CliOutcome m = run_mpi(2, "sweep " + motion + " --quiet --out " + dir.string());
+  ASSERT_EQ(m.status, 0) << m.out;
+  EXPECT_EQ(text_of(dir / "sweep.csv"), text_of(serial / "sweep.csv"));
+  EXPECT_EQ(without_times(dir / "summary.json"), without_times(serial / "summary.json"));
+  if (fs::exists(serial / "sweep.png")) { // gnuplot installed
+    EXPECT_EQ(text_of(dir / "sweep.png"), text_of(serial / "sweep.png"));
+  }
+  fs::remove_all(serial.parent_path());
+}
+
+// A checkpoint of positions 0, 2 and 4 mm (left by a serial run whose outputs could not be
+// committed: a directory stands where sweep.csv goes), then --resume under mpirun: the
+// serial sweep.csv of all six, and the three restored rows keep the checkpoint's times
+// (solved again, they would have new ones). Would fail if the processes ignored the
+// checkpoint, if a restored position were dealt again, or if the rows were placed by arrival.
+TEST_F(Mpi, ResumedSweepUnderMpirunSolvesOnlyTheMissingPositions) {
+  const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
+  const fs::path serial = fresh_dir("resume_serial"), dir = fresh_dir("resume_2_ranks");
+  ASSERT_EQ(serial_sweep(case_file + voice_coil_sweep, serial).status, 0);
+  fs::create_directories(dir / "sweep.csv" / "blocker");
+  const CliOutcome cut =
+      magfem::test::run_cli("sweep " + case_file +
+                            " --move coil --axis z --positions 0,2,4 --mesh-scale 3 --jobs 1 "
+                            "--quiet --out " +
+                            dir.string());
+  ASSERT_EQ(cut.status, 1) << cut.out;
+  const fs::path checkpoint = dir / ".magfem-checkpoint.jsonl";
+  ASSERT_TRUE(fs::exists(checkpoint));
+  std::map<double, double> seconds_of; // position (mm) -> its time in the checkpoint
+  std::stringstream lines(text_of(checkpoint));
+  std::string line;
+  std::getline(lines, line); // the identity
+  while (std::getline(lines, line)) {
+    const auto entry = nlohmann::json::parse(line);
+    seconds_of[std::round(1e3 * std::stod(entry["key"].get<std::string>()))] =
+        entry["value"]["seconds"];
+  }
+  ASSERT_EQ(seconds_of.size(), 3u);
+  fs::remove_all(dir / "sweep.csv");
+
+  const CliOutcome m =
+      run_mpi(2, "sweep " + case_file + voice_coil_sweep + " --resume --out " + dir.string());
+  ASSERT_EQ(m.status, 0) << m.out;
+  EXPECT_NE(m.out.find("--resume: 3 finished positions"), std::string::npos) << m.out;
+  EXPECT_EQ(text_of(dir / "sweep.csv"), text_of(serial / "sweep.csv"));
+  int restored = 0;
+  const auto summary = read_json(dir / "summary.json");
+  for (const auto& p : summary["positions"]) {
+    const double mm = std::round(p["position_mm"].get<double>());
+    if (seconds_of.count(mm)) {
+      EXPECT_EQ(p["seconds"].get<double>(), seconds_of[mm]) << mm << " mm solved again";
+      ++restored;
+    }
+  }
+  EXPECT_EQ(restored, 3);
+  EXPECT_FALSE(fs::exists(checkpoint));
+  fs::remove_all(serial.parent_path());
+}
+
+// Every process reads the same options and case, so each fails alike before the positions
+// are dealt: exit 2 from all, through MPI_Abort, within the timeout, nothing written.
+TEST_F(Mpi, BadSweepInputEndsEveryProcessWithExitTwo) {
+  const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
+  const fs::path dir = fresh_dir("sweep_bad");
+  const CliOutcome option =
+      run_mpi(2, "sweep " + case_file + voice_coil_sweep + " --bogus --out " + dir.string());
+  EXPECT_EQ(option.status, 2) << option.out;
+  EXPECT_NE(option.out.find("--bogus"), std::string::npos) << option.out;
+  const CliOutcome group = run_mpi(
+      3, "sweep " + case_file + " --move nosuch --axis z --positions 0:1:5 --out " + dir.string());
+  EXPECT_EQ(group.status, 2) << group.out;
+  EXPECT_NE(group.out.find("nosuch"), std::string::npos) << group.out;
+  EXPECT_FALSE(fs::exists(dir / "sweep.csv"));
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
   fs::remove_all(dir.parent_path());
 }
 
