@@ -17,6 +17,20 @@ inline std::string example(const std::string& relative) {
 }
 
 // Writes `text` to a fresh temporary case file and returns its path.
+// Thick solenoid in air (examples/axi/solenoid.yaml's winding: r 10..15 mm, z -15..15 mm, 500
+// turns at 2 A), meshed coarsely so that an adaptive loop has to find where the sizes matter.
+// Exact energy L I^2 / 2 with Maxwell's self-inductance (analytic/coil_closed_forms.hpp).
+inline const char* coarse_solenoid_case = R"(
+dimension: axi
+unit: mm
+regions:
+  - {name: winding, shape: rectangle, center: [12.5, 0], width: 5, height: 30, turns: 500,
+     current: 2.0, mesh_size: 4.0}
+boundary: {type: open, radius: 40, shell_ratio: 1.5}
+mesh: {size: 8.0, chord_tolerance: 0.002}
+solver: {order: 2}
+)";
+
 inline std::string write_temp_case(const std::string& name, const std::string& text) {
   const auto dir = std::filesystem::temp_directory_path() / "magfem_tests";
   std::filesystem::create_directories(dir);

@@ -21,19 +21,6 @@ using namespace magfem;
 
 namespace {
 
-// Thick solenoid in air (examples/axi/solenoid.yaml's winding), meshed coarsely: the loop
-// has to find where the sizes matter. Exact energy: L I^2 / 2, Maxwell's formula.
-const char* solenoid_case = R"(
-dimension: axi
-unit: mm
-regions:
-  - {name: winding, shape: rectangle, center: [12.5, 0], width: 5, height: 30, turns: 500,
-     current: 2.0, mesh_size: 4.0}
-boundary: {type: open, radius: 40, shell_ratio: 1.5}
-mesh: {size: 8.0, chord_tolerance: 0.002}
-solver: {order: 2}
-)";
-
 double exact_solenoid_energy() {
   const double l = coaxial_coil_self_inductance(CoaxialCoil{0.010, 0.015, -0.015, 0.015, 500});
   return 0.5 * l * 2.0 * 2.0;
@@ -67,7 +54,7 @@ TEST(Adapt2D, ReachesTheTargetWithFewerUnknownsThanUniformRefinement) {
   // same start (every size times s, s down by 0.8 a step) is judged by the same estimate,
   // whose effectivity is tested in tests/pipeline/test_error_estimate2d.cpp.
   constexpr double target = 1e-3;
-  CaseSpec spec = read_case(test::write_temp_case("adapt_solenoid.yaml", solenoid_case));
+  CaseSpec spec = read_case(test::write_temp_case("adapt_solenoid.yaml", test::coarse_solenoid_case));
   spec.adapt.accuracy_pct = target;
   const auto adaptive = run_adaptive_2d(spec, {});
   ASSERT_TRUE(adaptive->adapt->converged);
@@ -125,7 +112,7 @@ TEST(Adapt2D, NamedForceConvergesAndItsEstimateHolds) {
 }
 
 TEST(Adapt2D, ReachingALimitIsReportedNotSilent) {
-  CaseSpec spec = read_case(test::write_temp_case("adapt_limit.yaml", solenoid_case));
+  CaseSpec spec = read_case(test::write_temp_case("adapt_limit.yaml", test::coarse_solenoid_case));
   spec.adapt.accuracy_pct = 1e-7;
   spec.adapt.max_passes = 1;
   const auto run = run_adaptive_2d(spec, {});
@@ -181,7 +168,7 @@ TEST(Adapt2D, BadAdaptSectionsNameFileLineAndField) {
 }
 
 TEST(Adapt2D, CliAdaptsWritesTheHistoryAndRefusesBadOptions) {
-  const auto path = test::write_temp_case("adapt_cli.yaml", solenoid_case);
+  const auto path = test::write_temp_case("adapt_cli.yaml", test::coarse_solenoid_case);
   const auto out = std::filesystem::temp_directory_path() / "magfem_tests" / "adapt_cli_out";
   std::filesystem::remove_all(out);
   for (const std::string bad : {"--accuracy 0", "--accuracy 100", "--accuracy -1",

@@ -25,19 +25,6 @@ using namespace magfem;
 
 namespace {
 
-// Thick solenoid in air (as examples/axi/solenoid.yaml): r 10..15 mm, z -15..15 mm, 500 turns
-// at 2 A. Exact energy L I^2 / 2 with Maxwell's self-inductance (validation/). Coarse start.
-const char* solenoid_case = R"(
-dimension: axi
-unit: mm
-regions:
-  - {name: winding, shape: rectangle, center: [12.5, 0], width: 5, height: 30, turns: 500,
-     current: 2.0, mesh_size: 4.0}
-boundary: {type: open, radius: 40, shell_ratio: 1.5}
-mesh: {size: 8.0, chord_tolerance: 0.002}
-solver: {order: 2}
-)";
-
 // Diametrically magnetized cylinder (radius 10 mm, B_r 1 T, mu_r 1) in open space, planar.
 // Exact energy per metre: (B_r^2 / mu0) pi a^2 / 4.
 const char* cylinder_case = R"(
@@ -162,7 +149,7 @@ void expect_effectivity(const std::vector<PassCheck>& passes) {
 
 TEST(ErrorEstimate2D, AxisymmetricSolenoidEffectivity) {
   expect_effectivity(
-      adaptive_effectivity("ee_solenoid", solenoid_case, exact_solenoid_energy(), 1e-3));
+      adaptive_effectivity("ee_solenoid", test::coarse_solenoid_case, exact_solenoid_energy(), 1e-3));
 }
 
 TEST(ErrorEstimate2D, PlanarDiametricCylinderEffectivity) {
