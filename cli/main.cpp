@@ -215,7 +215,7 @@ int run_sweep_axi(const Args& args) {
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
   nlohmann::ordered_json j;
   j["case"] = spec.file;
-  j["method"] = "lorentz";
+  j["method"] = magfem::sweep_axi_method(spec, o.group);
   j["group"] = o.group;
   int failed = 0;
   double total_s = 0;
