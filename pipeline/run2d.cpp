@@ -14,6 +14,7 @@
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_summary.hpp"
+#include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
@@ -222,6 +223,10 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   const PointLocator2D locator(run->mesh);
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
+  const double depth = run->spec.stack_length > 0 ? run->spec.stack_length : 1.0;
+  for (const auto& section : run->spec.sections)
+    run->sections.push_back(integrate_section_2d(*run->field, section, depth));
+  check_sections_inside(run->sections, run->spec);
   run->forces = compute_forces_2d(*run);
   run->coils = coil_results(*run);
   check_finite(run->energy.total_J_per_m, "magnetic energy");
@@ -293,6 +298,10 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
   }
+  if (!run.sections.empty()) {
+    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
+    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
+  }
   if (!run.coils.empty())
     j["coils"] = coils_json(run.coils);
   if (run.adapt)
@@ -333,6 +342,13 @@ std::string describe_run_2d(const Run2D& run) {
       s += buf;
     }
   s += describe_forces(run.forces, run.spec.stack_length <= 0 && !run.spec.axisymmetric());
+  for (const auto& f : run.sections) {
+    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g %s, mean Bn %.6g T, mean |B| %.6g T\n",
+                  f.name.c_str(), f.total.flux_Wb,
+                  run.spec.stack_length > 0 || run.spec.axisymmetric() ? "Wb" : "Wb/m",
+                  f.total.Bn_avg_T(), f.total.B_avg_T());
+    s += buf;
+  }
   for (const auto& c : run.coils) {
     std::snprintf(buf, sizeof buf, "coil     %-20s linkage %.6g Wb, L = linkage / I = %.6g H\n",
                   c.name.c_str(), c.flux_linkage_Wb, c.inductance_H);

@@ -18,6 +18,7 @@
 #include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
 #include "postproc/probe_table.hpp"
+#include "postproc/section_flux2d.hpp"
 #include "solver/dof_map2d.hpp"
 #include "solver/mpi_context.hpp"
 #include "solver/newton.hpp"
@@ -81,6 +82,7 @@ struct Run2D {
   ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
+  std::vector<SectionFlux> sections; // parallel to spec.sections (per energy_per)
   std::vector<CoilResult2D> coils;   // axisymmetric only
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
