@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "pipeline/run3d.hpp"
 #include "core/input_error.hpp"
+#include "mesh/grid_frame3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "postproc/coil_linkage3d.hpp"
 #include "postproc/lorentz3d.hpp"
 #include "postproc/point_locator3d.hpp"
@@ -125,24 +126,27 @@ Eigen::Vector3d CaseCoils::J(const Eigen::Vector3d& x) const {
   return j;
 }
 
-void check_coils_in_air(const Run3D& run) {
-  if (!run.coils)
-    return;
-  const PointLocator3D locator(run.mesh);
-  const auto& spec = run.spec;
-  for (int k = 0; k < run.coils->n_coils(); ++k) {
-    const std::string field = "coils." + run.coils->coil(k).name;
-    for (const auto& q : run.coils->field(k).volume_quadrature(4)) {
-      const auto loc = locator.locate(q.x);
-      if (!loc || run.problem.is_shell(loc->tet))
-        throw InputError(spec.file, spec.coil_lines[k], field, "the coil leaves the meshed domain");
-      const int part = run.mesh.tet_part[loc->tet];
-      // Air regions (mesh aids) may hold coils; magnets and iron may not.
-      const Material* m = part >= 0 ? spec.regions[part].material : nullptr;
-      if (m && (m->is_magnet() || m->is_nonlinear() || m->mu_r != 1.0))
+void check_coils_in_air(const CaseSpec& spec, const CaseCoils& coils) {
+  const Geometry3D& g = spec.geometry3d;
+  // Strict interiors: a coil wound tightly on a core (its r_inner on the core's surface) is
+  // in air.
+  const double tol = -1e-9 * g.outer.radius;
+  for (int k = 0; k < coils.n_coils(); ++k) {
+    const std::string field = "coils." + coils.coil(k).name;
+    for (const auto& q : coils.field(k).volume_quadrature(4)) {
+      if (q.x.norm() >= g.outer.radius)
         throw InputError(spec.file, spec.coil_lines[k], field,
-                         "the coil overlaps region '" + spec.regions[part].name +
-                             "'; coils must lie in air");
+                         "the coil leaves the meshed domain (boundary radius)");
+      for (std::size_t part = 0; part < g.parts.size(); ++part) {
+        // Air regions (mesh aids) may hold coils; magnets and iron may not.
+        const Material* m = spec.regions[part].material;
+        if (!(m->is_magnet() || m->is_nonlinear() || m->mu_r != 1.0))
+          continue;
+        if (part_contains(g.parts[part], q.x, tol))
+          throw InputError(spec.file, spec.coil_lines[k], field,
+                           "the coil overlaps region '" + spec.regions[part].name +
+                               "'; coils must lie in air");
+      }
     }
   }
 }
