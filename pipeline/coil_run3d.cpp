@@ -216,15 +216,25 @@ std::vector<ForceResult> coil_lorentz_forces(const Run3D& run) {
 
 nlohmann::ordered_json coil_results_json(const CoilResults& results) {
   nlohmann::ordered_json coils = nlohmann::ordered_json::array();
-  for (const auto& c : results.coils)
-    coils.push_back({{"name", c.name},
-                     {"turns", c.turns},
-                     {"current_A", c.current_A},
-                     {"resistance_ohm", c.resistance_ohm},
-                     {"power_W", c.power_W},
-                     {"flux_linkage_Wb", c.flux_linkage_Wb},
-                     {"force_N", {c.force_N.x(), c.force_N.y(), c.force_N.z()}},
-                     {"torque_Nm", {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()}}});
+  const auto& l = results.inductance_H;
+  for (std::size_t k = 0; k < results.coils.size(); ++k) {
+    const CoilResult& c = results.coils[k];
+    const auto i = static_cast<Eigen::Index>(k);
+    // d lambda / dI (the matrix's diagonal, null when not computed) and lambda / I, which
+    // counts the magnets' and the other coils' flux (as 2D and the analytic models say).
+    coils.push_back(
+        {{"name", c.name},
+         {"turns", c.turns},
+         {"current_A", c.current_A},
+         {"resistance_ohm", c.resistance_ohm},
+         {"power_W", c.power_W},
+         {"flux_linkage_Wb", c.flux_linkage_Wb},
+         {"inductance_H", i < l.rows() ? nlohmann::ordered_json(l(i, i)) : nullptr},
+         {"linkage_per_ampere_H",
+          c.current_A != 0 ? nlohmann::ordered_json(c.flux_linkage_Wb / c.current_A) : nullptr},
+         {"force_N", {c.force_N.x(), c.force_N.y(), c.force_N.z()}},
+         {"torque_Nm", {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()}}});
+  }
   return coils;
 }
 
@@ -241,6 +251,7 @@ std::string describe_coils(const CoilResults& results) {
     s += buf;
   }
   if (results.inductance_H.size() > 0 && results.inductance_H.rows() <= 4) {
+    s += "L = dlambda/dI (H, differential; linkage / I, the apparent one, in summary.json):\n";
     for (Eigen::Index i = 0; i < results.inductance_H.rows(); ++i) {
       s += i == 0 ? "L (H)   " : "        ";
       for (Eigen::Index j = 0; j < results.inductance_H.cols(); ++j) {
