@@ -75,10 +75,11 @@ constexpr std::array<CommandHelp, 10> commands{{
      "                    --angles START:STEP:END|A,B,C [--point px,py,pz] [--analytic]\n"
      "                    [--surface-radius R] [--order 1|2] [--mesh-scale S] [--jobs N]\n"
      "                    [--max-memory GB] [--resume] [--quiet] [--out DIR]\n"
-     "       magfem sweep CASE.yaml --move GROUP --axis z --positions START:STEP:END|A,B,C\n"
-     "                    [--order 1|2] [--mesh-scale S] [--jobs N] [--resume] [--quiet]\n"
-     "                    [--out DIR]   (axisymmetric cases)",
-     "torque and force while a group of parts rotates (or, axisymmetric, moves)",
+     "       magfem sweep CASE.yaml --move GROUP --axis x|y|z|ax,ay,az\n"
+     "                    --positions START:STEP:END|A,B,C [--analytic] [--order 1|2]\n"
+     "                    [--mesh-scale S] [--jobs N] [--resume] [--quiet] [--out DIR]\n"
+     "                    (3D and axisymmetric cases; axisymmetric: --axis z, FE only)",
+     "torque and force while a group of parts rotates or moves along a line",
      "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
      "  the origin and force on the group), sweep.png and summary.json. FE by default\n"
@@ -94,6 +95,9 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  about --point (default the origin; px,py,0) and takes the torque about it (Tz)\n"
      "  and the force on the group from the Lorentz force on its coils, else the case's\n"
      "  one `band` (or `circle`) force around it: cogging torque against rotor angle.\n"
+     "  3D cases: --move translates GROUP along --axis by the positions (mm) and writes\n"
+     "  sweep.csv with position_mm in place of angle_deg (force against gap); the stress\n"
+     "  sphere about the origin is chosen mid-gap at each position (--analytic as above).\n"
      "  Axisymmetric cases: --move translates GROUP along the axis by the positions (mm)\n"
      "  and writes sweep.csv (position_mm,Fz_N: the force on the group: the Lorentz\n"
      "  force on its coils, else the reaction of the others' coils, else the case's\n"

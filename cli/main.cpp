@@ -186,11 +186,15 @@ sweep_checkpoint(const magfem::MpiWorld& world, const Args& args, const std::str
 int run_sweep_axi(const Args& args) {
   using magfem::InputError;
   const std::string cli = "<command line>";
+  const auto spec = magfem::read_case(args.case_file);
+  if (!spec.axisymmetric())
+    throw InputError(cli, 0, "--move",
+                     "a planar 2D sweep turns a group (--rotate); translations are for "
+                     "axisymmetric and 3D cases");
   if (args.axis != "z")
     throw InputError(cli, 0, "--axis", "an axisymmetric group moves along z: give --axis z");
   if (args.positions.empty())
     throw InputError(cli, 0, "--positions", "give the positions (mm)");
-  const auto spec = magfem::read_case(args.case_file);
   magfem::AxiSweepOptions o;
   o.group = args.move;
   for (const double p : magfem::parse_angle_list(args.positions, "--positions"))
@@ -215,7 +219,7 @@ int run_sweep_axi(const Args& args) {
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
   nlohmann::ordered_json j;
   j["case"] = spec.file;
-  j["method"] = "lorentz";
+  j["method"] = magfem::sweep_axi_method(spec, o.group);
   j["group"] = o.group;
   int failed = 0;
   double total_s = 0;
@@ -251,20 +255,32 @@ int run_sweep_axi(const Args& args) {
 int run_sweep(const Args& args) {
   using magfem::InputError;
   const std::string cli = "<command line>";
-  if (!args.move.empty())
-    return run_sweep_axi(args);
-  if (args.rotate.empty())
-    throw InputError(cli, 0, "--rotate", "name the group to rotate");
+  if (!args.move.empty() && !args.rotate.empty())
+    throw InputError(cli, 0, "--move", "give --rotate GROUP or --move GROUP, not both");
+  const bool translate = !args.move.empty();
+  if (translate && magfem::read_case(args.case_file).dimension == 2)
+    return run_sweep_axi(args); // planar cases are refused there, naming --move
+  if (!translate && args.rotate.empty())
+    throw InputError(cli, 0, "--rotate", "name the group to rotate (or --move GROUP)");
   if (args.axis.empty())
-    throw InputError(cli, 0, "--axis", "give the rotation axis");
-  if (args.angles.empty())
+    throw InputError(cli, 0, "--axis", translate ? "give the direction" : "give the rotation axis");
+  if (translate && !args.angles.empty())
+    throw InputError(cli, 0, "--angles", "--move takes --positions (mm)");
+  if (translate && args.positions.empty())
+    throw InputError(cli, 0, "--positions", "give the positions (mm)");
+  if (!translate && args.angles.empty())
     throw InputError(cli, 0, "--angles", "give the angles");
   const auto spec = magfem::read_case(args.case_file);
   const double s = spec.length_unit;
   magfem::SweepOptions o;
-  o.group = args.rotate;
+  o.group = translate ? args.move : args.rotate;
+  o.motion = translate ? magfem::SweepMotion::translate : magfem::SweepMotion::rotate;
   o.axis = magfem::parse_axis(args.axis);
-  o.angles_deg = magfem::parse_angle_list(args.angles);
+  if (translate)
+    for (const double p : magfem::parse_angle_list(args.positions, "--positions"))
+      o.offsets_m.push_back(1e-3 * p);
+  else
+    o.angles_deg = magfem::parse_angle_list(args.angles);
   if (!args.point.empty())
     o.point = s * magfem::parse_vector3("--point", args.point);
   if (!args.surface_radius.empty())
@@ -278,7 +294,7 @@ int run_sweep(const Args& args) {
   o.world = sweep_world(args);
   const auto checkpoint = sweep_checkpoint(
       o.world, args,
-      magfem::checkpoint_identity("sweep --rotate", args.case_file,
+      magfem::checkpoint_identity(translate ? "sweep --move" : "sweep --rotate", args.case_file,
                                   o.group + " axis " + args.axis + " point " + args.point +
                                       " surface-radius " + args.surface_radius +
                                       (o.analytic ? " analytic" : " fe") + " order " +
@@ -295,10 +311,10 @@ int run_sweep(const Args& args) {
   if (!o.world.is_root()) // rank 0 has the rows, and writes and reports them
     return magfem::code_of_root(0);
   magfem::OutputStage stage(args.out_dir);
-  stage.write_text("sweep.csv", magfem::sweep_csv(rows));
+  stage.write_text("sweep.csv", magfem::sweep_csv(rows, o.motion));
   std::string why;
   const bool plotted = magfem::plot_sweep(rows, spec.file + (o.analytic ? " (analytic)" : " (FE)"),
-                                          stage.path_for("sweep.png"), why);
+                                          stage.path_for("sweep.png"), why, o.motion);
   if (!plotted)
     std::cerr << "magfem: note: no sweep.png: " << why << "\n";
   nlohmann::ordered_json j;
@@ -306,11 +322,14 @@ int run_sweep(const Args& args) {
   j["case"] = spec.file;
   j["method"] = magfem::sweep_method(rows, o);
   j["group"] = o.group;
+  if (translate)
+    j["motion"] = "translate";
   j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
+  const std::string key = magfem::sweep_position_key(o.motion);
   int failed = 0;
   double total_s = 0;
   for (const auto& r : rows) {
-    nlohmann::ordered_json p = {{"angle_deg", r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
+    nlohmann::ordered_json p = {{key, r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
     if (r.unknowns)
       p["unknowns"] = r.unknowns;
     if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
@@ -336,7 +355,7 @@ int run_sweep(const Args& args) {
   stage.commit();
   checkpoint->remove();
 
-  std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", "angle_deg", "Tx_Nm", "Ty_Nm", "Tz_Nm",
+  std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", key.c_str(), "Tx_Nm", "Ty_Nm", "Tz_Nm",
               "Fx_N", "Fy_N", "Fz_N", "time_s");
   for (const auto& r : rows)
     if (r.ok)

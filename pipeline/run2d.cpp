@@ -11,10 +11,9 @@
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesher2d.hpp"
-#include "pipeline/build_info.hpp"
 #include "pipeline/force2d.hpp"
-#include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
+#include "pipeline/run_summary.hpp"
 #include "pipeline/solver_summary.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
@@ -239,7 +238,9 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   for (const auto& r : run->spec.regions)
     names.push_back(r.name);
   run->energy = summarize_energy_2d(*run->field, names);
+  const auto t_estimate = Clock::now();
   run->error = estimate_error_2d(*run->field, run->energy.total_J_per_m);
+  run->timings.error_estimate = since(t_estimate);
   const PointLocator2D locator(run->mesh);
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
@@ -278,39 +279,25 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   }
 
   nlohmann::ordered_json j;
-  add_provenance(j);
-  j["case"] = run.spec.file;
   const bool axi = run.spec.axisymmetric();
-  if (axi)
-    j["dimension"] = "axi";
-  else
-    j["dimension"] = 2;
-  j["order"] = run.spec.order;
-  j["elements"] = run.mesh.n_triangles();
-  j["nodes"] = run.mesh.n_nodes();
-  j["unknowns"] = run.dofs->n_dofs();
+  add_run_header(j, {run.spec.file, axi ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2),
+                     run.spec.order, run.mesh.n_triangles(), run.mesh.n_nodes(),
+                     static_cast<std::size_t>(run.dofs->n_dofs())});
+  // Top-level min/max_angle_deg predate mesh_quality and stay for the scripts that read them.
   j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
   j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
+  j["mesh_quality"] = {{"min_angle_deg", run.mesh.quality.min_angle_deg},
+                       {"max_angle_deg", run.mesh.quality.max_angle_deg}};
   const double length = run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
-  j["energy_J"] = run.energy.total_J_per_m * length;
-  j["energy_per"] = axi                         ? "body of revolution"
-                    : run.spec.stack_length > 0 ? "stack"
-                                                : "metre of length";
-  j["error_estimate"] = {{"energy_error_pct", run.error.energy_error_pct},
-                         {"energy_norm_error_pct", run.error.energy_norm_error_pct},
-                         {"indicator", run.error.indicator}};
-  j["converged"] = run.report.converged;
-  j["iterations"] = run.report.iterations;
-  j["residual_history"] = run.report.residual_history;
-  add_solver_summary(j, run.report, 1);
-  j["timings_s"] = {{"mesh", run.timings.mesh},
-                    {"assemble", run.timings.assemble},
-                    {"solve", run.timings.solve},
-                    {"linear_setup", run.report.linear_setup_s},
-                    {"linear_solve", run.report.linear_solve_s},
-                    {"postprocess", run.timings.postprocess},
-                    {"total", run.timings.total}};
-  j["peak_memory_MB"] = peak_memory_mb();
+  const std::string per = axi                         ? "body of revolution"
+                          : run.spec.stack_length > 0 ? "stack"
+                                                      : "metre of length";
+  add_energy(j, run.energy.total_J_per_m * length, per);
+  add_error_estimate(j,
+                     {run.error.energy_error_pct, run.error.energy_norm_error_pct,
+                      run.error.indicator, run.error.total_eta2 * length},
+                     run.timings.error_estimate);
+  add_solve_record(j, run.report, run.timings, 1, 1);
   auto& regions = j["regions"];
   for (const auto& r : run.energy.regions) {
     if (r.area_m2 == 0)
@@ -324,9 +311,7 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   for (const auto& p : run.probes)
     j["probes"].push_back(p.name + ".csv");
   if (!run.forces.empty()) {
-    j["forces_per"] = axi                         ? "body of revolution"
-                      : run.spec.stack_length > 0 ? "stack"
-                                                  : "metre of length";
+    j["forces_per"] = per;
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
   }

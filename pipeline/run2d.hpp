@@ -15,6 +15,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/size_field2d.hpp"
 #include "pipeline/force_results.hpp"
+#include "pipeline/timings.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
@@ -25,10 +26,6 @@
 #include "solver/problem2d.hpp"
 
 namespace magfem {
-
-struct Timings {
-  double mesh = 0, assemble = 0, solve = 0, postprocess = 0, total = 0;
-};
 
 // Command-line overrides of case settings (refinement studies, quick checks).
 struct RunOverrides {

@@ -16,11 +16,11 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_fingerprint3d.hpp"
 #include "mesh/mesher3d.hpp"
-#include "pipeline/build_info.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
+#include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
 #include "postproc/point_locator3d.hpp"
@@ -274,6 +274,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   run->error_estimate = estimate_error_3d(recovery, run->energy.total_J);
   estimate_force_errors_3d(*run, recovery, run->forces);
   run->error_estimate_s = since(t_estimate);
+  run->timings.error_estimate = run->error_estimate_s;
   check_finite(run->recovered_B.values(), "recovered flux density");
   check_finite(run->energy.total_J, "magnetic energy");
   check_forces_finite(run->forces);
@@ -311,38 +312,19 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     write_vtu(stage.path_for("solution.vtu").string(), grid);
   }
   nlohmann::ordered_json j;
-  add_provenance(j);
-  j["case"] = run.spec.file;
-  j["dimension"] = 3;
-  j["order"] = run.spec.order;
-  j["elements"] = run.mesh.n_tets();
-  j["nodes"] = run.mesh.n_nodes();
-  j["unknowns"] = run.dofs->n_dofs();
+  add_run_header(j, {run.spec.file, 3, run.spec.order, run.mesh.n_tets(), run.mesh.n_nodes(),
+                     static_cast<std::size_t>(run.dofs->n_dofs())});
   j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
                        {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
                        {"max_radius_edge", run.mesh.quality.max_radius_edge},
                        {"curved_tets", run.dofs->n_curved()},
                        {"straightened_edge_nodes", run.dofs->n_straightened()}};
-  j["energy_J"] = run.energy.total_J;
-  j["error_estimate"] = {{"energy_error_pct", run.error_estimate.energy_error_pct},
-                         {"energy_norm_error_pct", run.error_estimate.energy_norm_error_pct},
-                         {"indicator", run.error_estimate.indicator},
-                         {"error_norm2_J", run.error_estimate.error_norm2_J},
-                         {"scope", "physical domain; the open-boundary shell is not estimated"},
-                         {"seconds", run.error_estimate_s}};
-  j["converged"] = run.report.converged;
-  j["iterations"] = run.report.iterations;
-  j["residual_history"] = run.report.residual_history;
-  add_solver_summary(j, run.report, run.threads, run.ranks);
-  j["timings_s"] = {{"mesh", run.timings.mesh},
-                    {"assemble", run.timings.assemble},
-                    {"solve", run.timings.solve},
-                    {"linear_setup", run.report.linear_setup_s},
-                    {"linear_solve", run.report.linear_solve_s},
-                    {"postprocess", run.timings.postprocess},
-                    {"error_estimate", run.error_estimate_s},
-                    {"total", run.timings.total}};
-  j["peak_memory_MB"] = peak_memory_mb();
+  add_energy(j, run.energy.total_J, "device");
+  add_error_estimate(j,
+                     {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                      run.error_estimate.indicator, run.error_estimate.error_norm2_J},
+                     run.error_estimate_s);
+  add_solve_record(j, run.report, run.timings, run.threads, run.ranks);
   j["memory_guard"] = {
       {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
       {"estimated_peak_memory_MB",
@@ -386,6 +368,7 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     j["coil_warnings"] = run.coil_results.warnings;
   }
   if (!run.forces.empty()) {
+    j["forces_per"] = "device";
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
   }

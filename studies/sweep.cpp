@@ -183,7 +183,7 @@ CaseSpec fe_position_case(CaseSpec spec, const StressSurface& surface) {
 void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
                     const RunOverrides& fe, double angle_deg) {
   row.angle_deg = angle_deg;
-  CaseSpec spec = rotate_group(base, o.group, o.axis, angle_deg * deg_to_rad, o.point);
+  CaseSpec spec = move_group(base, o, angle_deg);
   ForceResult on_group;
   if (o.analytic) {
     const AnalyticScene scene = analytic_scene(spec);
@@ -250,8 +250,7 @@ void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<do
   if (o.analytic || jobs.requested * o.world.size_on_node < 2)
     return;
   try {
-    const CaseSpec first =
-        rotate_group(spec, o.group, o.axis, angles.front() * deg_to_rad, o.point);
+    const CaseSpec first = move_group(spec, o, angles.front());
     jobs.position_memory_mb = estimated_memory_mb_3d(
         fe_position_case(first, stress_surface(first, o.group, o.surface_radius)), fe_overrides(o));
   } catch (const std::exception&) {
@@ -309,6 +308,47 @@ CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eige
                          "' (groups: " + (groups.empty() ? std::string("none") : groups) + ")");
   }
   return out;
+}
+
+CaseSpec translate_group(const CaseSpec& spec, const std::string& group,
+                         const Eigen::Vector3d& displacement) {
+  if (spec.dimension != 3)
+    throw InputError(cli, 0, "--move", "this sweep translates groups of 3D cases");
+  CaseSpec out = spec;
+  bool found = false;
+  for (std::size_t i = 0; i < out.geometry3d.parts.size(); ++i) {
+    auto& part = out.geometry3d.parts[i];
+    if (!in_group(part, group))
+      continue;
+    found = true;
+    part.placement.translation += displacement;
+    out.regions[i].magnetization.center += displacement;
+  }
+  for (auto& coil : out.geometry3d.coils)
+    if (coil.group == group)
+      found = true, coil.placement.translation += displacement;
+  if (!found)
+    throw InputError(cli, 0, "--move", "no part of " + spec.file + " is in group '" + group + "'");
+  return out;
+}
+
+std::vector<double> sweep_positions(const SweepOptions& o) {
+  if (o.motion == SweepMotion::rotate)
+    return o.angles_deg;
+  std::vector<double> mm;
+  for (const double d : o.offsets_m)
+    mm.push_back(1e3 * d);
+  return mm;
+}
+
+CaseSpec move_group(const CaseSpec& spec, const SweepOptions& o, double position) {
+  if (o.motion == SweepMotion::rotate)
+    return rotate_group(spec, o.group, o.axis, position * deg_to_rad, o.point);
+  return translate_group(spec, o.group, 1e-3 * position * o.axis.normalized());
+}
+
+std::string sweep_position_key(SweepMotion motion) {
+  return motion == SweepMotion::rotate ? "angle_deg" : "position_mm";
 }
 
 StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
@@ -423,7 +463,7 @@ SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
                                 const SweepProgress& progress, SweepJobs* jobs_used) {
   // Fail early, on the main thread, for mistakes that every position would repeat.
-  (void)rotate_group(spec, options.group, options.axis, 0.0, options.point);
+  (void)move_group(spec, options, 0.0);
   if (!options.analytic)
     (void)stress_surface(spec, options.group, options.surface_radius);
   else
@@ -432,9 +472,9 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   // A position that alone needs more memory than the limit: every position would fail the
   // guard, so the sweep is bad input (exit 2, naming the --mesh-scale that fits), as for solve.
   // A first position the mesher rejects is left to fail as a position, with its message.
-  if (!options.analytic && !options.angles_deg.empty()) {
-    const CaseSpec first = rotate_group(spec, options.group, options.axis,
-                                        options.angles_deg.front() * deg_to_rad, options.point);
+  const std::vector<double> positions = sweep_positions(options);
+  if (!options.analytic && !positions.empty()) {
+    const CaseSpec first = move_group(spec, options, positions.front());
     try {
       check_memory_3d(
           fe_position_case(first, stress_surface(first, options.group, options.surface_radius)),
@@ -443,11 +483,11 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     }
   }
 
-  const int total = static_cast<int>(options.angles_deg.size());
+  const int total = static_cast<int>(positions.size());
   SweepJobs jobs;
   jobs.requested = default_position_workers(options.world, options.jobs, total);
   jobs.used = jobs.requested;
-  plan_jobs(spec, options, options.angles_deg, jobs);
+  plan_jobs(spec, options, positions, jobs);
   if (jobs_used)
     *jobs_used = jobs;
   const int workers = jobs.used;
@@ -459,7 +499,7 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     fe.parallel_runs = at_once,
     fe.shared_memory_mb = jobs.memory_limit_mb * options.world.size_on_node;
   return run_positions<SweepRow>(
-      options.angles_deg, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      positions, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
       progress, options.world);
 }
@@ -498,8 +538,8 @@ std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOpti
   return line;
 }
 
-std::string sweep_csv(const std::vector<SweepRow>& rows) {
-  std::string out = "angle_deg,Tx,Ty,Tz,Fx,Fy,Fz\n";
+std::string sweep_csv(const std::vector<SweepRow>& rows, SweepMotion motion) {
+  std::string out = sweep_position_key(motion) + ",Tx,Ty,Tz,Fx,Fy,Fz\n";
   char line[256];
   for (const auto& r : rows) {
     if (!r.ok)

@@ -69,6 +69,18 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reve
                        "' and no region carries current: keep one for the sweep");
 }
 
+} // namespace
+
+std::string sweep_axi_method(const CaseSpec& spec, const std::string& group) {
+  bool reversed = false;
+  const ForceSpec f = group_force(spec, group, reversed);
+  if (f.kind == ForceSpec::Kind::contour)
+    return "stress_tensor_contour";
+  return reversed ? "lorentz_reaction" : "lorentz";
+}
+
+namespace {
+
 void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOptions& o, double dz) {
   row.position_m = dz;
   CaseSpec spec = move_group_axi(base, o.group, dz);

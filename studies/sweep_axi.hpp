@@ -5,8 +5,9 @@
 //
 // The force is the Lorentz force F_z = -int J_phi B_r 2 pi r dA: on the group's current
 // regions when it has any, else, reversed, on the other current regions (Newton's third law:
-// the isolated system feels no net force). Groups that carry no current and face no current
-// (magnet against magnet or iron) would need a stress sphere between them and are refused.
+// the isolated system feels no net force). A group that carries no current and faces none (a
+// magnet over iron) takes the stress-tensor force of the case's one `contour` force on a
+// region of the group, whose box moves with it.
 // Positions run on a small pool of threads like the 3D sweep; a failed position is recorded.
 #include <functional>
 #include <string>
@@ -45,8 +46,13 @@ struct AxiSweepRow {
 // case is not axisymmetric or no region is in the group.
 CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz);
 
+// How the sweep takes the force on the group, as its summary.json `method` says: "lorentz",
+// "lorentz_reaction" (on the other current regions, reversed) or "stress_tensor_contour".
+// Throws InputError as run_sweep_axi when there is no way.
+std::string sweep_axi_method(const CaseSpec& spec, const std::string& group);
+
 using AxiSweepProgress = std::function<void(int done, int total)>;
-// Throws InputError if the force on the group cannot be had from Lorentz forces. Under
+// Throws InputError if the force on the group cannot be had (sweep_axi_method). Under
 // mpirun every process calls this; rank 0 gets the rows, the others none.
 std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& options,
                                        const AxiSweepProgress& progress = {});
