@@ -231,12 +231,14 @@ TEST(Coils3D, BadCoilInputNamesFileLineAndField) {
                     replace(coil_case, "center: [0, 0, 30]", "center: [0, 0, 55]"), 18, "center");
   expect_coil_error("unknown_shape", replace(coil_case, "shape: solenoid", "shape: donut"), 14,
                     "shape");
-  // Overlap with the magnet (the coil's bundle passes through it) is found before meshing:
-  // with a mesh size that would need about a billion tetrahedra, the memory guard (which runs
-  // before TetGen) would refuse the case first if the check came after the mesh.
-  const std::string through = replace(replace(coil_case, "center: [0, 0, 30]", "center: [0, 0, 5]"),
-                                      "mesh: {size: 10}", "mesh: {size: 0.01}");
-  expect_coil_error("overlaps_magnet", through, 13, "coils.coil", true);
+  // Overlap with the magnet (the coil's bundle passes through it) is found before meshing: a
+  // second part reaching beyond the boundary would stop the mesher (a cheap error of its first
+  // step), so the coil's error can only come first if the check runs before the mesh.
+  const std::string through =
+      replace(replace(coil_case, "center: [0, 0, 30]", "center: [0, 0, 5]"), "coils:\n",
+              "  - {name: beyond, shape: box, size: [10, 10, 10],\n"
+              "     placement: {translate: [0, 0, 58]}}\ncoils:\n");
+  expect_coil_error("overlaps_magnet", through, 15, "coils.coil", true);
   try {
     run_case_3d(read_case(test::write_temp_case("overlaps_magnet.yaml", through)));
   } catch (const InputError& e) {
