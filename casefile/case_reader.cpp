@@ -313,14 +313,16 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
   // Parameters first: every field below then reads plain numbers (the unit cannot be one).
   c.parameters =
       apply_parameters(root, overrides, root.has("unit") ? unit_scale(root.at("unit")) : 1e-3);
-  if (root.has("dimension") && root.at("dimension").as_string() == "axi") {
+  // Read as text: 'axisymmetric' or '2d' should hear the three choices, not "expected a number".
+  const std::string dim = root.has("dimension") ? root.at("dimension").as_string() : "2";
+  if (dim == "axi") {
     c.dimension = 2;
     c.geometry2d.symmetry = Symmetry2D::axisymmetric;
+  } else if (dim == "2" || dim == "3") {
+    c.dimension = dim == "2" ? 2 : 3;
   } else {
-    c.dimension = root.get_int("dimension", 2);
+    root.at("dimension").fail("dimension must be 2 | 3 | axi (got '" + dim + "')");
   }
-  if (c.dimension != 2 && c.dimension != 3)
-    root.at("dimension").fail("dimension must be 2, 3 or axi");
   const bool axi = c.axisymmetric();
   if (root.has("unit")) {
     c.unit_name = root.at("unit").as_string();

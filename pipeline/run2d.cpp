@@ -22,6 +22,7 @@
 #include "postproc/vtu_export2d.hpp"
 #include "postproc/vtu_export_revolved.hpp"
 #include "solver/assembler2d.hpp"
+#include "solver/current_sensitivity2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 
 namespace magfem {
@@ -71,18 +72,38 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
   return p;
 }
 
-std::vector<CoilResult2D> coil_results(const Run2D& run) {
+// The sensitivity solves of the differential inductance stop at 1e-9 relative residual when
+// they are iterative (as in 3D, coil_run3d.cpp); direct solves are exact whatever it is.
+LinearSolverOptions sensitivity_options(LinearSolverOptions options) {
+  options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
+  return options;
+}
+
+// Axisymmetric coils: the linkage with the total field (lambda / I is the apparent
+// inductance, which counts the magnets' flux) and the differential inductance d lambda / dI,
+// the linkage of the field's response to the coil's current at the operating point.
+std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& assembler,
+                                       const Eigen::VectorXd& u) {
   std::vector<CoilResult2D> out;
   if (!run.spec.axisymmetric())
     return out;
+  const auto areas = part_areas(run.mesh, run.spec.regions.size());
+  std::vector<CurrentPerAmpere2D> per_ampere;
   for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
     const RegionSpec& r = run.spec.regions[i];
     if (r.turns == 0)
       continue;
-    CoilResult2D c{r.name, r.turns, r.current, 0, 0};
+    CoilResult2D c{r.name, r.turns, r.current};
     c.flux_linkage_Wb = flux_linkage_axi(*run.field, static_cast<int>(i), r.turns);
-    c.inductance_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
+    c.linkage_per_ampere_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
     out.push_back(c);
+    per_ampere.push_back({static_cast<int>(i), r.turns / areas[i]});
+  }
+  const auto du = current_sensitivities_2d(run.problem, *run.dofs, assembler, u, per_ampere,
+                                           sensitivity_options(run.spec.newton.linear));
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Field2D response(run.problem, *run.dofs, assembler.expand(du[k]));
+    out[k].inductance_H = flux_linkage_axi(response, per_ampere[k].part, out[k].turns);
   }
   return out;
 }
@@ -95,17 +116,6 @@ void add_error_indicator(VtuGrid& grid, const Run2D& run) {
     if (!run.problem.is_shell(t))
       a.values.push_back(run.error.eta2[t]);
   grid.cell_data.push_back(std::move(a));
-}
-
-nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
-  auto j = nlohmann::ordered_json::array();
-  for (const auto& c : coils)
-    j.push_back({{"name", c.name},
-                 {"turns", c.turns},
-                 {"current_A", c.current_A},
-                 {"flux_linkage_Wb", c.flux_linkage_Wb},
-                 {"inductance_H", c.inductance_H}});
-  return j;
 }
 
 // NaN (not known on the first pass) as null.
@@ -140,6 +150,18 @@ nlohmann::ordered_json adapt_json(const AdaptHistory2D& h) {
 }
 
 } // namespace
+
+nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils) {
+  auto j = nlohmann::ordered_json::array();
+  for (const auto& c : coils)
+    j.push_back({{"name", c.name},
+                 {"turns", c.turns},
+                 {"current_A", c.current_A},
+                 {"flux_linkage_Wb", c.flux_linkage_Wb},
+                 {"inductance_H", c.inductance_H},
+                 {"linkage_per_ampere_H", c.linkage_per_ampere_H}});
+  return j;
+}
 
 void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e) {
   // Point at the region that caused it when we know it, else at the mesh settings. The
@@ -228,7 +250,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
     run->sections.push_back(integrate_section_2d(*run->field, section, depth));
   check_sections_inside(run->sections, run->spec);
   run->forces = compute_forces_2d(*run);
-  run->coils = coil_results(*run);
+  run->coils = coil_results(*run, assembler, u);
   check_finite(run->energy.total_J_per_m, "magnetic energy");
   check_forces_finite(run->forces);
   run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
@@ -303,7 +325,7 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
     stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
   }
   if (!run.coils.empty())
-    j["coils"] = coils_json(run.coils);
+    j["coils"] = coils_json_2d(run.coils);
   if (run.adapt)
     j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
@@ -350,8 +372,10 @@ std::string describe_run_2d(const Run2D& run) {
     s += buf;
   }
   for (const auto& c : run.coils) {
-    std::snprintf(buf, sizeof buf, "coil     %-20s linkage %.6g Wb, L = linkage / I = %.6g H\n",
-                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H);
+    std::snprintf(buf, sizeof buf,
+                  "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
+                  "linkage / I = %.6g H (apparent)\n",
+                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
     s += buf;
   }
   std::snprintf(buf, sizeof buf,

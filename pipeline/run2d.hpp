@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "casefile/case_spec.hpp"
 #include "core/progress.hpp"
 #include "mesh/mesh2d.hpp"
@@ -44,12 +46,18 @@ struct RunOverrides {
   const SizeField2D* refine_sizes = nullptr;
 };
 
-// An axisymmetric coil (region with turns and current): its flux linkage with the total field
-// and linkage / current (the self-inductance when it is the only source in linear media).
+// An axisymmetric coil (region with turns and current): its flux linkage with the total field,
+// the differential inductance d lambda / dI at the operating point (in linear media the
+// self-inductance, magnets and other currents aside) and the apparent one, linkage / current
+// (which counts the magnets' and other coils' flux).
 struct CoilResult2D {
   std::string name;
-  double turns = 0, current_A = 0, flux_linkage_Wb = 0, inductance_H = 0;
+  double turns = 0, current_A = 0, flux_linkage_Wb = 0;
+  double inductance_H = 0;         // d lambda / dI
+  double linkage_per_ampere_H = 0; // lambda / I (0 at zero current)
 };
+// summary.json's "coils" (also the Python module's Solution.coils).
+nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils);
 
 // One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
 struct AdaptPass2D {

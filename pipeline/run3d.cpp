@@ -139,6 +139,8 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
 
 Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3D& estimate) {
   apply_overrides(spec, overrides);
+  if (!spec.geometry3d.coils.empty())
+    check_coils_in_air(spec, CaseCoils(spec.geometry3d.coils, fe_source_options()));
   return mesh_case(spec, overrides, estimate);
 }
 
@@ -179,6 +181,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
       throw InputError(run->spec.file, 0, "",
                        why + " (" + std::to_string(world.size) + " processes asked for)");
 
+  if (!run->spec.geometry3d.coils.empty()) {
+    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
+    check_coils_in_air(run->spec, *run->coils); // before the mesh: fail fast
+  }
   auto t0 = Clock::now();
   stage("meshing");
   run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
@@ -200,9 +206,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   // limit the field error near curved magnet faces to O(h^2) in the geometry.
   if (run->spec.order == 2)
     run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
-  if (!run->spec.geometry3d.coils.empty()) {
-    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
-    check_coils_in_air(*run);
+  if (run->coils) {
     stage("coil source field: " + std::to_string(run->coils->n_coils()) + " coils at " +
           std::to_string(run->mesh.n_tets() * tet_rule(SourceFieldTable3D::rule_degree).size()) +
           " quadrature points");

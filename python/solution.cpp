@@ -91,15 +91,7 @@ std::string Solution::forces_json() const {
 std::string Solution::coils_json() const {
   if (run3d_)
     return coil_results_json(run3d_->coil_results).dump();
-  // The keys of summary.json's "coils" in 2D (pipeline/run2d.cpp).
-  auto j = nlohmann::ordered_json::array();
-  for (const auto& c : run2d_->coils)
-    j.push_back({{"name", c.name},
-                 {"turns", c.turns},
-                 {"current_A", c.current_A},
-                 {"flux_linkage_Wb", c.flux_linkage_Wb},
-                 {"inductance_H", c.inductance_H}});
-  return j.dump();
+  return coils_json_2d(run2d_->coils).dump();
 }
 
 py::object Solution::inductance_H() const {

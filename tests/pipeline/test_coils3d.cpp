@@ -13,12 +13,12 @@
 
 #include <cmath>
 
+#include "analytic/coil_closed_forms.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_analytic.hpp"
 #include "tests/case_helpers.hpp"
-#include "core/constants.hpp"
-#include "core/input_error.hpp"
-#include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;
 
@@ -231,10 +231,20 @@ TEST(Coils3D, BadCoilInputNamesFileLineAndField) {
                     replace(coil_case, "center: [0, 0, 30]", "center: [0, 0, 55]"), 18, "center");
   expect_coil_error("unknown_shape", replace(coil_case, "shape: solenoid", "shape: donut"), 14,
                     "shape");
-  // Overlap with the magnet is found on the mesh: the coil's bundle passes through it.
-  expect_coil_error("overlaps_magnet",
-                    replace(coil_case, "center: [0, 0, 30]", "center: [0, 0, 5]"), 13, "coils.coil",
-                    true);
+  // Overlap with the magnet (the coil's bundle passes through it) is found before meshing: a
+  // second part reaching beyond the boundary would stop the mesher (a cheap error of its first
+  // step), so the coil's error can only come first if the check runs before the mesh.
+  const std::string through =
+      replace(replace(coil_case, "center: [0, 0, 30]", "center: [0, 0, 5]"), "coils:\n",
+              "  - {name: beyond, shape: box, size: [10, 10, 10],\n"
+              "     placement: {translate: [0, 0, 58]}}\ncoils:\n");
+  expect_coil_error("overlaps_magnet", through, 15, "coils.coil", true);
+  try {
+    run_case_3d(read_case(test::write_temp_case("overlaps_magnet.yaml", through)));
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the coil overlaps region 'magnet'"), std::string::npos)
+        << e.what();
+  }
 }
 
 namespace {
