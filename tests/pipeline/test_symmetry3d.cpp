@@ -85,9 +85,9 @@ double max_probe_error(const Run3D& run) {
 TEST(Symmetry3D, SphereHalfAndQuarterModelsGiveTheFullEnergy) {
   const Run3D& full = full_sphere();
   const auto half = solve_sphere(", symmetry: [{plane: z, field: normal}]", "sym_sphere_half.yaml");
-  const auto quarter = solve_sphere(
-      ", symmetry: [{plane: z, field: normal}, {plane: x, field: parallel}]",
-      "sym_sphere_quarter.yaml");
+  const auto quarter =
+      solve_sphere(", symmetry: [{plane: z, field: normal}, {plane: x, field: parallel}]",
+                   "sym_sphere_quarter.yaml");
   std::printf("sphere energy: full %.7g J (%zu tets), half %.7g J (%zu), quarter %.7g J (%zu)\n",
               full.energy.total_J, full.mesh.n_tets(), half->energy.total_J, half->mesh.n_tets(),
               quarter->energy.total_J, quarter->mesh.n_tets());
@@ -166,9 +166,9 @@ TEST(Symmetry3D, LongCoilOverPlateQuarterModelGivesTheFullModelsResults) {
   const auto& cq = quarter->coil_results.coils.at(0);
   std::printf("coil over plate: energy %.7g / %.7g J, linkage %.7g / %.7g Wb, L %.7g / %.7g H, "
               "Fz %.7g / %.7g N (full / quarter)\n",
-              full->energy.total_J, quarter->energy.total_J, cf.flux_linkage_Wb,
-              cq.flux_linkage_Wb, full->coil_results.inductance_H(0, 0),
-              quarter->coil_results.inductance_H(0, 0), cf.force_N.z(), cq.force_N.z());
+              full->energy.total_J, quarter->energy.total_J, cf.flux_linkage_Wb, cq.flux_linkage_Wb,
+              full->coil_results.inductance_H(0, 0), quarter->coil_results.inductance_H(0, 0),
+              cf.force_N.z(), cq.force_N.z());
   EXPECT_NEAR(quarter->energy.total_J, full->energy.total_J, 1e-3 * full->energy.total_J);
   EXPECT_NEAR(cq.flux_linkage_Wb, cf.flux_linkage_Wb, 1e-3 * cf.flux_linkage_Wb);
   EXPECT_NEAR(quarter->coil_results.inductance_H(0, 0), full->coil_results.inductance_H(0, 0),
@@ -192,8 +192,8 @@ std::string refusal(const std::string& symmetry, const std::string& placement = 
 } // namespace
 
 TEST(Symmetry3D, RefusesAPlaneTheGeometryIsNotSymmetricAbout) {
-  const std::string why = refusal(", symmetry: [{plane: z, field: normal}]",
-                                  ", placement: {translate: [0, 0, 1]}");
+  const std::string why =
+      refusal(", symmetry: [{plane: z, field: normal}]", ", placement: {translate: [0, 0, 1]}");
   EXPECT_NE(why.find("part 'sphere' is not symmetric about the symmetry plane z = 0"),
             std::string::npos)
       << why;
@@ -204,8 +204,8 @@ TEST(Symmetry3D, RefusesAPlaneTheGeometryIsNotSymmetricAbout) {
 // Magnetized along z: its own image about z = 0 only with `normal`, about x = 0 only with
 // `parallel`.
 TEST(Symmetry3D, RefusesAFieldConditionThatContradictsTheMagnetization) {
-  for (const char* wrong : {", symmetry: [{plane: z, field: parallel}]",
-                            ", symmetry: [{plane: x, field: normal}]"}) {
+  for (const char* wrong :
+       {", symmetry: [{plane: z, field: parallel}]", ", symmetry: [{plane: x, field: normal}]"}) {
     const std::string why = refusal(wrong);
     EXPECT_NE(why.find("part 'sphere'"), std::string::npos) << why;
     EXPECT_NE(why.find("its magnetization"), std::string::npos) << why;
@@ -226,4 +226,35 @@ TEST(Symmetry3D, RefusesAFieldConditionThatContradictsACoilsCurrent) {
               std::string::npos)
         << why;
   }
+}
+
+// Reader errors name the file, line and field (exit 2).
+TEST(Symmetry3D, ReaderRefusesBadPlanes) {
+  auto error_of = [](const std::string& text) -> std::string {
+    try {
+      read_case(test::write_temp_case("sym_reader.yaml", text));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string sphere = std::regex_replace(sphere_case, std::regex("SYMMETRY"), "");
+  auto with = [&](const std::string& planes) {
+    return std::regex_replace(sphere, std::regex("shell_ratio: 1.5\\}"),
+                              "shell_ratio: 1.5, symmetry: " + planes + "}");
+  };
+  EXPECT_NE(error_of(with("[{plane: z, field: normal}, {plane: z, field: normal}]"))
+                .find("plane z is listed twice"),
+            std::string::npos);
+  EXPECT_NE(error_of(with("[{plane: w, field: normal}]")).find("unknown symmetry plane 'w'"),
+            std::string::npos);
+  EXPECT_NE(error_of(with("[{plane: x, field: tangential}]")).find("unknown field condition"),
+            std::string::npos);
+  const std::string planar = R"(
+regions:
+  - {name: m, shape: rectangle, center: [0, 0], width: 2, height: 2}
+boundary: {type: open, radius: 20, symmetry: [{plane: x, field: normal}]}
+mesh: {size: 2}
+)";
+  EXPECT_NE(error_of(planar).find("3D cases only"), std::string::npos) << error_of(planar);
 }
