@@ -8,6 +8,7 @@
 
 #include "mesh/coil3d.hpp"
 #include "mesh/placement3d.hpp"
+#include "mesh/symmetry_plane3d.hpp"
 
 namespace magfem {
 
@@ -72,6 +73,9 @@ struct Geometry3D {
   std::vector<Coil3D> coils; // not meshed: they enter through their source field
   OuterBoundary3D outer;
   MeshOptions3D options;
+  // Symmetry planes (mesh/symmetry_plane3d.hpp): only the side where each plane's coordinate
+  // is >= 0 is meshed; the cut on the plane is a boundary of the mesh.
+  std::vector<SymmetryPlane3D> symmetry;
 };
 
 } // namespace magfem

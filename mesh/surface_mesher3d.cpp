@@ -1,9 +1,12 @@
 #include "mesh/surface_mesher3d.hpp"
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
+#include <set>
 #include <unordered_map>
+#include <utility>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_criteria_2.h>
@@ -89,6 +92,46 @@ struct EdgeKey {
   }
 };
 
+// Divides the curve at(t), t in [lo, hi], so that consecutive points are about h apart:
+// integrates 1/h along it and places points at equal increments of the integral. Point ids
+// from the lower to the upper end.
+std::vector<int> divide_curve(const std::function<Vec3(double)>& at, double lo, double hi,
+                              const SizeField3D& size, PointPool& pool) {
+  const Vec3 a = at(lo), b = at(hi), m = at(0.5 * (lo + hi));
+  if ((a - b).norm() + (a - m).norm() < 1e-12 * (1 + a.norm()))
+    return {pool.insert(a)};
+  std::vector<double> ts{lo}, integral{0};
+  double t = lo;
+  Vec3 x = a;
+  const double dt_probe = 1e-7 * (hi - lo);
+  while (t < hi) {
+    const double h = size(x);
+    const double speed =
+        (at(std::min(t + dt_probe, hi)) - at(std::min(t + dt_probe, hi) - dt_probe)).norm() /
+        dt_probe;
+    const double dt = std::min(hi - t, curve_step * h / std::max(speed, 1e-300));
+    const double t_next = t + dt;
+    const Vec3 x_next = at(t_next);
+    const double h_next = size(x_next);
+    integral.push_back(integral.back() + (x_next - x).norm() * 0.5 * (1 / h + 1 / h_next));
+    ts.push_back(t_next);
+    t = t_next;
+    x = x_next;
+  }
+  const int n_seg = std::max(1, static_cast<int>(std::ceil(integral.back() - 1e-6)));
+  std::vector<int> ids{pool.insert(a)};
+  std::size_t s = 0;
+  for (int k = 1; k < n_seg; ++k) {
+    const double target = integral.back() * k / n_seg;
+    while (integral[s + 1] < target)
+      ++s;
+    const double w = (target - integral[s]) / (integral[s + 1] - integral[s]);
+    ids.push_back(pool.insert(at(ts[s] + w * (ts[s + 1] - ts[s]))));
+  }
+  ids.push_back(pool.insert(b));
+  return ids;
+}
+
 class CurveCache {
 public:
   CurveCache(const GridDecomposition3D& dec, const SizeField3D& size, PointPool& pool)
@@ -103,8 +146,6 @@ public:
   }
 
 private:
-  // Divides the curve so that consecutive points are about h apart: integrates 1/h along it
-  // and places points at equal increments of the integral.
   std::vector<int> divide(const EdgeKey& key) const {
     const GridFrame3D& f = dec_.frames[key.frame];
     Vec3 q;
@@ -112,45 +153,12 @@ private:
     for (int a = 0; a < 3; ++a)
       if (a != key.axis)
         q[a] = f.breaks[a][key.fixed[n++]];
-    const double lo = f.lo(key.axis, key.cell), hi = f.hi(key.axis, key.cell);
     auto at = [&](double t) {
       Vec3 qq = q;
       qq[key.axis] = t;
       return f.point(qq);
     };
-    const Vec3 a = at(lo), b = at(hi), m = at(0.5 * (lo + hi));
-    if ((a - b).norm() + (a - m).norm() < 1e-12 * (1 + a.norm()))
-      return {pool_.insert(a)};
-    std::vector<double> ts{lo}, integral{0};
-    double t = lo;
-    Vec3 x = a;
-    const double dt_probe = 1e-7 * (hi - lo);
-    while (t < hi) {
-      const double h = size_(x);
-      const double speed =
-          (at(std::min(t + dt_probe, hi)) - at(std::min(t + dt_probe, hi) - dt_probe)).norm() /
-          dt_probe;
-      const double dt = std::min(hi - t, curve_step * h / std::max(speed, 1e-300));
-      const double t_next = t + dt;
-      const Vec3 x_next = at(t_next);
-      const double h_next = size_(x_next);
-      integral.push_back(integral.back() + (x_next - x).norm() * 0.5 * (1 / h + 1 / h_next));
-      ts.push_back(t_next);
-      t = t_next;
-      x = x_next;
-    }
-    const int n_seg = std::max(1, static_cast<int>(std::ceil(integral.back() - 1e-6)));
-    std::vector<int> ids{pool_.insert(a)};
-    std::size_t s = 0;
-    for (int k = 1; k < n_seg; ++k) {
-      const double target = integral.back() * k / n_seg;
-      while (integral[s + 1] < target)
-        ++s;
-      const double w = (target - integral[s]) / (integral[s + 1] - integral[s]);
-      ids.push_back(pool_.insert(at(ts[s] + w * (ts[s + 1] - ts[s]))));
-    }
-    ids.push_back(pool_.insert(b));
-    return ids;
+    return divide_curve(at, f.lo(key.axis, key.cell), f.hi(key.axis, key.cell), size_, pool_);
   }
 
   const GridDecomposition3D& dec_;
@@ -209,6 +217,9 @@ std::vector<int> face_loop(const GridDecomposition3D& dec, const GridFace3D& fac
   return loop;
 }
 
+// Chart coordinates -> the 3D point on the surface.
+using ToSurface = std::function<Vec3(const Eigen::Vector2d&)>;
+
 // Delaunay refinement criteria: a triangle is too big when its longest edge, measured on the
 // surface (chords in 3D), exceeds h at its centroid; shape is judged in the chart, which is
 // conformal or isometric.
@@ -229,7 +240,7 @@ public:
   };
   class Is_bad : public Base::Is_bad {
   public:
-    Is_bad(const FaceChart3D& chart, const SizeField3D& size)
+    Is_bad(const ToSurface& chart, const SizeField3D& size)
         : Base::Is_bad(shape_bound, K()), chart_(&chart), size_(&size) {}
     CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
       if (q.size() > 1)
@@ -242,7 +253,7 @@ public:
       for (int i = 0; i < 3; ++i) {
         const Point2& pt = fh->vertex(i)->point();
         p[i] = {pt.x(), pt.y()};
-        x[i] = chart_->to_3d(p[i]);
+        x[i] = (*chart_)(p[i]);
       }
       double l3 = 0;
       for (int i = 0; i < 3; ++i)
@@ -264,20 +275,51 @@ public:
     }
 
   private:
-    const FaceChart3D* chart_;
+    const ToSurface* chart_;
     const SizeField3D* size_;
   };
 
-  SurfaceCriteria(const FaceChart3D& chart, const SizeField3D& size)
+  SurfaceCriteria(const ToSurface& chart, const SizeField3D& size)
       : Base(shape_bound), chart_(&chart), size_(&size) {}
   Is_bad is_bad_object() const { return Is_bad(*chart_, *size_); }
 
 private:
-  const FaceChart3D* chart_;
+  const ToSurface* chart_;
   const SizeField3D* size_;
 };
 
 using Mesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SurfaceCriteria>;
+
+// Refines the constrained triangulation to the size field (constrained edges are never split:
+// they are shared with neighbouring faces) and appends its points and its triangles inside
+// the constraints (tagged `face_code`) to `out`. Returns the number of constrained edges.
+std::size_t refine_into(Cdt& cdt, const ToSurface& to_3d, const SizeField3D& size, int face_code,
+                        SurfaceMesh3D& out) {
+  Mesher mesher(cdt, SurfaceCriteria(to_3d, size));
+  // CGAL 5.5's Delaunay_mesher_no_edge_refinement_2 leaves its seeds_mark flag uninitialized
+  // and refine_mesh() reads it (UBSan: "load of value 174 ... for type 'bool'"); with no seeds
+  // it does not change the result, but the read is undefined. clear_seeds() sets it.
+  mesher.clear_seeds();
+  mesher.refine_mesh();
+  // Re-mark the domain: only faces inside the boundary loop are output.
+  Mesher::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (v->info().id < 0) {
+      v->info().id = static_cast<int>(out.points.size());
+      out.points.push_back(to_3d({v->point().x(), v->point().y()}));
+    }
+  std::size_t n_constrained = 0;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    n_constrained += cdt.is_constrained(*e);
+  for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+    if (!fh->is_in_domain())
+      continue;
+    out.triangles.push_back(
+        {fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id});
+    out.triangle_face.push_back(face_code);
+  }
+  return n_constrained;
+}
 
 void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& size,
                CurveCache& curves, SurfaceMesh3D& out) {
@@ -297,45 +339,121 @@ void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& s
     throw MeshError("", "", "internal: boundary points of a face coincide in its chart");
   for (std::size_t i = 0; i < vh.size(); ++i)
     cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
-  Mesher mesher(cdt, SurfaceCriteria(chart, size));
-  // CGAL 5.5's Delaunay_mesher_no_edge_refinement_2 leaves its seeds_mark flag uninitialized
-  // and refine_mesh() reads it (UBSan: "load of value 174 ... for type 'bool'"); with no seeds
-  // it does not change the result, but the read is undefined. clear_seeds() sets it.
-  mesher.clear_seeds();
-  mesher.refine_mesh();
-  // Re-mark the domain: only faces inside the boundary loop are output.
-  Mesher::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if (v->info().id < 0) {
-      v->info().id = static_cast<int>(out.points.size());
-      out.points.push_back(chart.to_3d({v->point().x(), v->point().y()}));
-    }
-  std::size_t n_constrained = 0;
-  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
-    n_constrained += cdt.is_constrained(*e);
-  if (n_constrained != loop.size())
+  const ToSurface to_3d = [&chart](const Eigen::Vector2d& uv) { return chart.to_3d(uv); };
+  if (refine_into(cdt, to_3d, size, face_id, out) != loop.size())
     throw MeshError("", "", "internal: a face boundary was split while meshing the face");
-  for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
-    if (!fh->is_in_domain())
-      continue;
-    out.triangles.push_back(
-        {fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id});
-    out.triangle_face.push_back(face_id);
+}
+
+using Edge = std::pair<int, int>; // point ids, lower first
+
+Edge edge_of(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// The line where planes p and q meet (the third axis c), within the ball and on the kept side
+// of a third plane normal to it: its points on kept faces, its ends, and points between them
+// at the local size. Its segments are constraints of both planes' facets.
+void add_plane_line(const std::vector<SymmetryPlane3D>& planes, std::size_t p, std::size_t q,
+                    double radius, double tol, const SizeField3D& size, PointPool& pool,
+                    std::vector<Vec3>& points, std::vector<std::set<Edge>>& edges) {
+  const int c = 3 - planes[p].axis - planes[q].axis;
+  double lo = -radius;
+  for (const SymmetryPlane3D& r : planes)
+    if (r.axis == c)
+      lo = 0;
+  const double hi = radius;
+  auto at = [c](double t) {
+    Vec3 x = Vec3::Zero();
+    x[c] = t;
+    return x;
+  };
+  pool.insert(at(lo));
+  pool.insert(at(hi));
+  std::vector<std::pair<double, int>> on_line;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (std::abs(points[i][planes[p].axis]) <= tol && std::abs(points[i][planes[q].axis]) <= tol)
+      on_line.emplace_back(points[i][c], static_cast<int>(i));
+  std::sort(on_line.begin(), on_line.end());
+  for (std::size_t k = 0; k + 1 < on_line.size(); ++k) {
+    const std::vector<int> ids =
+        divide_curve(at, on_line[k].first, on_line[k + 1].first, size, pool);
+    for (std::size_t i = 0; i + 1 < ids.size(); ++i)
+      for (std::size_t plane : {p, q})
+        edges[plane].insert(edge_of(ids[i], ids[i + 1]));
   }
+}
+
+// Triangulates the plane's share: every surface point on it is a vertex, every edge in
+// `edges` a constraint (the loops of the kept faces that end on the plane close the share).
+void mesh_plane(const SymmetryPlane3D& plane, int index, const std::set<Edge>& edges,
+                const SizeField3D& size, SurfaceMesh3D& out) {
+  const int u = (plane.axis + 1) % 3, v = (plane.axis + 2) % 3;
+  Cdt cdt;
+  std::unordered_map<int, Cdt::Vertex_handle> vh;
+  for (std::size_t i = 0; i < out.points.size(); ++i)
+    if (out.points[i][plane.axis] == 0) { // snapped (mesh_surfaces_3d)
+      auto h = cdt.insert(Point2(out.points[i][u], out.points[i][v]));
+      h->info().id = static_cast<int>(i);
+      vh[static_cast<int>(i)] = h;
+    }
+  for (const Edge& e : edges)
+    cdt.insert_constraint(vh.at(e.first), vh.at(e.second));
+  const ToSurface to_3d = [&](const Eigen::Vector2d& uv) {
+    Vec3 x = Vec3::Zero();
+    x[u] = uv.x();
+    x[v] = uv.y();
+    return x;
+  };
+  if (refine_into(cdt, to_3d, size, symmetry_face_code(index), out) != edges.size())
+    throw MeshError("", "",
+                    std::string("internal: the curves on the symmetry plane ") +
+                        axis_name(plane.axis) + " = 0 cross each other");
 }
 
 } // namespace
 
 SurfaceMesh3D mesh_surfaces_3d(const GridDecomposition3D& dec, const SizeField3D& size,
-                               double merge_tol) {
+                               double merge_tol, const std::vector<SymmetryPlane3D>& planes,
+                               double outer_radius) {
   SurfaceMesh3D out;
   PointPool pool(out.points, merge_tol);
   CurveCache curves(dec, size, pool);
   // All curve points first (pooled), then face interiors (never shared).
-  for (const GridFace3D& face : dec.faces)
-    face_loop(dec, face, curves);
+  const double tol = merge_tol;
+  std::vector<std::set<Edge>> plane_edges(planes.size());
+  auto on_plane = [&](int id, const SymmetryPlane3D& p) {
+    return std::abs(out.points[id][p.axis]) <= tol;
+  };
+  for (const GridFace3D& face : dec.faces) {
+    const std::vector<int> loop = face_loop(dec, face, curves);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      for (std::size_t p = 0; p < planes.size(); ++p)
+        if (a != b && on_plane(a, planes[p]) && on_plane(b, planes[p]))
+          plane_edges[p].insert(edge_of(a, b));
+    }
+  }
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    for (std::size_t q = p + 1; q < planes.size(); ++q)
+      add_plane_line(planes, p, q, outer_radius, tol, size, pool, out.points, plane_edges);
+  // Points on a plane lie on it exactly: its facets are then coplanar for TetGen.
+  for (Vec3& x : out.points)
+    for (const SymmetryPlane3D& p : planes)
+      if (std::abs(x[p.axis]) <= tol)
+        x[p.axis] = 0;
   for (std::size_t i = 0; i < dec.faces.size(); ++i)
     mesh_face(dec, static_cast<int>(i), size, curves, out);
+  // A face triangle lying in a plane would double its facet (a face curved onto the plane).
+  for (std::size_t t = 0; t < out.triangles.size(); ++t)
+    for (const SymmetryPlane3D& p : planes)
+      if (out.points[out.triangles[t][0]][p.axis] == 0 &&
+          out.points[out.triangles[t][1]][p.axis] == 0 &&
+          out.points[out.triangles[t][2]][p.axis] == 0)
+        throw MeshError("", "",
+                        std::string("internal: a surface triangle lies in the symmetry plane ") +
+                            axis_name(p.axis) + " = 0");
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    mesh_plane(planes[p], static_cast<int>(p), plane_edges[p], size, out);
   return out;
 }
 

@@ -13,11 +13,23 @@ namespace magfem {
 struct SurfaceMesh3D {
   std::vector<Vec3> points;                  // boundary-curve points first, shared
   std::vector<std::array<int, 3>> triangles; // unoriented
-  std::vector<int> triangle_face;            // index into GridDecomposition3D::faces
+  // Index into GridDecomposition3D::faces, or symmetry_face_code(p) on symmetry plane p.
+  std::vector<int> triangle_face;
 };
 
+inline int symmetry_face_code(int plane) {
+  return -1 - plane;
+}
+inline int symmetry_plane_of(int face_code) {
+  return -1 - face_code; // for face_code < 0
+}
+
 // merge_tol: points of different curves closer than this are one point (metres).
+// With symmetry planes (the faces already clipped by decompose_geometry_3d), each plane's
+// share inside the ball of outer_radius is triangulated too, conforming to the curves where
+// the kept faces meet it and to the lines where two planes meet.
 SurfaceMesh3D mesh_surfaces_3d(const GridDecomposition3D& dec, const SizeField3D& size,
-                               double merge_tol);
+                               double merge_tol, const std::vector<SymmetryPlane3D>& planes = {},
+                               double outer_radius = 0);
 
 } // namespace magfem

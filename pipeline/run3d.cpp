@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "casefile/symmetry_check3d.hpp"
 #include "core/constants.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
@@ -79,6 +80,7 @@ InputError input_error_of(const CaseSpec& spec, const MeshError& e) {
 }
 
 Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
+  check_symmetry_3d(spec); // before meshing: the share would stand for a different device
   try {
     return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), memory_guard(spec, ov, estimate));
   } catch (const MeshError& e) {
@@ -119,6 +121,33 @@ void check_same_mesh_everywhere(const Mesh3D& mesh) {
     throw std::runtime_error("the processes of this mpirun meshed the case differently (mesh "
                              "fingerprints differ); run the same magfem build and case on "
                              "every process");
+}
+
+// The model's share -> the whole device (mesh/symmetry_plane3d.hpp). Energies: 2 per plane
+// in all (the energy density is even about each plane), and per part 2 per plane that cuts it
+// (a part on one side is whole in the model; its image beyond is another part, not meshed).
+// Flux linkages and inductances: 2 per plane, every coil being its own mirror image
+// (check_symmetry_3d) so that B . h_k is even too. Forces, torques and probes need nothing:
+// they sample the whole device's field through the mirror (PointLocator3D).
+void scale_to_whole_device(Run3D& run) {
+  if (run.spec.geometry3d.symmetry.empty())
+    return;
+  const double factor = symmetry_factor(run.spec.geometry3d.symmetry);
+  const std::vector<double> per_part = region_symmetry_factors(run.spec);
+  run.energy.total_J *= factor;
+  for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
+    auto& r = run.energy.regions[i];
+    const double f = i < per_part.size() ? per_part[i] : factor; // then air and the shell
+    r.energy_J *= f;
+    r.volume_m3 *= f;
+    if (i < run.mesh.part_volumes.size())
+      run.mesh.part_volumes[i] *= f;
+  }
+  run.error_estimate.error_norm2_J *= factor;
+  run.error_estimate.energy_norm2_J *= factor;
+  for (auto& c : run.coil_results.coils)
+    c.flux_linkage_Wb *= factor;
+  run.coil_results.inductance_H *= factor;
 }
 
 } // namespace
@@ -278,6 +307,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   check_finite(run->recovered_B.values(), "recovered flux density");
   check_finite(run->energy.total_J, "magnetic energy");
   check_forces_finite(run->forces);
+  scale_to_whole_device(*run);
   run->warnings = run->mesh.warnings;
   for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
     run->warnings.push_back(std::move(w));
@@ -320,6 +350,14 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
                        {"curved_tets", run.dofs->n_curved()},
                        {"straightened_edge_nodes", run.dofs->n_straightened()}};
   add_energy(j, run.energy.total_J, "device");
+  if (const auto& planes = run.spec.geometry3d.symmetry; !planes.empty()) {
+    // What was meshed, and that energies, linkages and inductances are the whole device's.
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& p : planes)
+      list.push_back({{"plane", axis_name(p.axis)}, {"field", field_name(p.field)}});
+    j["symmetry"] = list;
+    j["symmetry_factor"] = symmetry_factor(planes);
+  }
   add_error_estimate(j,
                      {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
                       run.error_estimate.indicator, run.error_estimate.error_norm2_J},
@@ -380,14 +418,15 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
 
 std::string describe_run_3d(const Run3D& run) {
   char buf[640];
-  std::snprintf(buf, sizeof buf,
-                "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-                "solve    order %d, %d unknowns, %s, residual %.2e\n"
-                "energy   %.6g J\n",
-                run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
-                run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-                describe_solver(run.report).c_str(), run.report.residual_history.back(),
-                run.energy.total_J);
+  std::snprintf(
+      buf, sizeof buf,
+      "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
+      "solve    order %d, %d unknowns, %s, residual %.2e\n"
+      "energy   %.6g J%s\n",
+      run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+      run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
+      describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
+      run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
   std::string s = buf;
   if (run.dofs->n_straightened() > 0)
     s += "note     " + std::to_string(run.dofs->n_straightened()) +
