@@ -337,6 +337,7 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
                     {"linear_solve", run.report.linear_solve_s},
                     {"postprocess", run.timings.postprocess},
                     {"error_estimate", run.error_estimate_s},
+                    {"inductance", run.coil_results.inductance_s},
                     {"total", run.timings.total}};
   j["peak_memory_MB"] = peak_memory_mb();
   j["memory_guard"] = {
