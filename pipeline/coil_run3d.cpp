@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
@@ -180,12 +181,14 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
     out.coils.push_back(r);
   }
   if (run.spec.coil_inductance) {
+    const auto t0 = std::chrono::steady_clock::now();
     const auto sens = current_sensitivities_3d(assembler, u, nc,
                                                sensitivity_solver_options(run.spec.newton.linear));
     std::vector<Eigen::VectorXd> full;
     for (const auto& s : sens)
       full.push_back(assembler.expand(s));
     out.inductance_H = inductance_matrix_3d(*run.field, full);
+    out.inductance_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   out.warnings = run.coil_source.warnings;
   return out;

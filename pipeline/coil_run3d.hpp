@@ -63,6 +63,9 @@ struct CoilResult {
 struct CoilResults {
   std::vector<CoilResult> coils;
   Eigen::MatrixXd inductance_H; // empty if not computed
+  // Seconds for the inductance matrix: the tangent, its preconditioner set-up, the block solve
+  // of all coils' sensitivities and the integrals (part of the post-processing time).
+  double inductance_s = 0;
   std::vector<std::string> warnings;
 };
 

@@ -363,6 +363,8 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
                       run.error_estimate.indicator, run.error_estimate.error_norm2_J},
                      run.error_estimate_s);
   add_solve_record(j, run.report, run.timings, run.threads, run.ranks);
+  // The coils' inductance matrix (part of postprocess), 3D only.
+  j["timings_s"]["inductance"] = run.coil_results.inductance_s;
   j["memory_guard"] = {
       {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
       {"estimated_peak_memory_MB",

@@ -84,6 +84,21 @@ awk -v a="$(timing "$out/steel3d" total)" -v b="$(timing "$out/steel3d_lin" tota
   'BEGIN { printf "    nonlinear / linear: %.2fx\n", a / b }'
 
 echo
+echo "== inductance matrix (issue 35 target: the n x n matrix <= 2x the time of one solve)"
+echo "   spherical_actuator_design, 12 coils, mesh-scale 3"
+$magfem solve examples/3d/spherical_actuator_design.yaml --mesh-scale 3 --quiet --out "$out/act_l" > /dev/null
+report "actuator design, 12 coils" "$out/act_l"
+awk -v s="$(timing "$out/act_l" solve)" -v l="$(timing "$out/act_l" inductance)" \
+  'BEGIN { printf "    one solve %.2f s, 12 x 12 inductance matrix %.2f s = %.2fx (target <= 2x)\n", s, l, l / s }'
+
+echo
+echo "== start-up (issue 35 target: <= 50 ms for commands that need neither PETSc nor VTK)"
+start=$(date +%s.%N)
+for _ in $(seq 20); do $magfem --version > /dev/null; done
+awk -v a="$start" -v b="$(date +%s.%N)" -v n="$(ldd $magfem | wc -l)" \
+  'BEGIN { printf "    magfem --version: %.1f ms per run over 20 runs (target <= 50 ms), %d shared libraries\n", 1000 * (b - a) / 20, n }'
+
+echo
 echo "== 3D linear solver (issue 13): CG iterations and times, incomplete Cholesky vs p-multigrid vs BoomerAMG"
 echo "   (multigrid: iterations nearly flat under refinement; IC grows)"
 # The case's solver line with the preconditioner named; the copy sits next to the original so
