@@ -10,6 +10,7 @@
 #include "core/input_error.hpp"
 #include "python/analytic.hpp"
 #include "python/solution.hpp"
+#include "python/sweep.hpp"
 
 namespace py = pybind11;
 
@@ -67,4 +68,5 @@ PYBIND11_MODULE(_core, m) {
         "Reads and validates a case file; returns [(parameter, value), ...].");
   magfem::python::bind_solution(m);
   magfem::python::bind_analytic(m);
+  magfem::python::bind_sweep(m);
 }

@@ -2,7 +2,8 @@
 
 So far: ``__version__``, ``Case`` (load, from_dict, with_params, to_yaml: the case read and
 validated by the same reader as ``magfem solve``), ``Case.solve`` returning a ``Solution``
-(the same in-process pipeline as ``magfem solve``) and the exception types.
+(the same in-process pipeline as ``magfem solve``), ``analytic``, ``sweep`` (``magfem sweep``
+in-process, numpy columns) and the exception types.
 """
 import contextlib
 import os
@@ -10,6 +11,7 @@ import os
 from . import _core
 from ._core import __version__
 from .solution import AnalyticSolution, Mesh, Solution
+from .studies import SweepResult, sweep
 
 # The compiled reader raises this (a ValueError carrying file, line, field).
 InputError = _core._InputError
@@ -126,4 +128,4 @@ def analytic(case, model="charge", tolerance=1e-6, n_max=150):
 
 
 __all__ = ["__version__", "AnalyticSolution", "Case", "InputError", "Mesh", "Solution",
-           "SolveError", "analytic"]
+           "SolveError", "SweepResult", "analytic", "sweep"]
