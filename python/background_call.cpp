@@ -14,7 +14,7 @@ namespace {
 constexpr std::chrono::milliseconds poll_interval{50};
 } // namespace
 
-BackgroundCall::BackgroundCall(py::object progress) {
+BackgroundCall::BackgroundCall(py::object progress, std::string item) : item_(std::move(item)) {
   if (py::isinstance<py::bool_>(progress))
     print_ = progress.cast<bool>();
   else if (!progress.is_none())
@@ -34,7 +34,7 @@ void BackgroundCall::pass_reports() {
   }
   for (const auto& [done, total] : reports) {
     if (print_)
-      std::fprintf(stderr, "position %d/%d done\n", done, total);
+      std::fprintf(stderr, "%s %d/%d done\n", item_.c_str(), done, total);
     if (callback_)
       callback_(done, total);
   }

@@ -13,6 +13,7 @@
 #include <functional>
 #include <mutex>
 #include <stop_token>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -22,9 +23,9 @@ namespace magfem::python {
 
 class BackgroundCall {
 public:
-  // progress: None (silent), True (the command line's "position i/n done" lines on stderr)
-  // or a callable progress(done, total). Constructed with the GIL held.
-  explicit BackgroundCall(pybind11::object progress);
+  // progress: None (silent), True (a "position i/n done" line on stderr per report, `item`
+  // naming what is done) or a callable progress(done, total). Constructed with the GIL held.
+  explicit BackgroundCall(pybind11::object progress, std::string item = "position");
 
   // From any thread: queues a report for the caller's thread.
   void report(int done, int total);
@@ -40,6 +41,7 @@ private:
 
   pybind11::object callback_;
   bool print_ = false;
+  std::string item_;
   std::stop_source stop_;
   std::mutex mutex_;
   std::vector<std::pair<int, int>> queued_;

@@ -7,10 +7,10 @@ import numpy as np
 from . import _core
 
 
-def _argument_error(field, message):
+def _argument_error(field, message, call="<sweep>"):
     """An InputError about an argument of a study call ("<sweep>: field: message")."""
-    err = _core._InputError("<sweep>: %s: %s" % (field, message))
-    err.file, err.line, err.field = "<sweep>", None, field
+    err = _core._InputError("%s: %s: %s" % (call, field, message))
+    err.file, err.line, err.field = call, None, field
     return err
 
 
@@ -118,3 +118,109 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     out = _core.sweep(case._path or "", case._text or "", case._name or "", case._params,
                       request, progress)
     return SweepResult(out["columns"], json.loads(out["summary"]))
+
+
+class ActuatorResult:
+    """``magfem actuator``'s tables as numpy arrays (returned by magfem.actuator).
+
+    ``coils`` (names, the columns' order), ``resistance_ohm`` (per coil),
+    ``orientations_deg`` (n x 3: rx, ry, rz; R = Rz(rz) Ry(ry) Rx(rx)), ``gamma`` (n x 3 x
+    coils: the torque constants, N m/A, torque_constants.csv's kx, ky, kz per coil),
+    ``commutations``: demand name ("T_d", or "P_x", "P_y", "P_z" for the unit torques) ->
+    dict with ``torque_Nm`` (3,), ``currents_A`` (n x coils), ``P_W``, ``i_peak_A``,
+    ``cond_Gamma`` and ``ok`` (n,), as the commutation CSVs (NaN where an ill-conditioned
+    row leaves the cell empty); ``method`` ("charge_model" or "fe"), ``n_field_solves``,
+    ``notes``."""
+
+    def __init__(self, d):
+        self.method = d["method"]
+        self.coils = list(d["coils"])
+        self.resistance_ohm = d["resistance_ohm"]
+        self.orientations_deg = d["orientations_deg"]
+        self.gamma = d["gamma"]
+        self.commutations = dict(d["commutations"])
+        self.n_field_solves = d["n_field_solves"]
+        self.notes = list(d["notes"])
+
+    def __repr__(self):
+        return "<magfem.ActuatorResult %s: %d orientations x %d coils>" % (
+            self.method, len(self.orientations_deg), len(self.coils))
+
+
+def actuator(case, rotor, orientations, analytic=True, torque=None, *, order=None,
+             mesh_scale=1.0, progress=None):
+    """Runs ``magfem actuator`` on a Case in-process; returns an ActuatorResult.
+
+    ``rotor``: the rotor's group. ``orientations``: the command line's --orientations text
+    ("rx=-45:15:45,ry=0,rz=0", or a CSV file with rx_deg,ry_deg,rz_deg) or an n x 3 array of
+    (rx, ry, rz) in degrees. ``torque``: the demanded torque (3 numbers, N m; None: the unit
+    torques about x, y and z, the thesis's power study). ``analytic``: the charge model
+    (True) or FE (False; ``order``, ``mesh_scale`` and ``progress`` as in Case.solve, whose
+    Ctrl-C handling the FE solves share). The GIL is released meanwhile. Raises InputError.
+    """
+    request = _core.ActuatorRequest()
+    request.rotor = str(rotor)
+    if isinstance(orientations, str):
+        request.orientations_text = orientations
+    else:
+        rows = np.asarray(orientations, dtype=float)
+        if rows.ndim != 2 or rows.shape[1] != 3:
+            raise _argument_error("orientations", "an n x 3 array of (rx, ry, rz) in degrees "
+                                  "or the command line's text, not shape %s" % (rows.shape,),
+                                  "<actuator>")
+        request.orientations = [tuple(float(x) for x in r) for r in rows]
+    if torque is not None:
+        t = np.asarray(torque, dtype=float).ravel()
+        if t.size != 3:
+            raise _argument_error("torque", "three numbers (N m)", "<actuator>")
+        request.torque_Nm = tuple(float(x) for x in t)
+    request.analytic = bool(analytic)
+    request.order = _count("order", order)
+    request.mesh_scale = float(mesh_scale)
+    return ActuatorResult(_core.actuator(case._path or "", case._text or "", case._name or "",
+                                         case._params, request, progress))
+
+
+class ValidationResult:
+    """``magfem validate``'s results (returned by magfem.validate): ``rows``, one dict per
+    entry as results.json's "entries" (id, source, quantity, unit, published, fe, analytic,
+    tolerance_pct, the errors, status, seconds, method, details, ...), ``summary`` (status
+    -> count), ``tier``, ``catalogue``, ``failed`` (ids of failed entries) and ``table()``
+    (numpy columns of the numeric results.csv columns)."""
+
+    def __init__(self, results):
+        self.rows = results["entries"]
+        self.summary = results["summary"]
+        self.tier = results["tier"]
+        self.catalogue = results["catalogue"]
+        self.failed = [r["id"] for r in self.rows if r["status"] == "fail"]
+
+    def table(self):
+        """id and status as lists; published, fe, analytic, tolerance_pct, fe_error_pct,
+        analytic_error_pct and seconds as numpy arrays (NaN where an entry has none)."""
+        out = {"id": [r["id"] for r in self.rows], "status": [r["status"] for r in self.rows]}
+        for key in ("published", "fe", "analytic", "tolerance_pct", "fe_error_pct",
+                    "analytic_error_pct", "seconds"):
+            out[key] = np.array([np.nan if r[key] is None else r[key] for r in self.rows])
+        return out
+
+    def __repr__(self):
+        return "<magfem.ValidationResult %s: %s>" % (self.tier, self.summary)
+
+
+def validate(tier="quick", entries=None, source=None, jobs=None, progress=None,
+             catalogue=None):
+    """Runs ``magfem validate`` in-process (nothing written); returns a ValidationResult.
+
+    ``tier``: "quick" or "full"; ``entries``: catalogue ids (as --only; None: all of the
+    tier), or ``source``: a seed file prefix (as --source); ``jobs``: entries at once (None:
+    one per core); ``catalogue``: another catalogue file (None: the installed or source
+    tree's validation/catalogue.yaml). ``progress``: None, True or ``progress(done, total)``
+    on the calling thread; Ctrl-C starts no further entry and raises KeyboardInterrupt, as
+    in sweep(). A failed entry is a row with status "fail", not an exception.
+    """
+    if isinstance(entries, str):
+        entries = [entries]
+    out = _core.validate(str(tier), [str(e) for e in entries or []], source or "",
+                         _count("jobs", jobs), str(catalogue or ""), progress)
+    return ValidationResult(json.loads(out))

@@ -1,8 +1,12 @@
-"""magfem.sweep (issue 32): the in-process sweep gives the numbers `magfem sweep` writes for
-the same case (sweep.csv byte for byte, summary.json but times and provenance), for the 3D
-analytic compensator curve, a planar FE rotor and an axisymmetric FE translation; its
-arguments reach the library; Ctrl-C stops it. Run by ctest `python_studies` with MAGFEM_EXE
-and PYTHONPATH=build/python; coarse meshes keep it near 15 s."""
+"""magfem.sweep, magfem.actuator and magfem.validate (issue 32) against the command line.
+
+The in-process sweep gives the numbers `magfem sweep` writes for the same case (sweep.csv
+byte for byte, summary.json but times and provenance), for the 3D analytic compensator
+curve, a planar FE rotor and an axisymmetric FE translation; its arguments reach the
+library; Ctrl-C stops it. The actuator's arrays rebuild `magfem actuator`'s CSV files byte
+for byte and satisfy the commutation identity; validate's rows are results.json's entries.
+Run by ctest `python_studies` with MAGFEM_EXE and PYTHONPATH=build/python; coarse meshes
+keep it near 25 s."""
 import json
 import os
 import signal
@@ -31,7 +35,7 @@ def cli(command, *args):
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         texts = {}
         for name in os.listdir(out):
-            if name.endswith((".csv", ".json")):
+            if name.endswith((".csv", ".json")) and not name.startswith("."):
                 with open(os.path.join(out, name), encoding="utf-8") as f:
                     texts[name] = f.read()
         return texts
@@ -148,6 +152,111 @@ class Arguments(unittest.TestCase):
         elapsed = time.perf_counter() - t0
         print("one position %.2f s; interrupted after %.2f s" % (one, elapsed))
         self.assertLess(elapsed, 0.2 + 4 * one)
+
+
+def number(v):
+    """A CSV cell as studies/actuator.cpp writes it: ten digits, "inf", or empty for NaN."""
+    return "" if np.isnan(v) else "inf" if np.isinf(v) else "%.10g" % v
+
+
+class Actuator(unittest.TestCase):
+    """The thesis's spherical actuator by the charge model at two orientations."""
+    CASE = example("3d/spherical_actuator_design.yaml")
+    ORIENTATIONS = "rx=0:30:30,ry=15,rz=0"
+
+    @classmethod
+    def setUpClass(cls):
+        cls.files = cli("actuator", cls.CASE, "--rotor", "rotor", "--orientations",
+                        cls.ORIENTATIONS, "--analytic", "--quiet")
+        cls.result = magfem.actuator(magfem.Case.load(cls.CASE), rotor="rotor",
+                                     orientations=cls.ORIENTATIONS)
+
+    def angles(self, i):
+        return ",".join(number(a) for a in self.result.orientations_deg[i])
+
+    def test_torque_constants_are_the_command_lines(self):
+        r = self.result
+        self.assertEqual(r.gamma.shape, (2, 3, len(r.coils)))
+        lines = ["rx_deg,ry_deg,rz_deg,coil,kx,ky,kz"]
+        for i in range(len(r.orientations_deg)):
+            for k, coil in enumerate(r.coils):
+                lines.append(",".join([self.angles(i), coil] + [number(g) for g in r.gamma[i, :, k]]))
+        self.assertEqual("\n".join(lines) + "\n", self.files["torque_constants.csv"])
+
+    def test_commutations_are_the_command_lines(self):
+        r = self.result
+        self.assertEqual(sorted(r.commutations), ["P_x", "P_y", "P_z"])
+        for name, d in r.commutations.items():
+            lines = ["rx_deg,ry_deg,rz_deg," + ",".join("i_%s_A" % c for c in r.coils)
+                     + ",P_W,i_peak_A,cond_Gamma"]
+            for i in range(len(r.orientations_deg)):
+                cells = [number(x) for x in d["currents_A"][i]]
+                cells += [number(d["P_W"][i]), number(d["i_peak_A"][i]),
+                          number(d["cond_Gamma"][i])]
+                lines.append(self.angles(i) + "," + ",".join(cells))
+            self.assertEqual("\n".join(lines) + "\n",
+                             self.files["commutation_%s.csv" % name[-1]], msg=name)
+
+    def test_commutation_identity(self):
+        # Gamma i = T_d (eq. 5.4 solves it exactly: round-off of a 3 x 12 least-norm solve)
+        # and P = sum R_k i_k^2.
+        r = self.result
+        for name, d in r.commutations.items():
+            for i in range(len(r.orientations_deg)):
+                np.testing.assert_allclose(r.gamma[i] @ d["currents_A"][i], d["torque_Nm"],
+                                           atol=1e-9, err_msg=name)
+                self.assertAlmostEqual(d["P_W"][i],
+                                       float(r.resistance_ohm @ d["currents_A"][i] ** 2),
+                                       delta=1e-9 * d["P_W"][i])
+
+    def test_a_demanded_torque_and_an_array_of_orientations(self):
+        rows = [[0, 15, 0], [30, 15, 0]]
+        r = magfem.actuator(magfem.Case.load(self.CASE), "rotor", rows, torque=[0.2, 0, 0.1])
+        self.assertEqual(list(r.commutations), ["T_d"])
+        d = r.commutations["T_d"]
+        np.testing.assert_array_equal(d["torque_Nm"], [0.2, 0, 0.1])
+        np.testing.assert_array_equal(r.orientations_deg, rows)
+        # Linear in the demand: the unit torques' currents combined.
+        p = self.result.commutations
+        np.testing.assert_allclose(d["currents_A"],
+                                   0.2 * p["P_x"]["currents_A"] + 0.1 * p["P_z"]["currents_A"],
+                                   rtol=1e-9, atol=1e-12)
+
+
+def without_seconds(value):
+    """A JSON value without its "seconds" entries at any depth (times differ run to run)."""
+    if isinstance(value, dict):
+        return {k: without_seconds(v) for k, v in value.items() if k != "seconds"}
+    if isinstance(value, list):
+        return [without_seconds(v) for v in value]
+    return value
+
+
+class Validate(unittest.TestCase):
+    ENTRY = "harwin.t1.paper.max_ratio_4"
+
+    def test_rows_are_the_command_lines_results(self):
+        files = cli("validate", "--only", self.ENTRY, "--jobs", "1")
+        seen = []
+        result = magfem.validate(tier="quick", entries=[self.ENTRY], jobs=1,
+                                 progress=lambda done, total: seen.append((done, total)))
+        cli_results = json.loads(files["results.json"])
+        self.assertEqual(without_seconds(result.rows), without_seconds(cli_results["entries"]))
+        self.assertEqual(result.summary, cli_results["summary"])
+        self.assertEqual(result.tier, "quick")
+        self.assertEqual(seen, [(1, 1)])
+        self.assertEqual(result.failed, [])
+        table = result.table()
+        self.assertEqual(table["id"], [self.ENTRY])
+        # The FE ratio within the entry's tolerance of the published one (the row's own check).
+        self.assertLess(abs(table["fe_error_pct"][0]), table["tolerance_pct"][0])
+
+    def test_bad_arguments_name_the_field(self):
+        for kwargs, field in [(dict(tier="slow"), "tier"), (dict(entries=["no.such"]), "--only"),
+                              (dict(entries=[self.ENTRY], source="harwin"), "entries")]:
+            with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
+                magfem.validate(**kwargs)
+            self.assertEqual(err.exception.field, field)
 
 if __name__ == "__main__":
     unittest.main()
