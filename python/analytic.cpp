@@ -41,9 +41,8 @@ std::vector<std::string> Analytic::write(const std::string& dir) const {
   return write_outputs_analytic(*run_, dir);
 }
 
-std::string Analytic::summary_json() {
-  const std::lock_guard lock(output_mutex_);
-  return summary_via_outputs(*run_, write_outputs_analytic);
+std::string Analytic::summary_json() const {
+  return summary_json_analytic(*run_).dump();
 }
 
 void bind_analytic(py::module_& m) {

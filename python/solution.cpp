@@ -194,11 +194,8 @@ std::vector<std::string> Solution::write(const std::string& dir) const {
   return run3d_ ? write_outputs_3d(*run3d_, dir) : write_outputs_2d(*run2d_, dir);
 }
 
-std::string Solution::summary_json() {
-  const std::lock_guard lock(output_mutex_);
-  if (run3d_)
-    return summary_via_outputs(*run3d_, write_outputs_3d);
-  return summary_via_outputs(*run2d_, write_outputs_2d);
+std::string Solution::summary_json() const {
+  return (run3d_ ? summary_json_3d(*run3d_) : summary_json_2d(*run2d_)).dump();
 }
 
 void bind_solution(py::module_& m) {
