@@ -145,6 +145,14 @@ void report_restored(const magfem::RunCheckpoint& checkpoint) {
                  checkpoint.n_restored());
 }
 
+// The summed time of a sweep's positions (restored ones with their original time).
+template <class Row> double position_time(const std::vector<Row>& rows) {
+  double total_s = 0;
+  for (const auto& r : rows)
+    total_s += r.seconds;
+  return total_s;
+}
+
 // Under mpirun a sweep's positions are dealt to the processes (studies/position_runner.hpp).
 // Each process takes its share of its machine's cores: that many positions at once unless
 // --jobs says otherwise, and that many threads in each position's element loops unless
@@ -217,24 +225,10 @@ int run_sweep_axi(const Args& args) {
 
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
-  nlohmann::ordered_json j;
-  j["case"] = spec.file;
-  j["method"] = magfem::sweep_axi_method(spec, o.group);
-  j["group"] = o.group;
-  int failed = 0;
-  double total_s = 0;
-  for (const auto& r : rows) {
-    nlohmann::ordered_json p = {{"position_mm", 1e3 * r.position_m},
-                                {"ok", r.ok},
-                                {"seconds", r.seconds},
-                                {"unknowns", r.unknowns}};
-    if (!r.ok)
-      p["error"] = r.error, ++failed;
-    total_s += r.seconds;
-    j["positions"].push_back(p);
-  }
-  j["failed_positions"] = failed;
+  nlohmann::ordered_json j = magfem::sweep_axi_summary(spec, rows, o);
   j["peak_memory_MB"] = magfem::peak_memory_mb();
+  const int failed = j["failed_positions"].get<int>();
+  const double total_s = position_time(rows);
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
   checkpoint->remove();
@@ -319,42 +313,17 @@ int run_sweep(const Args& args) {
     std::cerr << "magfem: note: no sweep.png: " << why << "\n";
   nlohmann::ordered_json j;
   magfem::add_provenance(j);
-  j["case"] = spec.file;
-  j["method"] = magfem::sweep_method(rows, o);
-  j["group"] = o.group;
-  if (translate)
-    j["motion"] = "translate";
-  j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
-  const std::string key = magfem::sweep_position_key(o.motion);
-  int failed = 0;
-  double total_s = 0;
-  for (const auto& r : rows) {
-    nlohmann::ordered_json p = {{key, r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
-    if (r.unknowns)
-      p["unknowns"] = r.unknowns;
-    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
-      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
-      p["force_bound_N"] = r.force_bound;
-    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
-      p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
-    if (!r.ok)
-      p["error"] = r.error, ++failed;
-    total_s += r.seconds;
-    j["positions"].push_back(p);
-  }
-  j["failed_positions"] = failed;
-  j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
-  // The memory estimate when this process's positions shared the limit (as a serial run
-  // records it; under mpirun with one position at a time per process the file stays the
-  // serial --jobs 1 one).
-  if (jobs.position_memory_mb > 0 && jobs.requested > 1)
-    j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
-    j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
+  auto summary = magfem::sweep_summary(spec.file, rows, o, jobs);
+  for (auto& [key, value] : summary.items())
+    j[key] = std::move(value);
+  const int failed = j["failed_positions"].get<int>();
+  const double total_s = position_time(rows);
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
   checkpoint->remove();
 
+  const std::string key = magfem::sweep_position_key(o.motion);
   std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", key.c_str(), "Tx_Nm", "Ty_Nm", "Tz_Nm",
               "Fx_N", "Fy_N", "Fz_N", "time_s");
   for (const auto& r : rows)

@@ -259,30 +259,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   return run;
 }
 
-std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
-
-  if (run.spec.write_vtu) {
-    std::vector<std::string> material_names = {"air"};
-    std::map<std::string, int> index = {{"air", 0}};
-    std::vector<int> material_of_part;
-    for (const auto& r : run.spec.regions) {
-      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh)
-        material_names.push_back(r.material->name);
-      material_of_part.push_back(it->second);
-    }
-    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
-    add_error_indicator(grid, run);
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-    if (run.spec.write_revolved_vtu)
-      write_vtu(stage.path_for("solution_revolved.vtu").string(),
-                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
-  }
-
+nlohmann::ordered_json summary_json_2d(const Run2D& run) {
   nlohmann::ordered_json j;
   const bool axi = run.spec.axisymmetric();
   add_run_header(j, {run.spec.file, axi ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2),
@@ -318,7 +295,6 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   if (!run.forces.empty()) {
     j["forces_per"] = per;
     j["forces"] = forces_json(run.forces);
-    stage.write_text("forces.csv", forces_csv(run.forces));
   }
   if (!run.sections.empty()) {
     j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
@@ -329,7 +305,36 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   if (run.adapt)
     j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
-  stage.write_text("summary.json", j.dump(2) + "\n");
+  return j;
+}
+
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
+
+  if (run.spec.write_vtu) {
+    std::vector<std::string> material_names = {"air"};
+    std::map<std::string, int> index = {{"air", 0}};
+    std::vector<int> material_of_part;
+    for (const auto& r : run.spec.regions) {
+      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
+      if (fresh)
+        material_names.push_back(r.material->name);
+      material_of_part.push_back(it->second);
+    }
+    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
+    add_error_indicator(grid, run);
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
+    if (run.spec.write_revolved_vtu)
+      write_vtu(stage.path_for("solution_revolved.vtu").string(),
+                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
+  }
+
+  if (!run.forces.empty())
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  stage.write_text("summary.json", summary_json_2d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
 }

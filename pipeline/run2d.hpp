@@ -106,6 +106,8 @@ Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides);
 // Meshes and solves; throws InputError (bad case), SolveError (no convergence).
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});
 
+// summary.json's content (what write_outputs_2d writes; also Solution.summary in Python).
+nlohmann::ordered_json summary_json_2d(const Run2D& run);
 // Writes summary.json, one CSV per probe and solution.vtu, all-or-nothing.
 std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir);
 

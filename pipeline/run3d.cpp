@@ -316,31 +316,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   return run;
 }
 
-std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
-  if (run.spec.write_vtu) {
-    std::vector<std::string> material_names = {"air"};
-    std::map<std::string, int> index = {{"air", 0}};
-    std::vector<int> material_of_part;
-    for (const auto& r : run.spec.regions) {
-      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh)
-        material_names.push_back(r.material->name);
-      material_of_part.push_back(it->second);
-    }
-    VtuGrid grid =
-        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
-    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
-    VtuArray indicator{"error_indicator", 1, {}};
-    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
-      if (!run.problem.is_shell(t))
-        indicator.values.push_back(run.error_estimate.eta2_J[t]);
-    grid.cell_data.push_back(std::move(indicator));
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-  }
+nlohmann::ordered_json summary_json_3d(const Run3D& run) {
   nlohmann::ordered_json j;
   add_run_header(j, {run.spec.file, 3, run.spec.order, run.mesh.n_tets(), run.mesh.n_nodes(),
                      static_cast<std::size_t>(run.dofs->n_dofs())});
@@ -388,7 +364,6 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     j["probes"].push_back(p.name + ".csv");
   if (!run.sections.empty()) {
     j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
   }
   if (run.coils) {
     j["coils"] = coil_results_json(run.coil_results);
@@ -410,10 +385,41 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
   if (!run.forces.empty()) {
     j["forces_per"] = "device";
     j["forces"] = forces_json(run.forces);
-    stage.write_text("forces.csv", forces_csv(run.forces));
   }
   j["warnings"] = run.warnings;
-  stage.write_text("summary.json", j.dump(2) + "\n");
+  return j;
+}
+
+std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
+  if (run.spec.write_vtu) {
+    std::vector<std::string> material_names = {"air"};
+    std::map<std::string, int> index = {{"air", 0}};
+    std::vector<int> material_of_part;
+    for (const auto& r : run.spec.regions) {
+      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
+      if (fresh)
+        material_names.push_back(r.material->name);
+      material_of_part.push_back(it->second);
+    }
+    VtuGrid grid =
+        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
+    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
+    VtuArray indicator{"error_indicator", 1, {}};
+    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
+      if (!run.problem.is_shell(t))
+        indicator.values.push_back(run.error_estimate.eta2_J[t]);
+    grid.cell_data.push_back(std::move(indicator));
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
+  }
+  if (!run.sections.empty())
+    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
+  if (!run.forces.empty())
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  stage.write_text("summary.json", summary_json_3d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
 }

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "mesh/mesh3d.hpp"
 #include "mesh/mesh_estimate3d.hpp"
 #include "pipeline/coil_run3d.hpp"
@@ -62,6 +64,8 @@ void check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
 // The mesh run_case_3d would solve on (the overrides applied to spec, the memory guard
 // included; straight-sided: order 2 curves the sphere edges later): `magfem mesh`.
 Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3D& estimate);
+// summary.json's content (what write_outputs_3d writes; also Solution.summary in Python).
+nlohmann::ordered_json summary_json_3d(const Run3D& run);
 std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
 std::string describe_run_3d(const Run3D& run);
 

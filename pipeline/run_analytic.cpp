@@ -166,12 +166,7 @@ nlohmann::ordered_json analytic_coils_json(const AnalyticRun& run) {
 
 } // namespace
 
-std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
-                                                const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
+nlohmann::ordered_json summary_json_analytic(const AnalyticRun& run) {
   nlohmann::ordered_json j;
   add_provenance(j);
   j["case"] = run.spec.file;
@@ -206,7 +201,6 @@ std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
     if (axi)
       j["forces_per"] = "body of revolution";
     j["forces"] = forces_json(run.forces);
-    stage.write_text("forces.csv", forces_csv(run.forces));
   }
   if (!run.coils.empty())
     j["coils"] = analytic_coils_json(run);
@@ -222,7 +216,18 @@ std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
     }
     j["inductance_H"] = {{"names", names}, {"matrix", l}};
   }
-  stage.write_text("summary.json", j.dump(2) + "\n");
+  return j;
+}
+
+std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
+                                                const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
+  if (!run.forces.empty())
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  stage.write_text("summary.json", summary_json_analytic(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
 }

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
 
-#include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "python/case_source.hpp"
 #include "python/py_progress.hpp"
 #include "python/result_tables.hpp"
 
@@ -45,8 +45,7 @@ std::unique_ptr<Solution> solve_case(const std::string& path, const std::string&
     throw InputError("<solve>", 0, "order", "must be 1 or 2");
   if (!(mesh_scale > 0) || !std::isfinite(mesh_scale))
     throw InputError("<solve>", 0, "mesh_scale", "must be a positive number");
-  CaseSpec spec =
-      path.empty() ? read_case_text(text, name, parameters) : read_case(path, parameters);
+  CaseSpec spec = read_python_case(path, text, name, parameters);
   PyProgress reporter(std::move(progress));
   RunOverrides overrides;
   overrides.order = order;
@@ -187,11 +186,8 @@ std::vector<std::string> Solution::write(const std::string& dir) const {
   return run3d_ ? write_outputs_3d(*run3d_, dir) : write_outputs_2d(*run2d_, dir);
 }
 
-std::string Solution::summary_json() {
-  const std::lock_guard lock(output_mutex_);
-  if (run3d_)
-    return summary_via_outputs(*run3d_, write_outputs_3d);
-  return summary_via_outputs(*run2d_, write_outputs_2d);
+std::string Solution::summary_json() const {
+  return (run3d_ ? summary_json_3d(*run3d_) : summary_json_2d(*run2d_)).dump();
 }
 
 void bind_solution(py::module_& m) {

@@ -501,7 +501,7 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   return run_positions<SweepRow>(
       positions, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
-      progress, options.world);
+      progress, options.world, options.stop);
 }
 
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options) {
@@ -549,6 +549,42 @@ std::string sweep_csv(const std::vector<SweepRow>& rows, SweepMotion motion) {
     out += line;
   }
   return out;
+}
+
+nlohmann::ordered_json sweep_summary(const std::string& case_file,
+                                     const std::vector<SweepRow>& rows, const SweepOptions& options,
+                                     const SweepJobs& jobs) {
+  nlohmann::ordered_json j;
+  j["case"] = case_file;
+  j["method"] = sweep_method(rows, options);
+  j["group"] = options.group;
+  if (options.motion == SweepMotion::translate)
+    j["motion"] = "translate";
+  j["axis"] = {options.axis.x(), options.axis.y(), options.axis.z()};
+  const std::string key = sweep_position_key(options.motion);
+  int failed = 0;
+  for (const auto& r : rows) {
+    nlohmann::ordered_json p = {{key, r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
+    if (r.unknowns)
+      p["unknowns"] = r.unknowns;
+    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
+      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
+      p["force_bound_N"] = r.force_bound;
+    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
+      p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
+    if (!r.ok)
+      p["error"] = r.error, ++failed;
+    j["positions"].push_back(p);
+  }
+  j["failed_positions"] = failed;
+  j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
+  // The memory estimate when this process's positions shared the limit (as a serial run
+  // records it; under mpirun with one position at a time per process the file stays the
+  // serial --jobs 1 one).
+  if (jobs.position_memory_mb > 0 && jobs.requested > 1)
+    j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
+    j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
+  return j;
 }
 
 } // namespace magfem

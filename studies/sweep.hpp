@@ -13,6 +13,7 @@
 // bound), and the charge interaction otherwise (mu_r = 1 magnets in air).
 #include <functional>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,8 @@ struct SweepOptions {
   // Under mpirun: the processes the positions are dealt to (studies/position_runner.hpp);
   // `jobs` is then per process, and the checkpoint rank 0's alone.
   MpiWorld world{};
+  // A stop asked here starts no further position (studies/position_runner.hpp).
+  std::stop_token stop;
 };
 
 struct SweepRow {
@@ -138,5 +141,13 @@ std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOpti
 // sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in the order given);
 // position_mm,... for a translation.
 std::string sweep_csv(const std::vector<SweepRow>& rows, SweepMotion motion = SweepMotion::rotate);
+
+// summary.json of a rotating sweep (3D or planar) but the provenance and the peak memory the
+// command line adds: case, method, group, axis, positions (angle_deg, ok, seconds, and per
+// method unknowns, truncation bounds or error estimates, the error of a failed one),
+// failed_positions, jobs. Also magfem.sweep's `summary` in Python.
+nlohmann::ordered_json sweep_summary(const std::string& case_file,
+                                     const std::vector<SweepRow>& rows, const SweepOptions& options,
+                                     const SweepJobs& jobs);
 
 } // namespace magfem

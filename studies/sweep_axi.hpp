@@ -10,8 +10,11 @@
 // region of the group, whose box moves with it.
 // Positions run on a small pool of threads like the 3D sweep; a failed position is recorded.
 #include <functional>
+#include <stop_token>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "casefile/case_spec.hpp"
 #include "solver/mpi_context.hpp"
@@ -30,6 +33,8 @@ struct AxiSweepOptions {
   RunCheckpoint* checkpoint = nullptr;
   // Under mpirun: the processes the positions are dealt to (as SweepOptions::world).
   MpiWorld world{};
+  // A stop asked here starts no further position (studies/position_runner.hpp).
+  std::stop_token stop;
 };
 
 struct AxiSweepRow {
@@ -59,5 +64,12 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
 
 // sweep.csv: position_mm,Fz_N (successful positions, in the given order).
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows);
+
+// summary.json of the sweep but the peak memory the command line adds: case, method, group,
+// positions (position_mm, ok, seconds, unknowns, error of a failed one), failed_positions.
+// Also magfem.sweep's `summary` in Python.
+nlohmann::ordered_json sweep_axi_summary(const CaseSpec& spec,
+                                         const std::vector<AxiSweepRow>& rows,
+                                         const AxiSweepOptions& options);
 
 } // namespace magfem
