@@ -296,10 +296,8 @@ nlohmann::ordered_json summary_json_2d(const Run2D& run) {
     j["forces_per"] = per;
     j["forces"] = forces_json(run.forces);
   }
-  if (!run.sections.empty()) {
+  if (!run.sections.empty())
     j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
-  }
   if (!run.coils.empty())
     j["coils"] = coils_json_2d(run.coils);
   if (run.adapt)
@@ -334,6 +332,8 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
 
   if (!run.forces.empty())
     stage.write_text("forces.csv", forces_csv(run.forces));
+  if (!run.sections.empty())
+    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
   stage.write_text("summary.json", summary_json_2d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
