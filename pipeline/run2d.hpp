@@ -12,6 +12,7 @@
 #include "mesh/mesh2d.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/size_field2d.hpp"
+#include "pipeline/adapt_loop.hpp"
 #include "pipeline/force_results.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/error_estimate2d.hpp"
@@ -53,26 +54,6 @@ struct CoilResult2D {
   double turns = 0, current_A = 0, flux_linkage_Wb = 0, inductance_H = 0;
 };
 
-// One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
-struct AdaptPass2D {
-  int pass = 0;
-  std::size_t elements = 0;
-  int unknowns = 0;
-  double energy_J = 0;         // as summary.json energy_J (per metre, stack or revolution)
-  double energy_error_pct = 0; // the estimator's (error_estimate2d.hpp)
-  double delta_energy_pct = 0; // |W - W_previous| / W; NaN on the first pass
-  std::vector<std::pair<std::string, double>> quantities; // the named quantities' values
-  std::vector<double> quantity_error_pct; // their estimated relative errors (NaN: unknown yet)
-  double seconds = 0;
-};
-
-struct AdaptHistory2D {
-  double accuracy_pct = 0;
-  bool converged = false;
-  std::string stop_reason; // why it stopped without converging (empty when converged)
-  std::vector<AdaptPass2D> passes;
-};
-
 struct Run2D {
   CaseSpec spec;
   Mesh2D mesh;
@@ -87,7 +68,7 @@ struct Run2D {
   std::vector<CoilResult2D> coils;   // axisymmetric only
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
-  std::optional<AdaptHistory2D> adapt; // set by run_adaptive_2d (adapt2d.hpp)
+  std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)
 };
 
 // A mesher error (bad part) as the InputError naming the case file's region and field.

@@ -142,11 +142,11 @@ Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3
   return mesh_case(spec, overrides, estimate);
 }
 
-void check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
+MeshEstimate3D check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
   apply_overrides(spec, ov);
   MeshEstimate3D estimate;
-  estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
-                            memory_guard(spec, ov, estimate));
+  return estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
+                                   memory_guard(spec, ov, estimate));
 }
 
 double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
@@ -385,6 +385,8 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     j["forces"] = forces_json(run.forces);
     stage.write_text("forces.csv", forces_csv(run.forces));
   }
+  if (run.adapt)
+    j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
@@ -419,6 +421,8 @@ std::string describe_run_3d(const Run3D& run) {
                 run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
                 run.error_estimate.indicator.c_str(), run.error_estimate_s);
   s += buf;
+  if (run.adapt)
+    s += describe_adapt_result(*run.adapt);
   s += describe_forces(run.forces, false);
   for (const auto& f : run.sections) {
     std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",
