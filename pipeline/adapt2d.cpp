@@ -59,10 +59,7 @@ std::unique_ptr<Run2D> run_adaptive_2d(const CaseSpec& spec, const RunOverrides&
     sizes.emplace(adaptive_size_field(run->mesh, next, mesher_floor(spec.geometry2d.options)));
     return AdaptPlan{run->dofs->n_dofs() * growth / double(h.size()), ""};
   };
-  AdaptHistory history = run_adapt_loop(spec.adapt, steps, on_pass);
-  if (!history.converged)
-    run->warnings.push_back(adapt_warning(history));
-  run->adapt = std::move(history);
+  file_adapt_history(*run, run_adapt_loop(spec.adapt, steps, on_pass));
   return run;
 }
 

@@ -123,10 +123,7 @@ std::unique_ptr<Run3D> run_adaptive_3d(const CaseSpec& spec, const RunOverrides&
       return AdaptPlan{0, std::string("memory guard: ") + e.what()};
     }
   };
-  AdaptHistory history = run_adapt_loop(spec.adapt, steps, on_pass);
-  if (!history.converged)
-    run->warnings.push_back(adapt_warning(history));
-  run->adapt = std::move(history);
+  file_adapt_history(*run, run_adapt_loop(spec.adapt, steps, on_pass));
   return run;
 }
 

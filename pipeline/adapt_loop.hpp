@@ -102,6 +102,14 @@ std::vector<double> adapt_size_ratios(const std::vector<double>& eta2, double en
 // The warning of a loop that stopped before its target ("" when it converged).
 std::string adapt_warning(const AdaptHistory& h);
 
+// Files the history in the last pass's run (Run2D or Run3D), with the warning when the loop
+// stopped before its target.
+template <class Run> void file_adapt_history(Run& run, AdaptHistory history) {
+  if (!history.converged)
+    run.warnings.push_back(adapt_warning(history));
+  run.adapt = std::move(history);
+}
+
 // summary.json's adapt block.
 nlohmann::ordered_json adapt_json(const AdaptHistory& h);
 

@@ -62,13 +62,17 @@ TEST(Adapt3D, SphereReachesTheEnergyTargetAndTheEstimateHolds) {
   // Effectivity (estimated / true) on every pass: measured 0.51 and 0.26. Not the issue's
   // 0.3..3: the open-boundary shell carries no indicator (error_estimate3d.hpp) and here
   // holds much of the true error (a 4x finer shell alone halves it at the first pass), so
-  // the stated bound is the true error within 6x the estimate. Refining the smallest
-  // indicators instead of the largest stalls the estimate (not converged in 4 passes).
+  // the stated bound is the true error within 6x the estimate.
   for (const auto& p : run->adapt->passes) {
     const double ratio = true_error_pct(p.energy_J) / p.energy_error_pct;
     EXPECT_LT(ratio, 6.0) << "pass " << p.pass;
     EXPECT_GT(ratio, 1.0 / 3.0) << "pass " << p.pass;
   }
+  // Adaptivity pays (the coarse twin of LongFewerUnknownsThanUniformRefinement): uniform
+  // refinement of this start still misses the estimate reached here (0.0088 %) at 124k
+  // unknowns; the loop measured 93k. Refining where the indicator is smallest instead of
+  // largest also converges, near-uniformly, at 140k.
+  EXPECT_LT(run->dofs->n_dofs(), 110000);
   // Regions and materials survive the remeshing: the magnet's volume is the sphere's (P2
   // curved onto it, 1e-4 for the coarse facets' curving).
   const double a = 0.010;
