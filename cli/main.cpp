@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -24,6 +25,7 @@
 #include "core/output_stage.hpp"
 #include "core/thread_count.hpp"
 #include "pipeline/adapt2d.hpp"
+#include "pipeline/adapt3d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/run2d.hpp"
@@ -53,8 +55,17 @@ void print_written(const std::string& out_dir, const std::vector<std::string>& f
   std::cout << "\n";
 }
 
+// One console line per adaptive pass, as it ends.
+std::function<void(const magfem::AdaptPass&)> print_pass(const char* element_word) {
+  return [element_word](const magfem::AdaptPass& p) {
+    std::cout << magfem::describe_adapt_pass(p, element_word) << std::flush;
+  };
+}
+
 int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
-  auto run = magfem::run_case_3d(std::move(spec), overrides);
+  auto run = spec.adapt.enabled()
+                 ? magfem::run_adaptive_3d(spec, overrides, print_pass("tetrahedra"))
+                 : magfem::run_case_3d(std::move(spec), overrides);
   if (!overrides.world.is_root()) { // rank 0 reports and writes, once
     magfem::idle_barrier();
     return 0;
@@ -68,11 +79,6 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
 
 // The command line's --accuracy / --max-passes / --max-unknowns over the case file's adapt:.
 void apply_adapt_options(const Args& args, magfem::CaseSpec& spec) {
-  if (spec.dimension == 3 && args.accuracy_pct)
-    throw magfem::InputError("<command line>", 0, "--accuracy",
-                             "adaptive refinement is for 2D and axisymmetric cases only for now "
-                             "(3D results report their estimated error; refine them with "
-                             "--mesh-scale)");
   if (args.accuracy_pct)
     spec.adapt.accuracy_pct = *args.accuracy_pct;
   if ((args.max_passes || args.max_unknowns) && !spec.adapt.enabled())
@@ -106,13 +112,9 @@ int run_solve(const Args& args) {
   }
   if (spec.dimension == 3)
     return run_solve_3d(args, std::move(spec), overrides);
-  auto run = spec.adapt.enabled() ? magfem::run_adaptive_2d(spec, overrides,
-                                                            [](const magfem::AdaptPass2D& p) {
-                                                              std::cout
-                                                                  << magfem::describe_adapt_pass(p)
-                                                                  << std::flush;
-                                                            })
-                                  : magfem::run_case_2d(std::move(spec), overrides);
+  auto run = spec.adapt.enabled()
+                 ? magfem::run_adaptive_2d(spec, overrides, print_pass("triangles"))
+                 : magfem::run_case_2d(std::move(spec), overrides);
   std::cout << magfem::describe_run_2d(*run);
   print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
   return 0;

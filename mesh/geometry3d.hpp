@@ -2,6 +2,7 @@
 // 3D geometry as the mesher and the analytic models see it: parts built from primitives in a
 // local frame, placed by a rigid motion. SI metres and radians (the case reader converts).
 // Spherical coordinates as in the thesis body: theta polar from +z, phi azimuth from +x.
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -55,6 +56,12 @@ struct OuterBoundary3D {
   double shell_ratio = 1.5;
 };
 
+// A target element size (m) at a point: adaptive refinement (pipeline/adapt3d.hpp).
+struct SizeSample3D {
+  Vec3 x = Vec3::Zero();
+  double h = 0;
+};
+
 struct MeshOptions3D {
   double default_size = 0;        // metres, background air
   double chord_tolerance = 0;     // metres: max distance between a curved surface and its facets
@@ -66,6 +73,10 @@ struct MeshOptions3D {
   // The solver will curve the elements onto spheres (order 2): a size_scale > 1 may then
   // coarsen the chord limit of spheres too (their facets are not the geometry).
   bool spheres_curved = false;
+  // Adaptive refinement: size sources added to the field the mesher builds (graded like its
+  // own, combined by the minimum, so the case's sizes, chord and gap rules stay upper bounds;
+  // not multiplied by size_scale). Shared by the copies of a case; null = none.
+  std::shared_ptr<const std::vector<SizeSample3D>> refine_sizes;
 };
 
 struct Geometry3D {

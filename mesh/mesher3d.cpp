@@ -538,6 +538,9 @@ SizeField3D build_size_field(const GridDecomposition3D& dec, const SizeRules& ru
   if (rules.geo.options.probe_size > 0)
     for (const ProbeSurface& p : refine)
       field.add_probe(p, rules.scale * rules.geo.options.probe_size);
+  if (const auto& adaptive = rules.geo.options.refine_sizes)
+    for (const SizeSample3D& s : *adaptive)
+      field.add_source(s.x, s.h);
   field.build();
   return field;
 }

@@ -118,37 +118,6 @@ void add_error_indicator(VtuGrid& grid, const Run2D& run) {
   grid.cell_data.push_back(std::move(a));
 }
 
-// NaN (not known on the first pass) as null.
-nlohmann::ordered_json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-nlohmann::ordered_json adapt_json(const AdaptHistory2D& h) {
-  nlohmann::ordered_json j;
-  j["accuracy_pct"] = h.accuracy_pct;
-  j["converged"] = h.converged;
-  if (!h.converged)
-    j["stop_reason"] = h.stop_reason;
-  j["passes"] = nlohmann::ordered_json::array();
-  for (const auto& p : h.passes) {
-    nlohmann::ordered_json q = nlohmann::ordered_json::object(), e = q;
-    for (std::size_t i = 0; i < p.quantities.size(); ++i) {
-      q[p.quantities[i].first] = p.quantities[i].second;
-      e[p.quantities[i].first] = number_or_null(p.quantity_error_pct[i]);
-    }
-    j["passes"].push_back({{"pass", p.pass},
-                           {"elements", p.elements},
-                           {"unknowns", p.unknowns},
-                           {"energy_J", p.energy_J},
-                           {"energy_error_pct", p.energy_error_pct},
-                           {"delta_energy_pct", number_or_null(p.delta_energy_pct)},
-                           {"quantities", q},
-                           {"quantity_error_pct", e},
-                           {"seconds", p.seconds}});
-  }
-  return j;
-}
-
 } // namespace
 
 nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils) {
@@ -356,12 +325,8 @@ std::string describe_run_2d(const Run2D& run) {
       buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
       run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
   s += buf;
-  if (run.adapt) {
-    const auto& a = *run.adapt;
-    std::snprintf(buf, sizeof buf, "adapt    %s %.3g %% after %zu pass(es)\n",
-                  a.converged ? "reached" : "did NOT reach", a.accuracy_pct, a.passes.size());
-    s += buf;
-  }
+  if (run.adapt)
+    s += describe_adapt_result(*run.adapt);
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.area_m2 > 0) {
       std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),

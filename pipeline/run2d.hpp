@@ -14,6 +14,7 @@
 #include "mesh/mesh2d.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/size_field2d.hpp"
+#include "pipeline/adapt_loop.hpp"
 #include "pipeline/force_results.hpp"
 #include "pipeline/timings.hpp"
 #include "postproc/energy2d.hpp"
@@ -59,26 +60,6 @@ struct CoilResult2D {
 // summary.json's "coils" (also the Python module's Solution.coils).
 nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils);
 
-// One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
-struct AdaptPass2D {
-  int pass = 0;
-  std::size_t elements = 0;
-  int unknowns = 0;
-  double energy_J = 0;         // as summary.json energy_J (per metre, stack or revolution)
-  double energy_error_pct = 0; // the estimator's (error_estimate2d.hpp)
-  double delta_energy_pct = 0; // |W - W_previous| / W; NaN on the first pass
-  std::vector<std::pair<std::string, double>> quantities; // the named quantities' values
-  std::vector<double> quantity_error_pct; // their estimated relative errors (NaN: unknown yet)
-  double seconds = 0;
-};
-
-struct AdaptHistory2D {
-  double accuracy_pct = 0;
-  bool converged = false;
-  std::string stop_reason; // why it stopped without converging (empty when converged)
-  std::vector<AdaptPass2D> passes;
-};
-
 struct Run2D {
   CaseSpec spec;
   Mesh2D mesh;
@@ -94,7 +75,7 @@ struct Run2D {
   std::vector<CoilResult2D> coils;   // axisymmetric only
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
-  std::optional<AdaptHistory2D> adapt; // set by run_adaptive_2d (adapt2d.hpp)
+  std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)
 };
 
 // A mesher error (bad part) as the InputError naming the case file's region and field.

@@ -173,11 +173,11 @@ Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3
   return mesh_case(spec, overrides, estimate);
 }
 
-void check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
+MeshEstimate3D check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
   apply_overrides(spec, ov);
   MeshEstimate3D estimate;
-  estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
-                            memory_guard(spec, ov, estimate));
+  return estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
+                                   memory_guard(spec, ov, estimate));
 }
 
 double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
@@ -386,6 +386,8 @@ nlohmann::ordered_json summary_json_3d(const Run3D& run) {
     j["forces_per"] = "device";
     j["forces"] = forces_json(run.forces);
   }
+  if (run.adapt)
+    j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
   return j;
 }
@@ -453,6 +455,8 @@ std::string describe_run_3d(const Run3D& run) {
                 run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
                 run.error_estimate.indicator.c_str(), run.error_estimate_s);
   s += buf;
+  if (run.adapt)
+    s += describe_adapt_result(*run.adapt);
   s += describe_forces(run.forces, false);
   for (const auto& f : run.sections) {
     std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",
