@@ -76,6 +76,9 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
 // they are iterative (as in 3D, coil_run3d.cpp); direct solves are exact whatever it is.
 LinearSolverOptions sensitivity_options(LinearSolverOptions options) {
   options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
+  // Part of post-processing: its factorization is no stage of its own on the console (it
+  // reported "factorization" after "post-processing").
+  options.progress = nullptr;
   return options;
 }
 
