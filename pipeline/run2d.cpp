@@ -15,6 +15,7 @@
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
+#include "pipeline/vtu_materials.hpp"
 #include "pipeline/solver_summary.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
@@ -285,15 +286,9 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
     stage.write_text(p.name + ".csv", p.to_csv());
 
   if (run.spec.write_vtu) {
-    std::vector<std::string> material_names = {"air"};
-    std::map<std::string, int> index = {{"air", 0}};
-    std::vector<int> material_of_part;
-    for (const auto& r : run.spec.regions) {
-      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh)
-        material_names.push_back(r.material->name);
-      material_of_part.push_back(it->second);
-    }
+    const VtuMaterials materials = vtu_materials(run.spec.regions);
+    const auto& material_names = materials.names;
+    const auto& material_of_part = materials.of_region;
     VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
     add_error_indicator(grid, run);
     write_vtu(stage.path_for("solution.vtu").string(), grid);

@@ -23,6 +23,7 @@
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
+#include "pipeline/vtu_materials.hpp"
 #include "pipeline/solver_summary.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
@@ -398,15 +399,9 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
   for (const auto& p : run.probes)
     stage.write_text(p.name + ".csv", p.to_csv());
   if (run.spec.write_vtu) {
-    std::vector<std::string> material_names = {"air"};
-    std::map<std::string, int> index = {{"air", 0}};
-    std::vector<int> material_of_part;
-    for (const auto& r : run.spec.regions) {
-      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh)
-        material_names.push_back(r.material->name);
-      material_of_part.push_back(it->second);
-    }
+    const VtuMaterials materials = vtu_materials(run.spec.regions);
+    const auto& material_names = materials.names;
+    const auto& material_of_part = materials.of_region;
     VtuGrid grid =
         make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
     // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
