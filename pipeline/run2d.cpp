@@ -13,10 +13,11 @@
 #include "mesh/mesher2d.hpp"
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
+#include "pipeline/result_tables.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
-#include "pipeline/vtu_materials.hpp"
 #include "pipeline/solver_summary.hpp"
+#include "pipeline/vtu_materials.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probes2d.hpp"
@@ -282,8 +283,7 @@ nlohmann::ordered_json summary_json_2d(const Run2D& run) {
 std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
+  stage_probe_tables(stage, run.probes);
 
   if (run.spec.write_vtu) {
     const VtuMaterials materials = vtu_materials(run.spec.regions);
@@ -297,10 +297,7 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
                 make_vtu_revolved(*run.field, material_of_part, 0, material_names));
   }
 
-  if (!run.forces.empty())
-    stage.write_text("forces.csv", forces_csv(run.forces));
-  if (!run.sections.empty())
-    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
+  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
   stage.write_text("summary.json", summary_json_2d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();

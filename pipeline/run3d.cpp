@@ -21,10 +21,11 @@
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
+#include "pipeline/result_tables.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
-#include "pipeline/vtu_materials.hpp"
 #include "pipeline/solver_summary.hpp"
+#include "pipeline/vtu_materials.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
 #include "postproc/vtu_export3d.hpp"
@@ -396,8 +397,7 @@ nlohmann::ordered_json summary_json_3d(const Run3D& run) {
 std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
   std::filesystem::create_directories(out_dir);
   OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
+  stage_probe_tables(stage, run.probes);
   if (run.spec.write_vtu) {
     const VtuMaterials materials = vtu_materials(run.spec.regions);
     const auto& material_names = materials.names;
@@ -412,10 +412,7 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     grid.cell_data.push_back(std::move(indicator));
     write_vtu(stage.path_for("solution.vtu").string(), grid);
   }
-  if (!run.sections.empty())
-    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
-  if (!run.forces.empty())
-    stage.write_text("forces.csv", forces_csv(run.forces));
+  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
   stage.write_text("summary.json", summary_json_3d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
