@@ -14,6 +14,7 @@
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/result_tables.hpp"
+#include "pipeline/run_case.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -29,10 +30,6 @@
 
 namespace magfem {
 namespace {
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 Mesh2D mesh_case(const CaseSpec& spec, const SizeField2D* refine_sizes) {
   try {
@@ -168,69 +165,75 @@ Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides) {
   return mesh_case(spec, overrides.refine_sizes);
 }
 
-std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
-  const auto t_start = Clock::now();
-  auto run = std::make_unique<Run2D>();
-  apply_overrides(spec, ov);
-  run->spec = std::move(spec);
-  run->spec.newton.linear.progress = ov.progress;
+namespace {
+
+// The planar and axisymmetric stages of run_case (run_case.hpp): Lagrange triangles of order
+// 1 or 2 for the vector potential A_z (planar) or r A_phi (axisymmetric, the weight r in the
+// element), one process, Newton with CHOLMOD or CG.
+class Discretisation2D {
+public:
+  using Run = Run2D;
+  using DofMap = DofMap2D;
+  using Field = Field2D;
+  using Locator = PointLocator2D;
+  using Assembler = Assembler2D;
+  static constexpr const char* element_name = "triangles";
+
+  Discretisation2D(Run2D& run, const RunOverrides& ov) : run_(run), ov_(ov) {}
+
+  static void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
+    magfem::apply_overrides(spec, ov);
+  }
+  static std::size_t n_elements(const Mesh2D& mesh) { return mesh.n_triangles(); }
+  static double total_energy(const Run2D& run) { return run.energy.total_J_per_m; }
+
   // A planar or axisymmetric factor stays affordable up to the direct limit (nested
   // dissection fill grows like n log n in 2D), so the cost prediction, a second AMD ordering
   // of the whole matrix, is not run (it was a tenth of a 100k-unknown axisymmetric solve).
-  run->spec.newton.linear.direct_max_gflop = 0;
-  auto stage = [&](const std::string& what) {
-    if (ov.progress)
-      ov.progress->stage(what);
-  };
+  void tune_linear_solver(LinearSolverOptions& options) const { options.direct_max_gflop = 0; }
+  void check_before_mesh() const {}
+  Mesh2D mesh() const { return mesh_case(run_.spec, ov_.refine_sizes); }
+  void check_mesh() const { check_stress_surfaces_2d(run_.spec, run_.mesh); }
+  Problem2D build_problem() const { return magfem::build_problem(run_.spec, run_.mesh); }
+  void prepare_dofs() const {}
+  Assembler2D make_assembler() const { return Assembler2D(run_.problem, *run_.dofs); }
+  void prepare_solver(const Assembler2D&) const {}
+  NewtonReport solve(Assembler2D& assembler, Eigen::VectorXd& u) const {
+    return solve_nonlinear(assembler, u, run_.spec.newton);
+  }
+  bool post_processes() const { return true; }
 
-  auto t0 = Clock::now();
-  stage("meshing");
-  run->mesh = mesh_case(run->spec, ov.refine_sizes);
-  run->timings.mesh = since(t0);
-  check_stress_surfaces_2d(run->spec, run->mesh); // before the solve: fail fast
+  EnergySummary2D summarize_energy(const std::vector<std::string>& names) const {
+    return summarize_energy_2d(*run_.field, names);
+  }
+  void recover() const {}
+  ProbeTable sample_probe(const PointLocator2D& locator, const ProbeSpec& probe) const {
+    return sample_probe_2d(*run_.field, locator, probe, run_.spec.length_unit);
+  }
+  SectionFlux integrate_section(const SectionSpec& section) const {
+    const double depth = run_.spec.stack_length > 0 ? run_.spec.stack_length : 1.0;
+    return integrate_section_2d(*run_.field, section, depth);
+  }
+  std::vector<ForceResult> forces() const { return compute_forces_2d(run_); }
+  void coil_results(const Assembler2D& assembler, const Eigen::VectorXd& u) const {
+    run_.coils = magfem::coil_results(run_, assembler, u);
+  }
+  void estimate_error() const {
+    run_.error = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
+  }
+  void check_finite_fields() const {}
+  void scale_to_whole_device() const {}
+  std::vector<std::string> mesh_warnings() const { return {}; }
 
-  run->problem = build_problem(run->spec, run->mesh);
-  t0 = Clock::now();
-  stage("assembly: " + std::to_string(run->mesh.n_triangles()) + " triangles, order " +
-        std::to_string(run->spec.order));
-  run->dofs = std::make_unique<DofMap2D>(run->mesh, run->spec.order);
-  Assembler2D assembler(run->problem, *run->dofs);
-  const double setup = since(t0);
+private:
+  Run2D& run_;
+  const RunOverrides& ov_;
+};
 
-  Eigen::VectorXd u;
-  run->report = solve_nonlinear(assembler, u, run->spec.newton);
-  run->timings.assemble = setup + run->report.assemble_s;
-  run->timings.solve = run->report.solve_s;
-  if (!run->report.converged)
-    throw SolveError("the solver did not converge: " + run->report.message);
+} // namespace
 
-  check_finite(u, "solution");
-
-  t0 = Clock::now();
-  stage("post-processing");
-  run->field = std::make_unique<Field2D>(run->problem, *run->dofs, assembler.expand(u));
-  std::vector<std::string> names;
-  for (const auto& r : run->spec.regions)
-    names.push_back(r.name);
-  run->energy = summarize_energy_2d(*run->field, names);
-  const auto t_estimate = Clock::now();
-  run->error = estimate_error_2d(*run->field, run->energy.total_J_per_m);
-  run->timings.error_estimate = since(t_estimate);
-  const PointLocator2D locator(run->mesh);
-  for (const auto& probe : run->spec.probes)
-    run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
-  const double depth = run->spec.stack_length > 0 ? run->spec.stack_length : 1.0;
-  for (const auto& section : run->spec.sections)
-    run->sections.push_back(integrate_section_2d(*run->field, section, depth));
-  check_sections_inside(run->sections, run->spec);
-  run->forces = compute_forces_2d(*run);
-  run->coils = coil_results(*run, assembler, u);
-  check_finite(run->energy.total_J_per_m, "magnetic energy");
-  check_forces_finite(run->forces);
-  run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
-  run->timings.postprocess = since(t0);
-  run->timings.total = since(t_start);
-  return run;
+std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides) {
+  return run_case<Discretisation2D>(std::move(spec), overrides);
 }
 
 nlohmann::ordered_json summary_json_2d(const Run2D& run) {

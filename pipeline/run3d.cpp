@@ -22,6 +22,7 @@
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/result_tables.hpp"
+#include "pipeline/run_case.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -37,10 +38,6 @@
 
 namespace magfem {
 namespace {
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // Sphere probes tell the mesher where to refine (MeshOptions3D::probe_size).
 std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
@@ -189,133 +186,147 @@ double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
                                   static_cast<int>(spec.geometry3d.coils.size()));
 }
 
-std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
-  const auto t_start = Clock::now();
-  auto run = std::make_unique<Run3D>();
-  apply_overrides(spec, ov);
-  run->spec = std::move(spec);
-  run->spec.newton.linear.progress = ov.progress;
+namespace {
+
+// The 3D stages of run_case (run_case.hpp): Lagrange tetrahedra of order 1 or 2 for the
+// reduced scalar potential (coils as a Biot-Savart source field), Newton with CHOLMOD, CG with
+// AMG or p-multigrid, or under mpirun a distributed linear solve; symmetry planes mesh a share
+// of the device, scaled back to the whole after post-processing.
+class Discretisation3D {
+public:
+  using Run = Run3D;
+  using DofMap = DofMap3D;
+  using Field = Field3D;
+  using Locator = PointLocator3D;
+  using Assembler = Assembler3D;
+  static constexpr const char* element_name = "tetrahedra";
+
+  Discretisation3D(Run3D& run, const RunOverrides& ov) : run_(run), ov_(ov), world_(ov.world) {
+    run_.ranks = world_.size;
+  }
+
+  static void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
+    magfem::apply_overrides(spec, ov);
+  }
+  static std::size_t n_elements(const Mesh3D& mesh) { return mesh.n_tets(); }
+  static double total_energy(const Run3D& run) { return run.energy.total_J; }
+
   // 3D systems fill in so much that CHOLMOD's predicted cost passes direct_max_gflop far
   // below this size (a 97k-unknown P2 sphere already goes to CG; 237k P2 unknowns predict
   // 870 GFlop), while the AMD analysis behind the prediction takes seconds at a million
   // unknowns (2 s of the 32-magnet benchmark at 630k): systems this large skip it.
-  auto& limit = run->spec.newton.linear.direct_limit;
-  limit = std::min(limit, 200'000);
-  auto stage = [&](const std::string& what) {
-    if (ov.progress)
-      ov.progress->stage(what);
-  };
-  const MpiWorld& world = ov.world;
-  run->ranks = world.size;
-  if (world.distributed())
-    if (const std::string why = distributed_refusal(run->spec); !why.empty())
-      throw InputError(run->spec.file, 0, "",
-                       why + " (" + std::to_string(world.size) + " processes asked for)");
-
-  if (!run->spec.geometry3d.coils.empty()) {
-    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
-    check_coils_in_air(run->spec, *run->coils); // before the mesh: fail fast
+  void tune_linear_solver(LinearSolverOptions& options) const {
+    options.direct_limit = std::min(options.direct_limit, 200'000);
   }
-  auto t0 = Clock::now();
-  stage("meshing");
-  run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
-  run->timings.mesh = since(t0);
-  // Said now (a solve can take minutes) and again in the summary.
-  if (world.is_root())
-    for (const auto& w : run->mesh.warnings)
-      std::cerr << "magfem: warning: " + w + "\n" << std::flush;
-  if (world.distributed())
-    check_same_mesh_everywhere(run->mesh);
-  check_stress_surfaces_3d(run->spec, run->mesh); // before the solve: fail fast
-
-  run->problem = build_problem(run->spec, run->mesh);
-  t0 = Clock::now();
-  stage("assembly: " + std::to_string(run->mesh.n_tets()) + " tetrahedra, order " +
-        std::to_string(run->spec.order));
-  run->dofs = std::make_unique<DofMap3D>(run->mesh, run->spec.order);
-  // P2 edge nodes on spherical interfaces go onto the sphere: flat facets would otherwise
-  // limit the field error near curved magnet faces to O(h^2) in the geometry.
-  if (run->spec.order == 2)
-    run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
-  if (run->coils) {
-    stage("coil source field: " + std::to_string(run->coils->n_coils()) + " coils at " +
-          std::to_string(run->mesh.n_tets() * tet_rule(SourceFieldTable3D::rule_degree).size()) +
-          " quadrature points");
-    run->coil_source = make_coil_source_3d(run->problem, *run->dofs, *run->coils);
-    stage("assembly");
-    run->problem.source = &run->coil_source;
+  void check_before_mesh() const {
+    if (world_.distributed())
+      if (const std::string why = distributed_refusal(run_.spec); !why.empty())
+        throw InputError(run_.spec.file, 0, "",
+                         why + " (" + std::to_string(world_.size) + " processes asked for)");
+    if (!run_.spec.geometry3d.coils.empty()) {
+      run_.coils = std::make_unique<CaseCoils>(run_.spec.geometry3d.coils, fe_source_options());
+      check_coils_in_air(run_.spec, *run_.coils);
+    }
+  }
+  Mesh3D mesh() const { return mesh_case(run_.spec, ov_, run_.mesh_estimate); }
+  void check_mesh() const {
+    // Said now (a solve can take minutes) and again in the summary.
+    if (world_.is_root())
+      for (const auto& w : run_.mesh.warnings)
+        std::cerr << "magfem: warning: " + w + "\n" << std::flush;
+    if (world_.distributed())
+      check_same_mesh_everywhere(run_.mesh);
+    check_stress_surfaces_3d(run_.spec, run_.mesh);
+  }
+  Problem3D build_problem() const { return magfem::build_problem(run_.spec, run_.mesh); }
+  void prepare_dofs() const {
+    // P2 edge nodes on spherical interfaces go onto the sphere: flat facets would otherwise
+    // limit the field error near curved magnet faces to O(h^2) in the geometry.
+    if (run_.spec.order == 2)
+      run_.dofs->curve_to_spheres(run_.mesh, sphere_surfaces(run_.spec.geometry3d, run_.mesh));
+    if (run_.coils) {
+      announce_stage(ov_.progress,
+                     "coil source field: " + std::to_string(run_.coils->n_coils()) + " coils at " +
+                         std::to_string(run_.mesh.n_tets() *
+                                        tet_rule(SourceFieldTable3D::rule_degree).size()) +
+                         " quadrature points");
+      run_.coil_source = make_coil_source_3d(run_.problem, *run_.dofs, *run_.coils);
+      announce_stage(ov_.progress, "assembly");
+      run_.problem.source = &run_.coil_source;
+    }
   }
   // Distributed: one thread per process (the processes share the cores).
-  Assembler3D assembler(run->problem, *run->dofs, AssemblyOptions3D{world.distributed() ? 1 : 0});
-  run->threads = assembler.threads();
-  // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
-  // preconditioner (O(unknowns) to build, unused by the other solvers and not distributed).
-  if (run->spec.order == 2 && !world.distributed())
-    run->spec.newton.linear.coarse_prolongation =
-        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-            p1_prolongation(*run->dofs, assembler.dof_to_equation()));
-  if (run->spec.order == 2 && !world.distributed() && run->problem.boundary == OuterKind3D::open)
-    run->spec.newton.linear.smoother_block = std::make_shared<const std::vector<int>>(
-        element_equations(*run->dofs, assembler.dof_to_equation(), run->mesh.n_tets(),
-                          [&](std::size_t t) { return run->problem.is_shell(t); }));
-  const double setup = since(t0);
-
-  Eigen::VectorXd u;
-  if (world.distributed())
-    run->report = solve_linear_distributed(assembler, *run->dofs, run->mesh.n_tets(), world.rank,
-                                           world.size, run->spec.newton.linear, u);
-  else
-    run->report = solve_nonlinear(assembler, u, run->spec.newton);
-  run->timings.assemble = setup + run->report.assemble_s;
-  run->timings.solve = run->report.solve_s;
-  if (!run->report.converged)
-    throw SolveError("the solver did not converge: " + run->report.message);
-  if (!world.is_root()) { // rank 0 holds the solution and alone post-processes
-    run->timings.total = since(t_start);
-    return run;
+  Assembler3D make_assembler() const {
+    return Assembler3D(run_.problem, *run_.dofs, AssemblyOptions3D{world_.distributed() ? 1 : 0});
   }
+  void prepare_solver(const Assembler3D& assembler) const {
+    run_.threads = assembler.threads();
+    if (run_.spec.order != 2 || world_.distributed())
+      return;
+    auto& linear = run_.spec.newton.linear;
+    // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
+    // preconditioner (O(unknowns) to build, unused by the other solvers and not distributed).
+    linear.coarse_prolongation =
+        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+            p1_prolongation(*run_.dofs, assembler.dof_to_equation()));
+    if (run_.problem.boundary == OuterKind3D::open)
+      linear.smoother_block = std::make_shared<const std::vector<int>>(
+          element_equations(*run_.dofs, assembler.dof_to_equation(), run_.mesh.n_tets(),
+                            [&](std::size_t t) { return run_.problem.is_shell(t); }));
+  }
+  NewtonReport solve(Assembler3D& assembler, Eigen::VectorXd& u) const {
+    if (world_.distributed())
+      return solve_linear_distributed(assembler, *run_.dofs, run_.mesh.n_tets(), world_.rank,
+                                      world_.size, run_.spec.newton.linear, u);
+    return solve_nonlinear(assembler, u, run_.spec.newton);
+  }
+  // Rank 0 holds the solution and alone post-processes.
+  bool post_processes() const { return world_.is_root(); }
 
-  check_finite(u, "solution");
-
-  t0 = Clock::now();
-  stage("post-processing");
-  run->field = std::make_unique<Field3D>(run->problem, *run->dofs, assembler.expand(u));
-  std::vector<std::string> names;
-  for (const auto& r : run->spec.regions)
-    names.push_back(r.name);
-  run->energy = summarize_energy_3d(*run->field, names);
-  const PointLocator3D locator(run->mesh);
-  run->recovered_B = RecoveredB3D(*run->field);
-  for (const auto& probe : run->spec.probes)
-    run->probes.push_back(
-        sample_probe_3d(*run->field, locator, probe, run->spec.length_unit, &run->recovered_B));
+  EnergySummary3D summarize_energy(const std::vector<std::string>& names) const {
+    return summarize_energy_3d(*run_.field, names);
+  }
+  // Nodal B per region, once for the probes and the VTU.
+  void recover() const { run_.recovered_B = RecoveredB3D(*run_.field); }
+  ProbeTable sample_probe(const PointLocator3D& locator, const ProbeSpec& probe) const {
+    return sample_probe_3d(*run_.field, locator, probe, run_.spec.length_unit, &run_.recovered_B);
+  }
   // Sections integrate the element field itself: a flux is an integral, which the recovered
   // (smoothed) B would only approximate, and the element B is exact in B.n per element.
-  for (const auto& section : run->spec.sections)
-    run->sections.push_back(integrate_section_3d(*run->field, section));
-  check_sections_inside(run->sections, run->spec);
-  run->forces = compute_forces_3d(*run);
-  for (auto& f : coil_lorentz_forces(*run))
-    run->forces.push_back(f);
-  run->coil_results = compute_coil_results(*run, assembler, u);
-  // Every solve says how accurate it is (issue 29): the energy-norm estimate and one for
-  // each stress-tensor force, from one patch recovery.
-  const auto t_estimate = Clock::now();
-  const PatchRecovery3D recovery(*run->field);
-  run->error_estimate = estimate_error_3d(recovery, run->energy.total_J);
-  estimate_force_errors_3d(*run, recovery, run->forces);
-  run->error_estimate_s = since(t_estimate);
-  run->timings.error_estimate = run->error_estimate_s;
-  check_finite(run->recovered_B.values(), "recovered flux density");
-  check_finite(run->energy.total_J, "magnetic energy");
-  check_forces_finite(run->forces);
-  scale_to_whole_device(*run);
-  run->warnings = run->mesh.warnings;
-  for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
-    run->warnings.push_back(std::move(w));
-  run->timings.postprocess = since(t0);
-  run->timings.total = since(t_start);
-  return run;
+  SectionFlux integrate_section(const SectionSpec& section) const {
+    return integrate_section_3d(*run_.field, section);
+  }
+  std::vector<ForceResult> forces() const {
+    auto forces = compute_forces_3d(run_);
+    for (auto& f : coil_lorentz_forces(run_))
+      forces.push_back(f);
+    return forces;
+  }
+  void coil_results(const Assembler3D& assembler, const Eigen::VectorXd& u) const {
+    run_.coil_results = compute_coil_results(run_, assembler, u);
+  }
+  // The energy-norm estimate and one for each stress-tensor force, from one patch recovery.
+  void estimate_error() const {
+    const PatchRecovery3D recovery(*run_.field);
+    run_.error_estimate = estimate_error_3d(recovery, run_.energy.total_J);
+    estimate_force_errors_3d(run_, recovery, run_.forces);
+  }
+  void check_finite_fields() const {
+    check_finite(run_.recovered_B.values(), "recovered flux density");
+  }
+  void scale_to_whole_device() const { magfem::scale_to_whole_device(run_); }
+  std::vector<std::string> mesh_warnings() const { return run_.mesh.warnings; }
+
+private:
+  Run3D& run_;
+  const RunOverrides& ov_;
+  const MpiWorld& world_;
+};
+
+} // namespace
+
+std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides) {
+  return run_case<Discretisation3D>(std::move(spec), overrides);
 }
 
 nlohmann::ordered_json summary_json_3d(const Run3D& run) {
@@ -339,7 +350,7 @@ nlohmann::ordered_json summary_json_3d(const Run3D& run) {
   add_error_estimate(j,
                      {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
                       run.error_estimate.indicator, run.error_estimate.error_norm2_J},
-                     run.error_estimate_s);
+                     run.timings.error_estimate);
   add_solve_record(j, run.report, run.timings, run.threads, run.ranks);
   // The coils' inductance matrix (part of postprocess), 3D only.
   j["timings_s"]["inductance"] = run.coil_results.inductance_s;
@@ -445,7 +456,7 @@ std::string describe_run_3d(const Run3D& run) {
   std::snprintf(buf, sizeof buf,
                 "error    estimated energy error %.3g %% (energy norm %.3g %%, %s, %.2f s)\n",
                 run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
-                run.error_estimate.indicator.c_str(), run.error_estimate_s);
+                run.error_estimate.indicator.c_str(), run.timings.error_estimate);
   s += buf;
   if (run.adapt)
     s += describe_adapt_result(*run.adapt);
