@@ -1,9 +1,7 @@
 #include "pipeline/run2d.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -13,8 +11,8 @@
 #include "mesh/mesher2d.hpp"
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
-#include "pipeline/result_tables.hpp"
 #include "pipeline/run_case.hpp"
+#include "pipeline/run_report.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -108,16 +106,6 @@ std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& asse
     out[k].inductance_H = flux_linkage_axi(response, per_ampere[k].part, out[k].turns);
   }
   return out;
-}
-
-// The per-element indicator eta_K^2 (J/m planar, J axisymmetric) as cell data, in the order
-// of make_vtu_2d's cells (the shell is not written).
-void add_error_indicator(VtuGrid& grid, const Run2D& run) {
-  VtuArray a{"error_indicator", 1, {}};
-  for (std::size_t t = 0; t < run.mesh.n_triangles(); ++t)
-    if (!run.problem.is_shell(t))
-      a.values.push_back(run.error.eta2[t]);
-  grid.cell_data.push_back(std::move(a));
 }
 
 } // namespace
@@ -225,6 +213,119 @@ public:
   void scale_to_whole_device() const {}
   std::vector<std::string> mesh_warnings() const { return {}; }
 
+  // What the report writes (run_report.hpp).
+  static nlohmann::ordered_json dimension_json(const Run2D& run) {
+    return run.spec.axisymmetric() ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2);
+  }
+  static void add_mesh_quality(nlohmann::ordered_json& j, const Run2D& run) {
+    // Top-level min/max_angle_deg predate mesh_quality and stay for the scripts that read them.
+    j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
+    j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
+    j["mesh_quality"] = {{"min_angle_deg", run.mesh.quality.min_angle_deg},
+                         {"max_angle_deg", run.mesh.quality.max_angle_deg}};
+  }
+  // Planar energies and forces are per metre, times the stack length when the case has one.
+  static double length(const Run2D& run) {
+    return run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
+  }
+  static double energy_J(const Run2D& run) { return run.energy.total_J_per_m * length(run); }
+  static std::string energy_per(const Run2D& run) {
+    return run.spec.axisymmetric()     ? "body of revolution"
+           : run.spec.stack_length > 0 ? "stack"
+                                       : "metre of length";
+  }
+  static void add_symmetry(nlohmann::ordered_json&, const Run2D&) {}
+  static ErrorEstimateRecord error_record(const Run2D& run) {
+    return {run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator,
+            run.error.total_eta2 * length(run)};
+  }
+  static int threads(const Run2D&) { return 1; }
+  static int ranks(const Run2D&) { return 1; }
+  static void add_solver_extras(nlohmann::ordered_json&, const Run2D&) {}
+  static nlohmann::ordered_json region_json(const Run2D& run, std::size_t i) {
+    const auto& r = run.energy.regions[i];
+    if (r.area_m2 == 0)
+      return nullptr;
+    return {{"name", r.name},
+            {"area_m2", r.area_m2},
+            {"energy_J", r.energy_J_per_m * length(run)},
+            {"peak_B_T", r.peak_B_T},
+            {"nonlinear", r.nonlinear}};
+  }
+  static void add_results(nlohmann::ordered_json& j, const Run2D& run) {
+    if (!run.forces.empty()) {
+      j["forces_per"] = energy_per(run);
+      j["forces"] = forces_json(run.forces);
+    }
+    if (!run.sections.empty())
+      j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
+    if (!run.coils.empty())
+      j["coils"] = coils_json_2d(run.coils);
+  }
+  static void stage_vtu(OutputStage& stage, const Run2D& run, const VtuMaterials& materials) {
+    VtuGrid grid = make_vtu_2d(*run.field, materials.of_region, 0, materials.names);
+    // eta_K^2 per cell (J/m planar, J axisymmetric).
+    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error.eta2));
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
+    if (run.spec.write_revolved_vtu)
+      write_vtu(stage.path_for("solution_revolved.vtu").string(),
+                make_vtu_revolved(*run.field, materials.of_region, 0, materials.names));
+  }
+  static std::string describe_head(const Run2D& run) {
+    char buf[512];
+    std::string s;
+    std::snprintf(buf, sizeof buf,
+                  "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
+                  "solve    order %d, %d unknowns, %s, residual %.2e\n",
+                  run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
+                  run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
+                  run.report.residual_history.back());
+    s += buf;
+    std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
+                  run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
+    s += buf;
+    std::snprintf(
+        buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
+        run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
+    s += buf;
+    if (run.adapt)
+      s += describe_adapt_result(*run.adapt);
+    for (const auto& r : run.energy.regions)
+      if (r.nonlinear && r.area_m2 > 0) {
+        std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                      r.peak_B_T);
+        s += buf;
+      }
+    return s;
+  }
+  static bool forces_per_metre(const Run2D& run) {
+    return run.spec.stack_length <= 0 && !run.spec.axisymmetric();
+  }
+  static const char* flux_unit(const Run2D& run) {
+    return run.spec.stack_length > 0 || run.spec.axisymmetric() ? "Wb" : "Wb/m";
+  }
+  static std::string describe_coils(const Run2D& run) {
+    std::string s;
+    char buf[512];
+    for (const auto& c : run.coils) {
+      std::snprintf(buf, sizeof buf,
+                    "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
+                    "linkage / I = %.6g H (apparent)\n",
+                    c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
+      s += buf;
+    }
+    return s;
+  }
+  static std::string describe_time(const Run2D& run) {
+    char buf[512];
+    std::snprintf(
+        buf, sizeof buf,
+        "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
+        run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
+        run.timings.total);
+    return buf;
+  }
+
 private:
   Run2D& run_;
   const RunOverrides& ov_;
@@ -237,123 +338,15 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides)
 }
 
 nlohmann::ordered_json summary_json_2d(const Run2D& run) {
-  nlohmann::ordered_json j;
-  const bool axi = run.spec.axisymmetric();
-  add_run_header(j, {run.spec.file, axi ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2),
-                     run.spec.order, run.mesh.n_triangles(), run.mesh.n_nodes(),
-                     static_cast<std::size_t>(run.dofs->n_dofs())});
-  // Top-level min/max_angle_deg predate mesh_quality and stay for the scripts that read them.
-  j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
-  j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
-  j["mesh_quality"] = {{"min_angle_deg", run.mesh.quality.min_angle_deg},
-                       {"max_angle_deg", run.mesh.quality.max_angle_deg}};
-  const double length = run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
-  const std::string per = axi                         ? "body of revolution"
-                          : run.spec.stack_length > 0 ? "stack"
-                                                      : "metre of length";
-  add_energy(j, run.energy.total_J_per_m * length, per);
-  add_error_estimate(j,
-                     {run.error.energy_error_pct, run.error.energy_norm_error_pct,
-                      run.error.indicator, run.error.total_eta2 * length},
-                     run.timings.error_estimate);
-  add_solve_record(j, run.report, run.timings, 1, 1);
-  auto& regions = j["regions"];
-  for (const auto& r : run.energy.regions) {
-    if (r.area_m2 == 0)
-      continue;
-    regions.push_back({{"name", r.name},
-                       {"area_m2", r.area_m2},
-                       {"energy_J", r.energy_J_per_m * length},
-                       {"peak_B_T", r.peak_B_T},
-                       {"nonlinear", r.nonlinear}});
-  }
-  for (const auto& p : run.probes)
-    j["probes"].push_back(p.name + ".csv");
-  if (!run.forces.empty()) {
-    j["forces_per"] = per;
-    j["forces"] = forces_json(run.forces);
-  }
-  if (!run.sections.empty())
-    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-  if (!run.coils.empty())
-    j["coils"] = coils_json_2d(run.coils);
-  if (run.adapt)
-    j["adapt"] = adapt_json(*run.adapt);
-  j["warnings"] = run.warnings;
-  return j;
+  return summary_json<Discretisation2D>(run);
 }
 
 std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  stage_probe_tables(stage, run.probes);
-
-  if (run.spec.write_vtu) {
-    const VtuMaterials materials = vtu_materials(run.spec.regions);
-    const auto& material_names = materials.names;
-    const auto& material_of_part = materials.of_region;
-    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
-    add_error_indicator(grid, run);
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-    if (run.spec.write_revolved_vtu)
-      write_vtu(stage.path_for("solution_revolved.vtu").string(),
-                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
-  }
-
-  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
-  stage.write_text("summary.json", summary_json_2d(run).dump(2) + "\n");
-  stage.commit();
-  return stage.written();
+  return write_outputs<Discretisation2D>(run, out_dir);
 }
 
 std::string describe_run_2d(const Run2D& run) {
-  char buf[512];
-  std::string s;
-  std::snprintf(buf, sizeof buf,
-                "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
-                "solve    order %d, %d unknowns, %s, residual %.2e\n",
-                run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
-                run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
-                run.report.residual_history.back());
-  s += buf;
-  std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
-                run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
-  s += buf;
-  std::snprintf(
-      buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
-      run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
-  s += buf;
-  if (run.adapt)
-    s += describe_adapt_result(*run.adapt);
-  for (const auto& r : run.energy.regions)
-    if (r.nonlinear && r.area_m2 > 0) {
-      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
-                    r.peak_B_T);
-      s += buf;
-    }
-  s += describe_forces(run.forces, run.spec.stack_length <= 0 && !run.spec.axisymmetric());
-  for (const auto& f : run.sections) {
-    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g %s, mean Bn %.6g T, mean |B| %.6g T\n",
-                  f.name.c_str(), f.total.flux_Wb,
-                  run.spec.stack_length > 0 || run.spec.axisymmetric() ? "Wb" : "Wb/m",
-                  f.total.Bn_avg_T(), f.total.B_avg_T());
-    s += buf;
-  }
-  for (const auto& c : run.coils) {
-    std::snprintf(buf, sizeof buf,
-                  "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
-                  "linkage / I = %.6g H (apparent)\n",
-                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
-    s += buf;
-  }
-  std::snprintf(buf, sizeof buf,
-                "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
-                run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
-                run.timings.total);
-  s += buf;
-  for (const auto& w : run.warnings)
-    s += "warning  " + w + "\n";
-  return s;
+  return describe_run<Discretisation2D>(run);
 }
 
 } // namespace magfem

@@ -1,11 +1,9 @@
 #include "pipeline/run3d.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -21,8 +19,8 @@
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
-#include "pipeline/result_tables.hpp"
 #include "pipeline/run_case.hpp"
+#include "pipeline/run_report.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -317,6 +315,122 @@ public:
   void scale_to_whole_device() const { magfem::scale_to_whole_device(run_); }
   std::vector<std::string> mesh_warnings() const { return run_.mesh.warnings; }
 
+  // What the report writes (run_report.hpp).
+  static nlohmann::ordered_json dimension_json(const Run3D&) { return 3; }
+  static void add_mesh_quality(nlohmann::ordered_json& j, const Run3D& run) {
+    j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
+                         {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
+                         {"max_radius_edge", run.mesh.quality.max_radius_edge},
+                         {"curved_tets", run.dofs->n_curved()},
+                         {"straightened_edge_nodes", run.dofs->n_straightened()}};
+  }
+  static double energy_J(const Run3D& run) { return run.energy.total_J; }
+  static std::string energy_per(const Run3D&) { return "device"; }
+  // What was meshed, and that energies, linkages and inductances are the whole device's.
+  static void add_symmetry(nlohmann::ordered_json& j, const Run3D& run) {
+    const auto& planes = run.spec.geometry3d.symmetry;
+    if (planes.empty())
+      return;
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& p : planes)
+      list.push_back({{"plane", axis_name(p.axis)}, {"field", field_name(p.field)}});
+    j["symmetry"] = list;
+    j["symmetry_factor"] = symmetry_factor(planes);
+  }
+  static ErrorEstimateRecord error_record(const Run3D& run) {
+    const auto& e = run.error_estimate;
+    return {e.energy_error_pct, e.energy_norm_error_pct, e.indicator, e.error_norm2_J};
+  }
+  static int threads(const Run3D& run) { return run.threads; }
+  static int ranks(const Run3D& run) { return run.ranks; }
+  static void add_solver_extras(nlohmann::ordered_json& j, const Run3D& run) {
+    // The coils' inductance matrix (part of postprocess), 3D only.
+    j["timings_s"]["inductance"] = run.coil_results.inductance_s;
+    j["memory_guard"] = {
+        {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
+        {"estimated_peak_memory_MB",
+         estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order,
+                                  static_cast<int>(run.spec.geometry3d.coils.size()))}};
+  }
+  static nlohmann::ordered_json region_json(const Run3D& run, std::size_t i) {
+    const auto& r = run.energy.regions[i];
+    if (r.volume_m3 == 0)
+      return nullptr;
+    nlohmann::ordered_json row = {{"name", r.name},
+                                  {"volume_m3", r.volume_m3},
+                                  {"energy_J", r.energy_J},
+                                  {"peak_B_T", r.peak_B_T},
+                                  {"nonlinear", r.nonlinear}};
+    if (i < run.mesh.part_volumes.size())
+      row["meshed_volume_m3"] = run.mesh.part_volumes[i];
+    return row;
+  }
+  static void add_results(nlohmann::ordered_json& j, const Run3D& run) {
+    if (!run.sections.empty())
+      j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
+    if (run.coils)
+      add_coil_results_json(j, run.coil_results);
+    if (!run.forces.empty()) {
+      j["forces_per"] = "device";
+      j["forces"] = forces_json(run.forces);
+    }
+  }
+  static void stage_vtu(OutputStage& stage, const Run3D& run, const VtuMaterials& materials) {
+    VtuGrid grid = make_vtu_3d(*run.field, run.recovered_B.dof_average(), materials.of_region, 0,
+                               materials.names);
+    // eta_K^2 (J) per cell.
+    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2_J));
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
+  }
+  static std::string describe_head(const Run3D& run) {
+    char buf[640];
+    std::snprintf(
+        buf, sizeof buf,
+        "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
+        "solve    order %d, %d unknowns, %s, residual %.2e\n"
+        "energy   %.6g J%s\n",
+        run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+        run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
+        describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
+        run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
+    std::string s = buf;
+    if (run.dofs->n_straightened() > 0)
+      s += "note     " + std::to_string(run.dofs->n_straightened()) +
+           " edge nodes on spheres kept straight: curving them would fold their tets (a finer "
+           "mesh there curves them)\n";
+    for (const auto& note : run.report.notes)
+      s += "note     " + note + "\n";
+    for (const auto& r : run.energy.regions)
+      if (r.nonlinear && r.volume_m3 > 0) {
+        std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                      r.peak_B_T);
+        s += buf;
+      }
+    std::snprintf(buf, sizeof buf,
+                  "error    estimated energy error %.3g %% (energy norm %.3g %%, %s, %.2f s)\n",
+                  run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                  run.error_estimate.indicator.c_str(), run.timings.error_estimate);
+    s += buf;
+    if (run.adapt)
+      s += describe_adapt_result(*run.adapt);
+    return s;
+  }
+  static bool forces_per_metre(const Run3D&) { return false; }
+  static const char* flux_unit(const Run3D&) { return "Wb"; }
+  static std::string describe_coils(const Run3D& run) {
+    return magfem::describe_coils(run.coil_results);
+  }
+  static std::string describe_time(const Run3D& run) {
+    char buf[640];
+    std::snprintf(buf, sizeof buf,
+                  "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post "
+                  "%.2f s, total %.2f s, peak %.0f MB\n",
+                  run.timings.mesh, run.timings.assemble, run.timings.solve,
+                  run.report.linear_setup_s, run.timings.postprocess, run.timings.total,
+                  peak_memory_mb());
+    return buf;
+  }
+
 private:
   Run3D& run_;
   const RunOverrides& ov_;
@@ -330,153 +444,15 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides)
 }
 
 nlohmann::ordered_json summary_json_3d(const Run3D& run) {
-  nlohmann::ordered_json j;
-  add_run_header(j, {run.spec.file, 3, run.spec.order, run.mesh.n_tets(), run.mesh.n_nodes(),
-                     static_cast<std::size_t>(run.dofs->n_dofs())});
-  j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
-                       {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
-                       {"max_radius_edge", run.mesh.quality.max_radius_edge},
-                       {"curved_tets", run.dofs->n_curved()},
-                       {"straightened_edge_nodes", run.dofs->n_straightened()}};
-  add_energy(j, run.energy.total_J, "device");
-  if (const auto& planes = run.spec.geometry3d.symmetry; !planes.empty()) {
-    // What was meshed, and that energies, linkages and inductances are the whole device's.
-    nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const auto& p : planes)
-      list.push_back({{"plane", axis_name(p.axis)}, {"field", field_name(p.field)}});
-    j["symmetry"] = list;
-    j["symmetry_factor"] = symmetry_factor(planes);
-  }
-  add_error_estimate(j,
-                     {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
-                      run.error_estimate.indicator, run.error_estimate.error_norm2_J},
-                     run.timings.error_estimate);
-  add_solve_record(j, run.report, run.timings, run.threads, run.ranks);
-  // The coils' inductance matrix (part of postprocess), 3D only.
-  j["timings_s"]["inductance"] = run.coil_results.inductance_s;
-  j["memory_guard"] = {
-      {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
-      {"estimated_peak_memory_MB",
-       estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order,
-                                static_cast<int>(run.spec.geometry3d.coils.size()))}};
-  auto& regions = j["regions"];
-  for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
-    const auto& r = run.energy.regions[i];
-    if (r.volume_m3 == 0)
-      continue;
-    nlohmann::ordered_json reg = {{"name", r.name},
-                                  {"volume_m3", r.volume_m3},
-                                  {"energy_J", r.energy_J},
-                                  {"peak_B_T", r.peak_B_T},
-                                  {"nonlinear", r.nonlinear}};
-    if (i < run.mesh.part_volumes.size())
-      reg["meshed_volume_m3"] = run.mesh.part_volumes[i];
-    regions.push_back(reg);
-  }
-  for (const auto& p : run.probes)
-    j["probes"].push_back(p.name + ".csv");
-  if (!run.sections.empty()) {
-    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-  }
-  if (run.coils) {
-    j["coils"] = coil_results_json(run.coil_results);
-    if (run.coil_results.inductance_H.size() > 0) {
-      std::vector<std::string> names;
-      for (const auto& c : run.coil_results.coils)
-        names.push_back(c.name);
-      nlohmann::ordered_json l = nlohmann::ordered_json::array();
-      for (Eigen::Index i = 0; i < run.coil_results.inductance_H.rows(); ++i) {
-        std::vector<double> row;
-        for (Eigen::Index k = 0; k < run.coil_results.inductance_H.cols(); ++k)
-          row.push_back(run.coil_results.inductance_H(i, k));
-        l.push_back(row);
-      }
-      j["inductance_H"] = {{"names", names}, {"matrix", l}};
-    }
-    j["coil_warnings"] = run.coil_results.warnings;
-  }
-  if (!run.forces.empty()) {
-    j["forces_per"] = "device";
-    j["forces"] = forces_json(run.forces);
-  }
-  if (run.adapt)
-    j["adapt"] = adapt_json(*run.adapt);
-  j["warnings"] = run.warnings;
-  return j;
+  return summary_json<Discretisation3D>(run);
 }
 
 std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  stage_probe_tables(stage, run.probes);
-  if (run.spec.write_vtu) {
-    const VtuMaterials materials = vtu_materials(run.spec.regions);
-    const auto& material_names = materials.names;
-    const auto& material_of_part = materials.of_region;
-    VtuGrid grid =
-        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
-    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
-    VtuArray indicator{"error_indicator", 1, {}};
-    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
-      if (!run.problem.is_shell(t))
-        indicator.values.push_back(run.error_estimate.eta2_J[t]);
-    grid.cell_data.push_back(std::move(indicator));
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-  }
-  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
-  stage.write_text("summary.json", summary_json_3d(run).dump(2) + "\n");
-  stage.commit();
-  return stage.written();
+  return write_outputs<Discretisation3D>(run, out_dir);
 }
 
 std::string describe_run_3d(const Run3D& run) {
-  char buf[640];
-  std::snprintf(
-      buf, sizeof buf,
-      "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-      "solve    order %d, %d unknowns, %s, residual %.2e\n"
-      "energy   %.6g J%s\n",
-      run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
-      run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-      describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
-      run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
-  std::string s = buf;
-  if (run.dofs->n_straightened() > 0)
-    s += "note     " + std::to_string(run.dofs->n_straightened()) +
-         " edge nodes on spheres kept straight: curving them would fold their tets (a finer "
-         "mesh there curves them)\n";
-  for (const auto& note : run.report.notes)
-    s += "note     " + note + "\n";
-  for (const auto& r : run.energy.regions)
-    if (r.nonlinear && r.volume_m3 > 0) {
-      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
-                    r.peak_B_T);
-      s += buf;
-    }
-  std::snprintf(buf, sizeof buf,
-                "error    estimated energy error %.3g %% (energy norm %.3g %%, %s, %.2f s)\n",
-                run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
-                run.error_estimate.indicator.c_str(), run.timings.error_estimate);
-  s += buf;
-  if (run.adapt)
-    s += describe_adapt_result(*run.adapt);
-  s += describe_forces(run.forces, false);
-  for (const auto& f : run.sections) {
-    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",
-                  f.name.c_str(), f.total.flux_Wb, f.total.Bn_avg_T(), f.total.B_avg_T());
-    s += buf;
-  }
-  s += describe_coils(run.coil_results);
-  std::snprintf(buf, sizeof buf,
-                "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post %.2f s, "
-                "total %.2f s, peak %.0f MB\n",
-                run.timings.mesh, run.timings.assemble, run.timings.solve,
-                run.report.linear_setup_s, run.timings.postprocess, run.timings.total,
-                peak_memory_mb());
-  s += buf;
-  for (const auto& w : run.warnings)
-    s += "warning  " + w + "\n";
-  return s;
+  return describe_run<Discretisation3D>(run);
 }
 
 } // namespace magfem
