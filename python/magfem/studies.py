@@ -25,8 +25,9 @@ def _count(name, value):
 
 class SweepResult(dict):
     """A sweep's table: a dict of numpy columns named as the command line's sweep.csv
-    (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm,
-    Fz_N`` for translate sweeps), successful positions only, in the order given.
+    (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm, Tx,
+    ..., Fz`` for 3D translate sweeps; ``position_mm, Fz_N`` for axisymmetric ones), successful
+    positions only, in the order given.
 
     ``summary``: summary.json as ``magfem sweep`` writes it, but the provenance and the peak
     memory; ``method``, ``positions`` (per position: ok, seconds, error, ...) and ``failed``
@@ -77,9 +78,11 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     z only), ``angles`` in degrees (any sequence or numpy array), ``point`` on the axis
     (three numbers in the case's length unit; default the origin), ``analytic`` (3D only: the
     analytic interaction instead of FE), ``surface_radius`` (3D FE: the stress sphere's
-    radius in the case's length unit; default mid-gap). Translate sweeps (axisymmetric
-    cases): ``translate`` names the group moved along z, ``positions`` in mm (as the command
-    line's --positions). FE positions take ``order`` (1 or 2; None: as in the case) and
+    radius in the case's length unit; default mid-gap). Translate sweeps: ``translate`` names
+    the group moved, ``positions`` its offsets in mm (as the command line's --positions);
+    axisymmetric cases move it along z (FE, force Fz), 3D cases along ``axis`` (required; FE
+    or ``analytic``; the rotating sweep's columns with ``position_mm`` first); planar cases do
+    not translate. FE positions take ``order`` (1 or 2; None: as in the case) and
     ``mesh_scale``. ``jobs``: positions at once (None: one per core).
 
     ``progress``: None, True (a "position i/n done" line on stderr per position) or a

@@ -102,6 +102,26 @@ class AgainstCommandLine(unittest.TestCase):
         self.assertEqual(result.columns, ["position_mm", "Fz_N"])
 
 
+    def test_3d_translation(self):
+        # The 3D translate sweep (two dipole spheres pulled apart along z), analytic and FE:
+        # the same library call as `magfem sweep --move`, so the same bytes.
+        path = example("3d/two_spheres.yaml")
+        files = cli("sweep", path, "--move", "arm", "--axis", "z", "--positions", "0:2:4",
+                    "--analytic", "--quiet")
+        result = magfem.sweep(magfem.Case.load(path), translate="arm", axis="z",
+                              positions=[0, 2, 4], analytic=True)
+        self.check_same(result, files)
+        self.assertEqual(result.columns[0], "position_mm")
+        self.assertEqual(result.summary["motion"], "translate")
+        # Moved apart along z the attraction weakens: the positions were not ignored.
+        self.assertGreater(abs(result["Fz"][0]), abs(result["Fz"][2]))
+        files = cli("sweep", path, "--move", "arm", "--axis", "x", "--positions", "3",
+                    "--mesh-scale", "3", "--order", "1", "--jobs", "1", "--quiet")
+        fe = magfem.sweep(magfem.Case.load(path), translate="arm", axis="x", positions=[3],
+                          mesh_scale=3.0, order=1, jobs=1)
+        self.check_same(fe, files)
+
+
 class Arguments(unittest.TestCase):
     COMPENSATOR = example("3d/compensator_table42.yaml")
 
@@ -131,6 +151,16 @@ class Arguments(unittest.TestCase):
             with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
                 magfem.sweep(case, **kwargs)
             self.assertEqual(err.exception.field, field)
+        for kwargs, field in [(dict(translate="outer", positions=[0], analytic=True), "axis"),
+                              (dict(translate="outer", axis="z", positions=[0], point=[0, 0, 1],
+                                    analytic=True), "point")]:
+            with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
+                magfem.sweep(case, **kwargs)
+            self.assertEqual(err.exception.field, field)
+        planar = magfem.Case.load(example("2d/re25_motor_torque.yaml"))
+        with self.assertRaises(magfem.InputError) as err:
+            magfem.sweep(planar, translate="rotor", axis="x", positions=[0])
+        self.assertEqual(err.exception.field, "translate")
         axi = magfem.Case.load(example("axi/voice_coil_magnet.yaml"))
         with self.assertRaises(magfem.InputError) as err:
             magfem.sweep(axi, translate="coil", positions=[0], analytic=True)
