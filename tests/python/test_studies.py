@@ -122,6 +122,53 @@ class AgainstCommandLine(unittest.TestCase):
         self.check_same(fe, files)
 
 
+class Study(unittest.TestCase):
+    PATH = example("3d/compensator_study.yaml")
+    GRID = dict(params={"R_out": [40, 50, 60], "R_in": [30, 35]},
+                objectives=["peak_torque", "torque_at:90"], rotate="outer", axis="y",
+                angles=np.arange(0, 181, 30))
+
+    def test_against_the_command_line(self):
+        # The analytic compensator study (harmonic form, milliseconds a design): the same
+        # library call as `magfem study`, so study.csv byte for byte and the same summary.
+        files = cli("study", self.PATH, "--param", "R_out=40:10:60", "--param", "R_in=30,35",
+                    "--objective", "peak_torque", "--objective", "torque_at:90",
+                    "--rotate", "outer", "--axis", "y", "--angles", "0:30:180", "--quiet")
+        seen = []
+        result = magfem.study(magfem.Case.load(self.PATH),
+                              progress=lambda done, total: seen.append((done, total)),
+                              **self.GRID)
+        self.assertEqual(result.csv(), files["study.csv"])
+        self.assertEqual(result.columns, ["R_out", "R_in", "peak_torque_Nm", "torque_at_90deg_Nm"])
+        cli_summary = json.loads(files["summary.json"])
+        for key in ("magfem_version", "commit", "build", "seconds"):
+            cli_summary.pop(key, None)
+            result.summary.pop(key, None)
+        self.assertEqual(result.summary, cli_summary)
+        self.assertEqual(seen, [(i, 6) for i in range(1, 7)])
+        # The thesis's elbow: the peak torque grows with R_out at fixed R_in (the values reach
+        # the designs; the last parameter varies fastest).
+        peak = result["peak_torque_Nm"][result["R_in"] == 35]
+        self.assertTrue(np.all(np.diff(peak) > 0), peak)
+
+    def test_the_case_parameters_stay_under_the_grid(self):
+        # A Case loaded with gap=3 keeps it in every design: a wider gap, a weaker torque.
+        base = magfem.study(magfem.Case.load(self.PATH), **self.GRID)
+        wide = magfem.study(magfem.Case.load(self.PATH, params={"gap": 3}), **self.GRID)
+        self.assertTrue(np.all(np.abs(wide["peak_torque_Nm"]) < np.abs(base["peak_torque_Nm"])))
+
+    def test_bad_arguments_name_the_field(self):
+        case = magfem.Case.load(self.PATH)
+        for kwargs, field in [(dict(self.GRID, params={}), "params"),
+                              (dict(self.GRID, objectives=[]), "objectives"),
+                              (dict(self.GRID, angles=None), "angles"),
+                              (dict(self.GRID, objectives="peak"), "--objective"),
+                              (dict(self.GRID, params={"nobody": [1]}), "--param")]:
+            with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
+                magfem.study(case, **kwargs)
+            self.assertEqual(err.exception.field, field)
+
+
 class Arguments(unittest.TestCase):
     COMPENSATOR = example("3d/compensator_table42.yaml")
 
