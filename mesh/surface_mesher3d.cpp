@@ -1,5 +1,6 @@
 #include "mesh/surface_mesher3d.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -79,6 +80,47 @@ private:
   std::unordered_map<Key, std::vector<int>, Hash> cells_;
 };
 
+// Divides the curve at(t), t in [lo, hi], so that consecutive points are about h apart:
+// integrates 1/h along it and places points at equal increments of the integral. Returns the
+// pooled point ids from at(lo) to at(hi); a curve of no length is one point.
+template <class Curve>
+std::vector<int> divide_curve(const Curve& at, double lo, double hi, const SizeField3D& size,
+                              PointPool& pool) {
+  const Vec3 a = at(lo), b = at(hi), m = at(0.5 * (lo + hi));
+  if ((a - b).norm() + (a - m).norm() < 1e-12 * (1 + a.norm()))
+    return {pool.insert(a)};
+  std::vector<double> ts{lo}, integral{0};
+  double t = lo;
+  Vec3 x = a;
+  const double dt_probe = 1e-7 * (hi - lo);
+  while (t < hi) {
+    const double h = size(x);
+    const double speed =
+        (at(std::min(t + dt_probe, hi)) - at(std::min(t + dt_probe, hi) - dt_probe)).norm() /
+        dt_probe;
+    const double dt = std::min(hi - t, curve_step * h / std::max(speed, 1e-300));
+    const double t_next = t + dt;
+    const Vec3 x_next = at(t_next);
+    const double h_next = size(x_next);
+    integral.push_back(integral.back() + (x_next - x).norm() * 0.5 * (1 / h + 1 / h_next));
+    ts.push_back(t_next);
+    t = t_next;
+    x = x_next;
+  }
+  const int n_seg = std::max(1, static_cast<int>(std::ceil(integral.back() - 1e-6)));
+  std::vector<int> ids{pool.insert(a)};
+  std::size_t k_s = 0;
+  for (int k = 1; k < n_seg; ++k) {
+    const double target = integral.back() * k / n_seg;
+    while (integral[k_s + 1] < target)
+      ++k_s;
+    const double w = (target - integral[k_s]) / (integral[k_s + 1] - integral[k_s]);
+    ids.push_back(pool.insert(at(ts[k_s] + w * (ts[k_s + 1] - ts[k_s]))));
+  }
+  ids.push_back(pool.insert(b));
+  return ids;
+}
+
 // A grid edge: along `axis` over cell `cell`, at breakpoints fixed[0], fixed[1] of the other
 // two axes taken in increasing axis order.
 struct EdgeKey {
@@ -103,8 +145,6 @@ public:
   }
 
 private:
-  // Divides the curve so that consecutive points are about h apart: integrates 1/h along it
-  // and places points at equal increments of the integral.
   std::vector<int> divide(const EdgeKey& key) const {
     const GridFrame3D& f = dec_.frames[key.frame];
     Vec3 q;
@@ -112,45 +152,12 @@ private:
     for (int a = 0; a < 3; ++a)
       if (a != key.axis)
         q[a] = f.breaks[a][key.fixed[n++]];
-    const double lo = f.lo(key.axis, key.cell), hi = f.hi(key.axis, key.cell);
     auto at = [&](double t) {
       Vec3 qq = q;
       qq[key.axis] = t;
       return f.point(qq);
     };
-    const Vec3 a = at(lo), b = at(hi), m = at(0.5 * (lo + hi));
-    if ((a - b).norm() + (a - m).norm() < 1e-12 * (1 + a.norm()))
-      return {pool_.insert(a)};
-    std::vector<double> ts{lo}, integral{0};
-    double t = lo;
-    Vec3 x = a;
-    const double dt_probe = 1e-7 * (hi - lo);
-    while (t < hi) {
-      const double h = size_(x);
-      const double speed =
-          (at(std::min(t + dt_probe, hi)) - at(std::min(t + dt_probe, hi) - dt_probe)).norm() /
-          dt_probe;
-      const double dt = std::min(hi - t, curve_step * h / std::max(speed, 1e-300));
-      const double t_next = t + dt;
-      const Vec3 x_next = at(t_next);
-      const double h_next = size_(x_next);
-      integral.push_back(integral.back() + (x_next - x).norm() * 0.5 * (1 / h + 1 / h_next));
-      ts.push_back(t_next);
-      t = t_next;
-      x = x_next;
-    }
-    const int n_seg = std::max(1, static_cast<int>(std::ceil(integral.back() - 1e-6)));
-    std::vector<int> ids{pool_.insert(a)};
-    std::size_t s = 0;
-    for (int k = 1; k < n_seg; ++k) {
-      const double target = integral.back() * k / n_seg;
-      while (integral[s + 1] < target)
-        ++s;
-      const double w = (target - integral[s]) / (integral[s + 1] - integral[s]);
-      ids.push_back(pool_.insert(at(ts[s] + w * (ts[s + 1] - ts[s]))));
-    }
-    ids.push_back(pool_.insert(b));
-    return ids;
+    return divide_curve(at, f.lo(key.axis, key.cell), f.hi(key.axis, key.cell), size_, pool_);
   }
 
   const GridDecomposition3D& dec_;
@@ -212,7 +219,7 @@ std::vector<int> face_loop(const GridDecomposition3D& dec, const GridFace3D& fac
 // Delaunay refinement criteria: a triangle is too big when its longest edge, measured on the
 // surface (chords in 3D), exceeds h at its centroid; shape is judged in the chart, which is
 // conformal or isometric.
-class SurfaceCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
+template <class Chart> class SurfaceCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
 public:
   using Base = CGAL::Delaunay_mesh_criteria_2<Cdt>;
   struct Quality : std::pair<double, double> {
@@ -229,7 +236,7 @@ public:
   };
   class Is_bad : public Base::Is_bad {
   public:
-    Is_bad(const FaceChart3D& chart, const SizeField3D& size)
+    Is_bad(const Chart& chart, const SizeField3D& size)
         : Base::Is_bad(shape_bound, K()), chart_(&chart), size_(&size) {}
     CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
       if (q.size() > 1)
@@ -264,26 +271,28 @@ public:
     }
 
   private:
-    const FaceChart3D* chart_;
+    const Chart* chart_;
     const SizeField3D* size_;
   };
 
-  SurfaceCriteria(const FaceChart3D& chart, const SizeField3D& size)
+  SurfaceCriteria(const Chart& chart, const SizeField3D& size)
       : Base(shape_bound), chart_(&chart), size_(&size) {}
   Is_bad is_bad_object() const { return Is_bad(*chart_, *size_); }
 
 private:
-  const FaceChart3D* chart_;
+  const Chart* chart_;
   const SizeField3D* size_;
 };
 
-using Mesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SurfaceCriteria>;
+template <class Chart>
+using Mesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SurfaceCriteria<Chart>>;
 
-void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& size,
-               CurveCache& curves, SurfaceMesh3D& out) {
-  const GridFace3D& face = dec.faces[face_id];
-  const FaceChart3D chart(dec.frames[face.frame], face);
-  const std::vector<int> loop = face_loop(dec, face, curves);
+// Triangulates the closed loop of surface points (ids into out.points) in its chart by 2D
+// Delaunay refinement without splitting the loop's segments; the triangles go to `out` with
+// `face_tag` as their triangle_face.
+template <class Chart>
+void mesh_loop(const Chart& chart, const std::vector<int>& loop, const SizeField3D& size,
+               int face_tag, SurfaceMesh3D& out) {
   if (loop.size() < 3)
     throw MeshError("", "", "internal: degenerate interface face");
   Cdt cdt;
@@ -297,14 +306,14 @@ void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& s
     throw MeshError("", "", "internal: boundary points of a face coincide in its chart");
   for (std::size_t i = 0; i < vh.size(); ++i)
     cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
-  Mesher mesher(cdt, SurfaceCriteria(chart, size));
+  Mesher<Chart> mesher(cdt, SurfaceCriteria<Chart>(chart, size));
   // CGAL 5.5's Delaunay_mesher_no_edge_refinement_2 leaves its seeds_mark flag uninitialized
   // and refine_mesh() reads it (UBSan: "load of value 174 ... for type 'bool'"); with no seeds
   // it does not change the result, but the read is undefined. clear_seeds() sets it.
   mesher.clear_seeds();
   mesher.refine_mesh();
   // Re-mark the domain: only faces inside the boundary loop are output.
-  Mesher::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());
+  Mesher<Chart>::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (v->info().id < 0) {
       v->info().id = static_cast<int>(out.points.size());
@@ -320,14 +329,79 @@ void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& s
       continue;
     out.triangles.push_back(
         {fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id});
-    out.triangle_face.push_back(face_id);
+    out.triangle_face.push_back(face_tag);
+  }
+}
+
+void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& size,
+               CurveCache& curves, SurfaceMesh3D& out) {
+  const GridFace3D& face = dec.faces[face_id];
+  mesh_loop(FaceChart3D(dec.frames[face.frame], face), face_loop(dec, face, curves), size, face_id,
+            out);
+}
+
+// The plane of one triangle of a TriangleSurface, with isometric coordinates.
+class TriangleChart {
+public:
+  TriangleChart(const Vec3& a, const Vec3& b, const Vec3& c) : origin_(a) {
+    e1_ = (b - a).normalized();
+    e2_ = (b - a).cross(c - a).cross(b - a).normalized();
+  }
+  Eigen::Vector2d to_2d(const Vec3& x) const {
+    return {(x - origin_).dot(e1_), (x - origin_).dot(e2_)};
+  }
+  Vec3 to_3d(const Eigen::Vector2d& uv) const { return origin_ + uv.x() * e1_ + uv.y() * e2_; }
+
+private:
+  Vec3 origin_, e1_, e2_;
+};
+
+// The triangles of the TriangleSurface parts: each edge divided once by the size field (so
+// neighbours conform), each triangle refined in its plane. The input corners stay where they
+// are and every new point lies on an input triangle: the surface is split, never moved.
+void mesh_surface_parts(const Geometry3D& geo, const SizeField3D& size, PointPool& pool,
+                        SurfaceMesh3D& out) {
+  for (std::size_t p = 0; p < geo.parts.size(); ++p) {
+    const auto* surface = std::get_if<TriangleSurface>(&geo.parts[p].shape);
+    if (!surface)
+      continue;
+    std::vector<Vec3> x;
+    for (const Vec3& local : surface->points)
+      x.push_back(geo.parts[p].placement.to_global(local));
+    std::map<std::pair<int, int>, std::vector<int>> edges; // from the lower to the higher id
+    auto edge = [&](int i, int j) {
+      const auto key = std::minmax(i, j);
+      auto it = edges.find(key);
+      if (it == edges.end()) {
+        const Vec3 a = x[key.first], b = x[key.second];
+        it = edges
+                 .emplace(key, divide_curve([&](double t) { return Vec3(a + t * (b - a)); }, 0.0,
+                                            1.0, size, pool))
+                 .first;
+      }
+      return it->second;
+    };
+    for (const auto& t : surface->triangles)
+      for (int k = 0; k < 3; ++k)
+        edge(t[k], t[(k + 1) % 3]);
+    const int tag = part_surface_tag(static_cast<int>(p));
+    for (const auto& t : surface->triangles) {
+      std::vector<int> loop;
+      for (int k = 0; k < 3; ++k) {
+        std::vector<int> ids = edge(t[k], t[(k + 1) % 3]);
+        if (t[k] > t[(k + 1) % 3])
+          std::reverse(ids.begin(), ids.end());
+        loop.insert(loop.end(), ids.begin(), ids.end() - 1);
+      }
+      mesh_loop(TriangleChart(x[t[0]], x[t[1]], x[t[2]]), loop, size, tag, out);
+    }
   }
 }
 
 } // namespace
 
-SurfaceMesh3D mesh_surfaces_3d(const GridDecomposition3D& dec, const SizeField3D& size,
-                               double merge_tol) {
+SurfaceMesh3D mesh_surfaces_3d(const Geometry3D& geo, const GridDecomposition3D& dec,
+                               const SizeField3D& size, double merge_tol) {
   SurfaceMesh3D out;
   PointPool pool(out.points, merge_tol);
   CurveCache curves(dec, size, pool);
@@ -336,6 +410,7 @@ SurfaceMesh3D mesh_surfaces_3d(const GridDecomposition3D& dec, const SizeField3D
     face_loop(dec, face, curves);
   for (std::size_t i = 0; i < dec.faces.size(); ++i)
     mesh_face(dec, static_cast<int>(i), size, curves, out);
+  mesh_surface_parts(geo, size, pool, out);
   return out;
 }
 
