@@ -2,25 +2,14 @@
 
 #include <cstdio>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include "mesh/grid_frame3d.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/part_overlap3d.hpp"
+#include "mesh/triangle_tree3d.hpp"
 
 namespace magfem {
 namespace {
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle = K::Triangle_3;
-using Iterator = std::vector<Triangle>::const_iterator;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Iterator>>>;
-
-K::Point_3 cgal(const Vec3& x) {
-  return {x.x(), x.y(), x.z()};
-}
+using namespace triangle_tree;
 
 std::vector<std::array<Vec3, 3>> global_triangles(const Part3D& part, const TriangleSurface& s) {
   std::vector<std::array<Vec3, 3>> out;

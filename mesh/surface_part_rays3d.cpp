@@ -3,29 +3,17 @@
 #include <cmath>
 #include <limits>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include "mesh/grid_frame3d.hpp"
+#include "mesh/triangle_tree3d.hpp"
 
 namespace magfem {
 namespace {
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle = K::Triangle_3;
-using Iterator = std::vector<Triangle>::const_iterator;
-using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Iterator>>>;
+using namespace triangle_tree;
+using AabbTree = triangle_tree::Tree;
 
 // As in FaceSoup3D: hits at |cos(incidence)| below this run along a face.
 constexpr double grazing_cos = 0.2;
 
-K::Point_3 cgal(const Vec3& x) {
-  return {x.x(), x.y(), x.z()};
-}
-Vec3 vec(const K::Point_3& p) {
-  return {p.x(), p.y(), p.z()};
-}
 } // namespace
 
 struct SurfacePartRays3D::Tree {
