@@ -4,8 +4,6 @@ namespace magfem {
 
 void read_adapt(const YamlNode& node, CaseSpec& c) {
   node.allow_keys({"accuracy_pct", "quantities", "max_passes", "max_unknowns"});
-  if (c.dimension == 3)
-    node.fail("adapt applies to 2D and axisymmetric cases only for now (no 3D error estimator)");
   AdaptSpec& a = c.adapt;
   a.line = node.line();
   const YamlNode acc = node.at("accuracy_pct");

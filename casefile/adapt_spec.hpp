@@ -1,7 +1,7 @@
 #pragma once
 // What an adaptive solve aims at (`adapt:` in a case file, or `solve --accuracy`): refine the
 // mesh pass by pass until the estimated energy error and the change of the named quantities
-// are below accuracy_pct. 2D planar and axisymmetric cases only, for now.
+// are below accuracy_pct. 2D planar, axisymmetric and 3D cases.
 #include <optional>
 #include <string>
 #include <vector>

@@ -20,8 +20,37 @@ namespace magfem {
 namespace {
 
 // Outer boundary, common to both dimensions: a circle (2D) or sphere (3D) about the origin.
+// `symmetry: [{plane: z, field: normal}, ...]` (mesh/symmetry_plane3d.hpp).
+void read_symmetry(const YamlNode& list, CaseSpec& c) {
+  if (c.dimension != 3)
+    list.fail("symmetry planes are implemented for 3D cases only (dimension: 3)");
+  if (!list.is_sequence())
+    list.fail("expected a list of planes, e.g. [{plane: z, field: normal}]");
+  for (const YamlNode& item : list.items()) {
+    item.allow_keys({"plane", "field"});
+    const std::string plane = item.at("plane").as_string();
+    const std::string field = item.at("field").as_string();
+    SymmetryPlane3D p;
+    if (plane != "x" && plane != "y" && plane != "z")
+      item.at("plane").fail("unknown symmetry plane '" + plane +
+                            "' (x, y or z: the plane where that coordinate is 0)");
+    p.axis = plane[0] - 'x';
+    if (field != "normal" && field != "parallel")
+      item.at("field").fail("unknown field condition '" + field +
+                            "' (normal: n x H = 0, field lines cross the plane; parallel: "
+                            "B . n = 0, field lines run along it)");
+    p.field = field == "normal" ? SymmetryField::normal : SymmetryField::parallel;
+    for (const SymmetryPlane3D& q : c.geometry3d.symmetry)
+      if (q.axis == p.axis)
+        item.at("plane").fail("plane " + plane + " is listed twice");
+    c.geometry3d.symmetry.push_back(p);
+  }
+}
+
 void read_boundary(const YamlNode& b, double s, CaseSpec& c) {
-  b.allow_keys({"type", "radius", "shell_ratio"});
+  b.allow_keys({"type", "radius", "shell_ratio", "symmetry"});
+  if (const auto sym = b.find("symmetry"))
+    read_symmetry(*sym, c);
   c.boundary_line = b.line();
   const std::string type = b.at("type").as_string();
   const double radius = b.at("radius").as_positive() * s;
@@ -313,14 +342,16 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
   // Parameters first: every field below then reads plain numbers (the unit cannot be one).
   c.parameters =
       apply_parameters(root, overrides, root.has("unit") ? unit_scale(root.at("unit")) : 1e-3);
-  if (root.has("dimension") && root.at("dimension").as_string() == "axi") {
+  // Read as text: 'axisymmetric' or '2d' should hear the three choices, not "expected a number".
+  const std::string dim = root.has("dimension") ? root.at("dimension").as_string() : "2";
+  if (dim == "axi") {
     c.dimension = 2;
     c.geometry2d.symmetry = Symmetry2D::axisymmetric;
+  } else if (dim == "2" || dim == "3") {
+    c.dimension = dim == "2" ? 2 : 3;
   } else {
-    c.dimension = root.get_int("dimension", 2);
+    root.at("dimension").fail("dimension must be 2 | 3 | axi (got '" + dim + "')");
   }
-  if (c.dimension != 2 && c.dimension != 3)
-    root.at("dimension").fail("dimension must be 2, 3 or axi");
   const bool axi = c.axisymmetric();
   if (root.has("unit")) {
     c.unit_name = root.at("unit").as_string();

@@ -44,7 +44,7 @@ struct CaseSpec {
   NewtonOptions newton;
   std::vector<ProbeSpec> probes;
   std::vector<ForceSpec> forces;
-  std::vector<SectionSpec> sections; // 3D: flux through plane sections (sections.csv)
+  std::vector<SectionSpec> sections; // flux through plane (3D) or line (2D) sections
   bool write_vtu = true;
   bool write_revolved_vtu = false; // axisymmetric: also solution_revolved.vtu (3D)
   double stack_length = 0;         // metres; 0 = report per unit length

@@ -15,9 +15,9 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 
 // Shape keys allowed per primitive, besides the common region keys.
-const std::vector<std::string> region_common = {"name",          "material",        "shape",
-                                                "magnetization", "current_density", "turns",
-                                                "current",       "mesh_size",       "group"};
+const std::vector<std::string> region_common = {
+    "name",  "material", "shape",     "magnetization", "current_density",
+    "turns", "current",  "mesh_size", "group",         "overlap"};
 
 std::vector<std::string> with_common(std::initializer_list<const char*> extra) {
   std::vector<std::string> keys = region_common;
@@ -169,6 +169,13 @@ void read_region(const YamlNode& r, double s, const CaseSpec& c, const MaterialL
     to_half_plane(r, part.shape, s);
   if (r.has("mesh_size"))
     part.max_size = r.at("mesh_size").as_positive() * s;
+  if (r.has("overlap")) {
+    // The only value: a later region may take area from earlier ones only when it says so.
+    if (r.at("overlap").as_string() != "replace")
+      r.at("overlap").fail("overlap must be 'replace' (the region takes the area it shares "
+                           "with earlier regions); without it regions must not overlap");
+    part.replace_earlier = true;
+  }
   if (r.has("group")) // sweep --move (axisymmetric) or --rotate (planar)
     spec.group = r.at("group").as_string();
   read_region_material(r, c, lib, spec);

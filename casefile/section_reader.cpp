@@ -18,6 +18,26 @@ SectionSpec read_section(const YamlNode& n, const CaseSpec& c) {
     n.at("name").fail("section names are CSV fields: use letters, digits, '_', '-', '.'");
   const std::string type = n.at("type").as_string();
   const double s = c.length_unit;
+  if (c.dimension == 2) {
+    if (type != "line")
+      n.at("type").fail("unknown section type '" + type + "' for dimension 2 (line)");
+    n.allow_keys({"name", "type", "start", "end"});
+    spec.kind = SectionSpec::Kind::line;
+    spec.start = read_point2(n.at("start"), s);
+    spec.end = read_point2(n.at("end"), s);
+    if ((spec.end - spec.start).norm() == 0)
+      n.at("end").fail("a line section needs two different ends");
+    const double domain = c.geometry2d.outer.radius;
+    for (const char* key : {"start", "end"}) {
+      const Eigen::Vector2d p = std::string(key) == "start" ? spec.start : spec.end;
+      if (c.axisymmetric() && p.x() < 0)
+        n.at(key).fail("an axisymmetric section lies at r >= 0");
+      if (p.norm() >= domain)
+        n.at(key).fail("section '" + spec.name + "' leaves the domain (radius " +
+                       std::to_string(domain / s) + ")");
+    }
+    return spec;
+  }
   const double domain = c.geometry3d.outer.radius;
   double farthest = 0;
   if (type == "rectangle") {
@@ -35,7 +55,7 @@ SectionSpec read_section(const YamlNode& n, const CaseSpec& c) {
     spec.radius = n.at("radius").as_positive() * s;
     farthest = farthest_point_disk(spec.frame, spec.radius);
   } else {
-    n.at("type").fail("unknown section type '" + type + "' (rectangle, disk)");
+    n.at("type").fail("unknown section type '" + type + "' for dimension 3 (rectangle, disk)");
   }
   if (farthest >= domain)
     n.at(type == "disk" ? "radius" : "size")
@@ -48,8 +68,6 @@ SectionSpec read_section(const YamlNode& n, const CaseSpec& c) {
 } // namespace
 
 void read_sections(const YamlNode& list, CaseSpec& c) {
-  if (c.dimension != 3)
-    list.fail("sections apply to 3D cases only");
   std::set<std::string> names;
   for (const auto& n : list.items()) {
     c.sections.push_back(read_section(n, c));

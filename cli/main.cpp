@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -24,6 +25,7 @@
 #include "core/output_stage.hpp"
 #include "core/thread_count.hpp"
 #include "pipeline/adapt2d.hpp"
+#include "pipeline/adapt3d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/run2d.hpp"
@@ -53,8 +55,17 @@ void print_written(const std::string& out_dir, const std::vector<std::string>& f
   std::cout << "\n";
 }
 
+// One console line per adaptive pass, as it ends.
+std::function<void(const magfem::AdaptPass&)> print_pass(const char* element_word) {
+  return [element_word](const magfem::AdaptPass& p) {
+    std::cout << magfem::describe_adapt_pass(p, element_word) << std::flush;
+  };
+}
+
 int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
-  auto run = magfem::run_case_3d(std::move(spec), overrides);
+  auto run = spec.adapt.enabled()
+                 ? magfem::run_adaptive_3d(spec, overrides, print_pass("tetrahedra"))
+                 : magfem::run_case_3d(std::move(spec), overrides);
   if (!overrides.world.is_root()) { // rank 0 reports and writes, once
     magfem::idle_barrier();
     return 0;
@@ -68,11 +79,6 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
 
 // The command line's --accuracy / --max-passes / --max-unknowns over the case file's adapt:.
 void apply_adapt_options(const Args& args, magfem::CaseSpec& spec) {
-  if (spec.dimension == 3 && args.accuracy_pct)
-    throw magfem::InputError("<command line>", 0, "--accuracy",
-                             "adaptive refinement is for 2D and axisymmetric cases only for now "
-                             "(3D results report their estimated error; refine them with "
-                             "--mesh-scale)");
   if (args.accuracy_pct)
     spec.adapt.accuracy_pct = *args.accuracy_pct;
   if ((args.max_passes || args.max_unknowns) && !spec.adapt.enabled())
@@ -106,13 +112,9 @@ int run_solve(const Args& args) {
   }
   if (spec.dimension == 3)
     return run_solve_3d(args, std::move(spec), overrides);
-  auto run = spec.adapt.enabled() ? magfem::run_adaptive_2d(spec, overrides,
-                                                            [](const magfem::AdaptPass2D& p) {
-                                                              std::cout
-                                                                  << magfem::describe_adapt_pass(p)
-                                                                  << std::flush;
-                                                            })
-                                  : magfem::run_case_2d(std::move(spec), overrides);
+  auto run = spec.adapt.enabled()
+                 ? magfem::run_adaptive_2d(spec, overrides, print_pass("triangles"))
+                 : magfem::run_case_2d(std::move(spec), overrides);
   std::cout << magfem::describe_run_2d(*run);
   print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
   return 0;
@@ -143,6 +145,14 @@ void report_restored(const magfem::RunCheckpoint& checkpoint) {
   if (checkpoint.n_restored())
     std::fprintf(stderr, "magfem: --resume: %zu finished positions from the checkpoint\n",
                  checkpoint.n_restored());
+}
+
+// The summed time of a sweep's positions (restored ones with their original time).
+template <class Row> double position_time(const std::vector<Row>& rows) {
+  double total_s = 0;
+  for (const auto& r : rows)
+    total_s += r.seconds;
+  return total_s;
 }
 
 // Under mpirun a sweep's positions are dealt to the processes (studies/position_runner.hpp).
@@ -186,11 +196,15 @@ sweep_checkpoint(const magfem::MpiWorld& world, const Args& args, const std::str
 int run_sweep_axi(const Args& args) {
   using magfem::InputError;
   const std::string cli = "<command line>";
+  const auto spec = magfem::read_case(args.case_file);
+  if (!spec.axisymmetric())
+    throw InputError(cli, 0, "--move",
+                     "a planar 2D sweep turns a group (--rotate); translations are for "
+                     "axisymmetric and 3D cases");
   if (args.axis != "z")
     throw InputError(cli, 0, "--axis", "an axisymmetric group moves along z: give --axis z");
   if (args.positions.empty())
     throw InputError(cli, 0, "--positions", "give the positions (mm)");
-  const auto spec = magfem::read_case(args.case_file);
   magfem::AxiSweepOptions o;
   o.group = args.move;
   for (const double p : magfem::parse_angle_list(args.positions, "--positions"))
@@ -213,24 +227,10 @@ int run_sweep_axi(const Args& args) {
 
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_axi_csv(rows));
-  nlohmann::ordered_json j;
-  j["case"] = spec.file;
-  j["method"] = "lorentz";
-  j["group"] = o.group;
-  int failed = 0;
-  double total_s = 0;
-  for (const auto& r : rows) {
-    nlohmann::ordered_json p = {{"position_mm", 1e3 * r.position_m},
-                                {"ok", r.ok},
-                                {"seconds", r.seconds},
-                                {"unknowns", r.unknowns}};
-    if (!r.ok)
-      p["error"] = r.error, ++failed;
-    total_s += r.seconds;
-    j["positions"].push_back(p);
-  }
-  j["failed_positions"] = failed;
+  nlohmann::ordered_json j = magfem::sweep_axi_summary(spec, rows, o);
   j["peak_memory_MB"] = magfem::peak_memory_mb();
+  const int failed = j["failed_positions"].get<int>();
+  const double total_s = position_time(rows);
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
   checkpoint->remove();
@@ -251,20 +251,32 @@ int run_sweep_axi(const Args& args) {
 int run_sweep(const Args& args) {
   using magfem::InputError;
   const std::string cli = "<command line>";
-  if (!args.move.empty())
-    return run_sweep_axi(args);
-  if (args.rotate.empty())
-    throw InputError(cli, 0, "--rotate", "name the group to rotate");
+  if (!args.move.empty() && !args.rotate.empty())
+    throw InputError(cli, 0, "--move", "give --rotate GROUP or --move GROUP, not both");
+  const bool translate = !args.move.empty();
+  if (translate && magfem::read_case(args.case_file).dimension == 2)
+    return run_sweep_axi(args); // planar cases are refused there, naming --move
+  if (!translate && args.rotate.empty())
+    throw InputError(cli, 0, "--rotate", "name the group to rotate (or --move GROUP)");
   if (args.axis.empty())
-    throw InputError(cli, 0, "--axis", "give the rotation axis");
-  if (args.angles.empty())
+    throw InputError(cli, 0, "--axis", translate ? "give the direction" : "give the rotation axis");
+  if (translate && !args.angles.empty())
+    throw InputError(cli, 0, "--angles", "--move takes --positions (mm)");
+  if (translate && args.positions.empty())
+    throw InputError(cli, 0, "--positions", "give the positions (mm)");
+  if (!translate && args.angles.empty())
     throw InputError(cli, 0, "--angles", "give the angles");
   const auto spec = magfem::read_case(args.case_file);
   const double s = spec.length_unit;
   magfem::SweepOptions o;
-  o.group = args.rotate;
+  o.group = translate ? args.move : args.rotate;
+  o.motion = translate ? magfem::SweepMotion::translate : magfem::SweepMotion::rotate;
   o.axis = magfem::parse_axis(args.axis);
-  o.angles_deg = magfem::parse_angle_list(args.angles);
+  if (translate)
+    for (const double p : magfem::parse_angle_list(args.positions, "--positions"))
+      o.offsets_m.push_back(1e-3 * p);
+  else
+    o.angles_deg = magfem::parse_angle_list(args.angles);
   if (!args.point.empty())
     o.point = s * magfem::parse_vector3("--point", args.point);
   if (!args.surface_radius.empty())
@@ -278,7 +290,7 @@ int run_sweep(const Args& args) {
   o.world = sweep_world(args);
   const auto checkpoint = sweep_checkpoint(
       o.world, args,
-      magfem::checkpoint_identity("sweep --rotate", args.case_file,
+      magfem::checkpoint_identity(translate ? "sweep --move" : "sweep --rotate", args.case_file,
                                   o.group + " axis " + args.axis + " point " + args.point +
                                       " surface-radius " + args.surface_radius +
                                       (o.analytic ? " analytic" : " fe") + " order " +
@@ -295,48 +307,26 @@ int run_sweep(const Args& args) {
   if (!o.world.is_root()) // rank 0 has the rows, and writes and reports them
     return magfem::code_of_root(0);
   magfem::OutputStage stage(args.out_dir);
-  stage.write_text("sweep.csv", magfem::sweep_csv(rows));
+  stage.write_text("sweep.csv", magfem::sweep_csv(rows, o.motion));
   std::string why;
   const bool plotted = magfem::plot_sweep(rows, spec.file + (o.analytic ? " (analytic)" : " (FE)"),
-                                          stage.path_for("sweep.png"), why);
+                                          stage.path_for("sweep.png"), why, o.motion);
   if (!plotted)
     std::cerr << "magfem: note: no sweep.png: " << why << "\n";
   nlohmann::ordered_json j;
   magfem::add_provenance(j);
-  j["case"] = spec.file;
-  j["method"] = magfem::sweep_method(rows, o);
-  j["group"] = o.group;
-  j["axis"] = {o.axis.x(), o.axis.y(), o.axis.z()};
-  int failed = 0;
-  double total_s = 0;
-  for (const auto& r : rows) {
-    nlohmann::ordered_json p = {{"angle_deg", r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
-    if (r.unknowns)
-      p["unknowns"] = r.unknowns;
-    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
-      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
-      p["force_bound_N"] = r.force_bound;
-    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
-      p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
-    if (!r.ok)
-      p["error"] = r.error, ++failed;
-    total_s += r.seconds;
-    j["positions"].push_back(p);
-  }
-  j["failed_positions"] = failed;
-  j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
-  // The memory estimate when this process's positions shared the limit (as a serial run
-  // records it; under mpirun with one position at a time per process the file stays the
-  // serial --jobs 1 one).
-  if (jobs.position_memory_mb > 0 && jobs.requested > 1)
-    j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
-    j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
+  auto summary = magfem::sweep_summary(spec.file, rows, o, jobs);
+  for (auto& [key, value] : summary.items())
+    j[key] = std::move(value);
+  const int failed = j["failed_positions"].get<int>();
+  const double total_s = position_time(rows);
   j["peak_memory_MB"] = magfem::peak_memory_mb();
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
   checkpoint->remove();
 
-  std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", "angle_deg", "Tx_Nm", "Ty_Nm", "Tz_Nm",
+  const std::string key = magfem::sweep_position_key(o.motion);
+  std::printf("%10s %12s %12s %12s %12s %12s %12s %9s\n", key.c_str(), "Tx_Nm", "Ty_Nm", "Tz_Nm",
               "Fx_N", "Fy_N", "Fz_N", "time_s");
   for (const auto& r : rows)
     if (r.ok)

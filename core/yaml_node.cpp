@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/did_you_mean.hpp"
+
 namespace magfem {
 
 YamlNode::YamlNode(YAML::Node node, std::shared_ptr<const std::string> file, std::string path)
@@ -98,7 +100,8 @@ void YamlNode::allow_keys(const std::vector<std::string>& allowed) const {
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
       const int key_line = kv.first.Mark().line + 1;
       throw InputError(*file_, key_line, child_path(key),
-                       "unknown field (allowed here: " + list + ")");
+                       "unknown field" + did_you_mean(key, allowed) + " (allowed here: " + list +
+                           ")");
     }
   }
 }

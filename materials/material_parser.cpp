@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "core/did_you_mean.hpp"
 #include "materials/bh_table_file.hpp"
 
 namespace magfem {
@@ -182,8 +183,11 @@ const Material& resolve_material(const std::string& name,
   std::vector<std::string> case_names;
   for (const auto& kv : case_materials)
     case_names.push_back(kv.first);
-  where.fail("unknown material '" + name + "' (case materials: " + comma_list(case_names) +
-             "; library: " + comma_list(library.names()) + ")");
+  std::vector<std::string> all = case_names;
+  for (const auto& n : library.names())
+    all.push_back(n);
+  where.fail("unknown material '" + name + "'" + did_you_mean(name, all) + " (case materials: " +
+             comma_list(case_names) + "; library: " + comma_list(library.names()) + ")");
 }
 
 } // namespace magfem

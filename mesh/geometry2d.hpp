@@ -1,7 +1,8 @@
 #pragma once
 // 2D planar geometry as the mesher sees it: parts built from primitives, in SI metres and
-// radians (the case reader converts units once). Later parts take precedence over earlier
-// ones where they overlap; whatever is not covered by a part is background air.
+// radians (the case reader converts units once). Parts may overlap earlier ones only when
+// they say so (replace_earlier); where they do, the later part wins. Whatever is not covered
+// by a part is background air.
 #include <string>
 #include <variant>
 #include <vector>
@@ -43,6 +44,9 @@ struct Part2D {
   std::string name;
   Shape2D shape;
   double max_size = 0; // metres; 0 = use MeshOptions2D::default_size
+  // May cover earlier parts (which lose that area); otherwise sharing area with an earlier
+  // part is a MeshError (see region_overlap2d.hpp).
+  bool replace_earlier = false;
 };
 
 enum class OuterKind { open, dirichlet, neumann };

@@ -10,6 +10,7 @@
 
 #include "mesh/coil3d.hpp"
 #include "mesh/placement3d.hpp"
+#include "mesh/symmetry_plane3d.hpp"
 
 namespace magfem {
 
@@ -71,6 +72,12 @@ struct OuterBoundary3D {
   double shell_ratio = 1.5;
 };
 
+// A target element size (m) at a point: adaptive refinement (pipeline/adapt3d.hpp).
+struct SizeSample3D {
+  Vec3 x = Vec3::Zero();
+  double h = 0;
+};
+
 struct MeshOptions3D {
   double default_size = 0;        // metres, background air
   double chord_tolerance = 0;     // metres: max distance between a curved surface and its facets
@@ -82,6 +89,10 @@ struct MeshOptions3D {
   // The solver will curve the elements onto spheres (order 2): a size_scale > 1 may then
   // coarsen the chord limit of spheres too (their facets are not the geometry).
   bool spheres_curved = false;
+  // Adaptive refinement: size sources added to the field the mesher builds (graded like its
+  // own, combined by the minimum, so the case's sizes, chord and gap rules stay upper bounds;
+  // not multiplied by size_scale). Shared by the copies of a case; null = none.
+  std::shared_ptr<const std::vector<SizeSample3D>> refine_sizes;
 };
 
 struct Geometry3D {
@@ -89,6 +100,9 @@ struct Geometry3D {
   std::vector<Coil3D> coils; // not meshed: they enter through their source field
   OuterBoundary3D outer;
   MeshOptions3D options;
+  // Symmetry planes (mesh/symmetry_plane3d.hpp): only the side where each plane's coordinate
+  // is >= 0 is meshed; the cut on the plane is a boundary of the mesh.
+  std::vector<SymmetryPlane3D> symmetry;
 };
 
 } // namespace magfem

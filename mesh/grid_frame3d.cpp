@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
+#include "mesh/face_chart3d.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/surface_index3d.hpp"
 
@@ -239,8 +241,10 @@ GridRanges ranges_in_frame(const Part3D& part, const Vec3& off) {
   return g;
 }
 
+using ExtraBreaks = std::array<std::vector<double>, 3>;
+
 void set_breaks(GridFrame3D& f, const std::vector<GridRanges>& rs, double len_tol,
-                const std::vector<double>& extra_r) {
+                const ExtraBreaks& extra) {
   for (int a = 0; a < 3; ++a) {
     std::vector<double> b;
     const bool angular =
@@ -249,8 +253,7 @@ void set_breaks(GridFrame3D& f, const std::vector<GridRanges>& rs, double len_to
       b.assign(quarter_turns.begin(), quarter_turns.end());
     if (f.kind == GridKind3D::spherical && a == 1)
       b = {0, std::numbers::pi / 2, std::numbers::pi};
-    if (a == 0)
-      b.insert(b.end(), extra_r.begin(), extra_r.end());
+    b.insert(b.end(), extra[a].begin(), extra[a].end());
     for (const GridRanges& r : rs) {
       if (r.full[a])
         continue;
@@ -345,6 +348,93 @@ void validate_outer(const Geometry3D& geo) {
     throw MeshError("", "radius", "outer boundary radius must be > 0");
   if (geo.outer.kind == OuterKind3D::open && !(geo.outer.shell_ratio > 1))
     throw MeshError("", "shell_ratio", "open boundary needs shell_ratio > 1");
+}
+
+// Breakpoints that make a symmetry plane a coordinate surface of the frame, so that every
+// cell lies on one side of it (false when the frame's grid cannot follow the plane: a box or
+// cylinder tilted against it, a sphere centred off it). Plane: n . (R q + t) = 0, i.e.
+// n_l . q = -d with n_l = R^T n, d = n . t, in the frame's local coordinates q.
+bool add_plane_breaks(const GridFrame3D& f, const SymmetryPlane3D& plane, double len_tol,
+                      ExtraBreaks& extra) {
+  constexpr double aligned = 1e-9;
+  const Vec3 n = Vec3::Unit(plane.axis);
+  const Vec3 nl = f.placement.rotation.transpose() * n;
+  const double d = n.dot(f.placement.translation);
+  // Angle of the plane's trace about the local z axis (the plane contains that axis).
+  auto trace_breaks = [&](int axis) {
+    const double a0 = std::atan2(nl.y(), nl.x()) + std::numbers::pi / 2;
+    extra[axis].push_back(wrap_angle(a0));
+    extra[axis].push_back(wrap_angle(a0 + std::numbers::pi));
+  };
+  switch (f.kind) {
+  case GridKind3D::cartesian:
+    for (int a = 0; a < 3; ++a)
+      if (std::abs(nl[a]) > 1 - aligned) {
+        extra[a].push_back(-d / nl[a]);
+        return true;
+      }
+    return false;
+  case GridKind3D::cylindrical:
+    if (std::abs(nl.z()) > 1 - aligned) {
+      extra[2].push_back(-d / nl.z());
+      return true;
+    }
+    if (std::abs(nl.z()) < aligned && std::abs(d) <= len_tol) {
+      trace_breaks(1);
+      return true;
+    }
+    return false;
+  case GridKind3D::spherical:
+    if (std::abs(d) > len_tol)
+      return false;
+    if (std::abs(nl.z()) > 1 - aligned)
+      return true; // theta = pi / 2 is always a breakpoint
+    if (std::abs(nl.z()) < aligned) {
+      trace_breaks(2);
+      return true;
+    }
+    return false;
+  }
+  return false;
+}
+
+// Keeps the faces on the model's side of every symmetry plane: faces beyond a plane, and
+// faces lying on it (the mesher covers the plane with its own facets), are dropped. A face
+// crossing a plane belongs to a part whose frame could not follow it (add_plane_breaks).
+void clip_faces(const Geometry3D& geo, GridDecomposition3D& dec, double tol) {
+  if (geo.symmetry.empty())
+    return;
+  std::vector<GridFace3D> kept;
+  for (const GridFace3D& face : dec.faces) {
+    const GridFrame3D& fr = dec.frames[face.frame];
+    const FaceSamples3D corners = sample_face(fr, face, std::numeric_limits<double>::max());
+    double extent = 0;
+    for (const Vec3& a : corners.points)
+      for (const Vec3& b : corners.points)
+        extent = std::max(extent, (a - b).norm());
+    const FaceSamples3D s = sample_face(fr, face, std::max(extent / 8, tol));
+    bool beyond = false, on_plane = false;
+    for (const SymmetryPlane3D& p : geo.symmetry) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const Vec3& x : s.points) {
+        lo = std::min(lo, x[p.axis]);
+        hi = std::max(hi, x[p.axis]);
+      }
+      if (lo < -tol && hi > tol) {
+        const int part = face.label_low >= 0 ? face.label_low : face.label_high;
+        throw MeshError(part >= 0 ? geo.parts[part].name : "", "",
+                        std::string("is cut by the symmetry plane ") + axis_name(p.axis) +
+                            " = 0 but its axes are not aligned with it (a box or cylinder "
+                            "must have an axis along the plane's normal or, for a cylinder, "
+                            "in the plane; a sphere must be centred on it)");
+      }
+      beyond = beyond || lo < -tol;
+      on_plane = on_plane || (lo >= -tol && hi <= tol);
+    }
+    if (!beyond && !on_plane)
+      kept.push_back(face);
+  }
+  dec.faces = std::move(kept);
 }
 
 } // namespace
@@ -446,18 +536,26 @@ GridDecomposition3D decompose_geometry_3d(const Geometry3D& geo) {
   }
 
   const double r1 = geo.outer.radius;
-  std::vector<double> outer_r{r1};
-  if (geo.outer.kind == OuterKind3D::open)
-    outer_r.push_back(geo.outer.shell_ratio * r1);
   for (std::size_t f = 0; f < dec.frames.size(); ++f) {
     GridFrame3D& fr = dec.frames[f];
     validate_radial_gaps(geo, fr, ranges[f], len_tol);
-    set_breaks(fr, ranges[f], len_tol, f == 0 ? outer_r : std::vector<double>{});
+    ExtraBreaks extra;
+    if (f == 0) {
+      extra[0].push_back(r1);
+      if (geo.outer.kind == OuterKind3D::open)
+        extra[0].push_back(geo.outer.shell_ratio * r1);
+    }
+    // A frame that cannot follow a plane is fine as long as its parts keep off the plane
+    // (clip_faces checks).
+    for (const SymmetryPlane3D& p : geo.symmetry)
+      add_plane_breaks(fr, p, len_tol, extra);
+    set_breaks(fr, ranges[f], len_tol, extra);
     label_cells(fr, geo, ranges[f]);
     if (f == 0)
       label_outer(fr, geo);
     collect_faces(fr, static_cast<int>(f), dec.faces);
   }
+  clip_faces(geo, dec, 1e-7 * domain_length(geo));
   return dec;
 }
 

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "mesh/symmetry_plane3d.hpp"
+
 namespace magfem {
 
 inline constexpr int region_background_3d = -1; // air not covered by any part
@@ -25,6 +27,10 @@ struct Mesh3D {
   std::vector<std::array<int, 3>> outer_faces; // faces on the outermost sphere, normal outward
   double shell_inner_radius = 0;               // set when the boundary is open
   double shell_outer_radius = 0;
+  // Symmetry planes the mesh was cut at (Geometry3D::symmetry) and, per plane, the boundary
+  // faces lying on it (the solver's n x H = 0 constraint of a `normal` plane sits there).
+  std::vector<SymmetryPlane3D> symmetry;
+  std::vector<std::vector<std::array<int, 3>>> symmetry_faces;
   MeshQuality3D quality;
   std::vector<double> part_volumes; // per Geometry3D part, m^3 (sum of its tet volumes)
   // What the mesher could not honour but did not refuse (e.g. an air gap with fewer than one

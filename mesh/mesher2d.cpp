@@ -27,6 +27,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_finish2d.hpp"
 #include "mesh/region_map2d.hpp"
+#include "mesh/region_overlap2d.hpp"
 #include "mesh/size_field2d.hpp"
 
 namespace magfem {
@@ -374,6 +375,7 @@ Mesh2D build_mesh_2d(const Geometry2D& g, const SizeField2D* refine_sizes) {
                            : o.default_size;
     return own * o.size_scale;
   });
+  check_region_overlaps2d(g, coarse); // before any triangle is made
   const SizeField2D field = build_size_field(g, coarse);
   // Pass 2 re-cuts them to the graded field, which sees both sides of every boundary.
   const RegionMap2D map(

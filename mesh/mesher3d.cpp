@@ -349,7 +349,9 @@ void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
   std::vector<bool> seen(dec.faces.size(), false);
   for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
     const int f = surf.triangle_face[t];
-    if (f < 0 || seen[f])
+    if (f < 0)
+      continue; // symmetry planes bound the domain; surface parts are seeded by the part
+    if (seen[f])
       continue;
     seen[f] = true;
     const GridFace3D& face = dec.faces[f];
@@ -405,7 +407,7 @@ void fill_plc(const SurfaceMesh3D& surf, tetgenio& in) {
     f.polygonlist[0].vertexlist = new int[3];
     for (int k = 0; k < 3; ++k)
       f.polygonlist[0].vertexlist[k] = surf.triangles[t][k];
-    in.facetmarkerlist[t] = surf.triangle_face[t] + 1;
+    in.facetmarkerlist[t] = surf.triangle_face[t] + 1; // symmetry planes and surface parts: <= 0
   }
 }
 
@@ -469,7 +471,13 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
   for (std::size_t i = 0; i < surf.points.size(); ++i)
     if ((m.nodes[i] - surf.points[i]).norm() > 1e-12 * geo.outer.radius)
       throw MeshError("", "", "internal: TetGen renumbered the surface points");
+  m.symmetry = geo.symmetry;
+  m.symmetry_faces.resize(geo.symmetry.size());
   for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
+    if (is_symmetry_face(surf.triangle_face[t])) {
+      m.symmetry_faces[symmetry_plane_of(surf.triangle_face[t])].push_back(surf.triangles[t]);
+      continue;
+    }
     if (surf.triangle_face[t] < 0)
       continue; // a surface part's: inside the domain
     const GridFace3D& face = dec.faces[surf.triangle_face[t]];
@@ -589,7 +597,12 @@ MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
     return std::min(field(x), region);
   };
   const double ball = geo.outer.radius * (open ? geo.outer.shell_ratio : 1.0);
-  return estimate_mesh_3d(size, ball);
+  // The size field of a symmetric model is symmetric: its share is the ball's over the factor.
+  MeshEstimate3D e = estimate_mesh_3d(size, ball);
+  const double factor = symmetry_factor(geo.symmetry);
+  e.tetrahedra /= factor;
+  e.nodes /= factor;
+  return e;
 }
 
 SizeField3D build_size_field(const GridDecomposition3D& dec, const SizeRules& rules,
@@ -602,6 +615,9 @@ SizeField3D build_size_field(const GridDecomposition3D& dec, const SizeRules& ru
   if (rules.geo.options.probe_size > 0)
     for (const ProbeSurface& p : refine)
       field.add_probe(p, rules.scale * rules.geo.options.probe_size);
+  if (const auto& adaptive = rules.geo.options.refine_sizes)
+    for (const SizeSample3D& s : *adaptive)
+      field.add_source(s.x, s.h);
   field.build();
   return field;
 }
@@ -637,8 +653,10 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
     check(estimate_mesh_size(geo, rules, field),
           [&](double factor) { return estimate_scaled(geo, refine, factor).tetrahedra; });
 
-  const SurfaceMesh3D surf =
-      mesh_surfaces_3d(geo, dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio);
+  const double outer =
+      geo.outer.radius * (geo.outer.kind == OuterKind3D::open ? geo.outer.shell_ratio : 1.0);
+  const SurfaceMesh3D surf = mesh_surfaces_3d(
+      geo, dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio, geo.symmetry, outer);
   tetgenio in, out;
   fill_plc(surf, in);
   add_region_seeds(dec, surf, rules, in);

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
+#include <set>
 #include <unordered_map>
+#include <utility>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_criteria_2.h>
@@ -216,10 +219,13 @@ std::vector<int> face_loop(const GridDecomposition3D& dec, const GridFace3D& fac
   return loop;
 }
 
+// Chart coordinates -> the 3D point on the surface.
+using ToSurface = std::function<Vec3(const Eigen::Vector2d&)>;
+
 // Delaunay refinement criteria: a triangle is too big when its longest edge, measured on the
 // surface (chords in 3D), exceeds h at its centroid; shape is judged in the chart, which is
 // conformal or isometric.
-template <class Chart> class SurfaceCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
+class SurfaceCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
 public:
   using Base = CGAL::Delaunay_mesh_criteria_2<Cdt>;
   struct Quality : std::pair<double, double> {
@@ -236,7 +242,7 @@ public:
   };
   class Is_bad : public Base::Is_bad {
   public:
-    Is_bad(const Chart& chart, const SizeField3D& size)
+    Is_bad(const ToSurface& chart, const SizeField3D& size)
         : Base::Is_bad(shape_bound, K()), chart_(&chart), size_(&size) {}
     CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
       if (q.size() > 1)
@@ -249,7 +255,7 @@ public:
       for (int i = 0; i < 3; ++i) {
         const Point2& pt = fh->vertex(i)->point();
         p[i] = {pt.x(), pt.y()};
-        x[i] = chart_->to_3d(p[i]);
+        x[i] = (*chart_)(p[i]);
       }
       double l3 = 0;
       for (int i = 0; i < 3; ++i)
@@ -271,28 +277,58 @@ public:
     }
 
   private:
-    const Chart* chart_;
+    const ToSurface* chart_;
     const SizeField3D* size_;
   };
 
-  SurfaceCriteria(const Chart& chart, const SizeField3D& size)
+  SurfaceCriteria(const ToSurface& chart, const SizeField3D& size)
       : Base(shape_bound), chart_(&chart), size_(&size) {}
   Is_bad is_bad_object() const { return Is_bad(*chart_, *size_); }
 
 private:
-  const Chart* chart_;
+  const ToSurface* chart_;
   const SizeField3D* size_;
 };
 
-template <class Chart>
-using Mesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SurfaceCriteria<Chart>>;
+using Mesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, SurfaceCriteria>;
+
+// Refines the constrained triangulation to the size field (constrained edges are never split:
+// they are shared with neighbouring faces) and appends its points and its triangles inside
+// the constraints (tagged `face_code`) to `out`. Returns the number of constrained edges.
+std::size_t refine_into(Cdt& cdt, const ToSurface& to_3d, const SizeField3D& size, int face_code,
+                        SurfaceMesh3D& out) {
+  Mesher mesher(cdt, SurfaceCriteria(to_3d, size));
+  // CGAL 5.5's Delaunay_mesher_no_edge_refinement_2 leaves its seeds_mark flag uninitialized
+  // and refine_mesh() reads it (UBSan: "load of value 174 ... for type 'bool'"); with no seeds
+  // it does not change the result, but the read is undefined. clear_seeds() sets it.
+  mesher.clear_seeds();
+  mesher.refine_mesh();
+  // Re-mark the domain: only faces inside the boundary loop are output.
+  Mesher::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (v->info().id < 0) {
+      v->info().id = static_cast<int>(out.points.size());
+      out.points.push_back(to_3d({v->point().x(), v->point().y()}));
+    }
+  std::size_t n_constrained = 0;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    n_constrained += cdt.is_constrained(*e);
+  for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+    if (!fh->is_in_domain())
+      continue;
+    out.triangles.push_back(
+        {fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id});
+    out.triangle_face.push_back(face_code);
+  }
+  return n_constrained;
+}
 
 // Triangulates the closed loop of surface points (ids into out.points) in its chart by 2D
 // Delaunay refinement without splitting the loop's segments; the triangles go to `out` with
-// `face_tag` as their triangle_face.
+// `face_code` as their triangle_face.
 template <class Chart>
 void mesh_loop(const Chart& chart, const std::vector<int>& loop, const SizeField3D& size,
-               int face_tag, SurfaceMesh3D& out) {
+               int face_code, SurfaceMesh3D& out) {
   if (loop.size() < 3)
     throw MeshError("", "", "internal: degenerate interface face");
   Cdt cdt;
@@ -306,31 +342,9 @@ void mesh_loop(const Chart& chart, const std::vector<int>& loop, const SizeField
     throw MeshError("", "", "internal: boundary points of a face coincide in its chart");
   for (std::size_t i = 0; i < vh.size(); ++i)
     cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
-  Mesher<Chart> mesher(cdt, SurfaceCriteria<Chart>(chart, size));
-  // CGAL 5.5's Delaunay_mesher_no_edge_refinement_2 leaves its seeds_mark flag uninitialized
-  // and refine_mesh() reads it (UBSan: "load of value 174 ... for type 'bool'"); with no seeds
-  // it does not change the result, but the read is undefined. clear_seeds() sets it.
-  mesher.clear_seeds();
-  mesher.refine_mesh();
-  // Re-mark the domain: only faces inside the boundary loop are output.
-  Mesher<Chart>::mark_facets(cdt, std::vector<Point2>().begin(), std::vector<Point2>().end());
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if (v->info().id < 0) {
-      v->info().id = static_cast<int>(out.points.size());
-      out.points.push_back(chart.to_3d({v->point().x(), v->point().y()}));
-    }
-  std::size_t n_constrained = 0;
-  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
-    n_constrained += cdt.is_constrained(*e);
-  if (n_constrained != loop.size())
+  const ToSurface to_3d = [&chart](const Eigen::Vector2d& uv) { return chart.to_3d(uv); };
+  if (refine_into(cdt, to_3d, size, face_code, out) != loop.size())
     throw MeshError("", "", "internal: a face boundary was split while meshing the face");
-  for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
-    if (!fh->is_in_domain())
-      continue;
-    out.triangles.push_back(
-        {fh->vertex(0)->info().id, fh->vertex(1)->info().id, fh->vertex(2)->info().id});
-    out.triangle_face.push_back(face_tag);
-  }
 }
 
 void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& size,
@@ -398,19 +412,117 @@ void mesh_surface_parts(const Geometry3D& geo, const SizeField3D& size, PointPoo
   }
 }
 
+using Edge = std::pair<int, int>; // point ids, lower first
+
+Edge edge_of(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// The line where planes p and q meet (the third axis c), within the ball and on the kept side
+// of a third plane normal to it: its points on kept faces, its ends, and points between them
+// at the local size. Its segments are constraints of both planes' facets.
+void add_plane_line(const std::vector<SymmetryPlane3D>& planes, std::size_t p, std::size_t q,
+                    double radius, double tol, const SizeField3D& size, PointPool& pool,
+                    std::vector<Vec3>& points, std::vector<std::set<Edge>>& edges) {
+  const int c = 3 - planes[p].axis - planes[q].axis;
+  double lo = -radius;
+  for (const SymmetryPlane3D& r : planes)
+    if (r.axis == c)
+      lo = 0;
+  const double hi = radius;
+  auto at = [c](double t) {
+    Vec3 x = Vec3::Zero();
+    x[c] = t;
+    return x;
+  };
+  pool.insert(at(lo));
+  pool.insert(at(hi));
+  std::vector<std::pair<double, int>> on_line;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (std::abs(points[i][planes[p].axis]) <= tol && std::abs(points[i][planes[q].axis]) <= tol)
+      on_line.emplace_back(points[i][c], static_cast<int>(i));
+  std::sort(on_line.begin(), on_line.end());
+  for (std::size_t k = 0; k + 1 < on_line.size(); ++k) {
+    const std::vector<int> ids =
+        divide_curve(at, on_line[k].first, on_line[k + 1].first, size, pool);
+    for (std::size_t i = 0; i + 1 < ids.size(); ++i)
+      for (std::size_t plane : {p, q})
+        edges[plane].insert(edge_of(ids[i], ids[i + 1]));
+  }
+}
+
+// Triangulates the plane's share: every surface point on it is a vertex, every edge in
+// `edges` a constraint (the loops of the kept faces that end on the plane close the share).
+void mesh_plane(const SymmetryPlane3D& plane, int index, const std::set<Edge>& edges,
+                const SizeField3D& size, SurfaceMesh3D& out) {
+  const int u = (plane.axis + 1) % 3, v = (plane.axis + 2) % 3;
+  Cdt cdt;
+  std::unordered_map<int, Cdt::Vertex_handle> vh;
+  for (std::size_t i = 0; i < out.points.size(); ++i)
+    if (out.points[i][plane.axis] == 0) { // snapped (mesh_surfaces_3d)
+      auto h = cdt.insert(Point2(out.points[i][u], out.points[i][v]));
+      h->info().id = static_cast<int>(i);
+      vh[static_cast<int>(i)] = h;
+    }
+  for (const Edge& e : edges)
+    cdt.insert_constraint(vh.at(e.first), vh.at(e.second));
+  const ToSurface to_3d = [&](const Eigen::Vector2d& uv) {
+    Vec3 x = Vec3::Zero();
+    x[u] = uv.x();
+    x[v] = uv.y();
+    return x;
+  };
+  if (refine_into(cdt, to_3d, size, symmetry_face_code(index), out) != edges.size())
+    throw MeshError("", "",
+                    std::string("internal: the curves on the symmetry plane ") +
+                        axis_name(plane.axis) + " = 0 cross each other");
+}
+
 } // namespace
 
 SurfaceMesh3D mesh_surfaces_3d(const Geometry3D& geo, const GridDecomposition3D& dec,
-                               const SizeField3D& size, double merge_tol) {
+                               const SizeField3D& size, double merge_tol,
+                               const std::vector<SymmetryPlane3D>& planes, double outer_radius) {
   SurfaceMesh3D out;
   PointPool pool(out.points, merge_tol);
   CurveCache curves(dec, size, pool);
   // All curve points first (pooled), then face interiors (never shared).
-  for (const GridFace3D& face : dec.faces)
-    face_loop(dec, face, curves);
+  const double tol = merge_tol;
+  std::vector<std::set<Edge>> plane_edges(planes.size());
+  auto on_plane = [&](int id, const SymmetryPlane3D& p) {
+    return std::abs(out.points[id][p.axis]) <= tol;
+  };
+  for (const GridFace3D& face : dec.faces) {
+    const std::vector<int> loop = face_loop(dec, face, curves);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      for (std::size_t p = 0; p < planes.size(); ++p)
+        if (a != b && on_plane(a, planes[p]) && on_plane(b, planes[p]))
+          plane_edges[p].insert(edge_of(a, b));
+    }
+  }
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    for (std::size_t q = p + 1; q < planes.size(); ++q)
+      add_plane_line(planes, p, q, outer_radius, tol, size, pool, out.points, plane_edges);
+  // Points on a plane lie on it exactly: its facets are then coplanar for TetGen.
+  for (Vec3& x : out.points)
+    for (const SymmetryPlane3D& p : planes)
+      if (std::abs(x[p.axis]) <= tol)
+        x[p.axis] = 0;
   for (std::size_t i = 0; i < dec.faces.size(); ++i)
     mesh_face(dec, static_cast<int>(i), size, curves, out);
   mesh_surface_parts(geo, size, pool, out);
+  // A face triangle lying in a plane would double its facet (a face curved onto the plane).
+  for (std::size_t t = 0; t < out.triangles.size(); ++t)
+    for (const SymmetryPlane3D& p : planes)
+      if (out.points[out.triangles[t][0]][p.axis] == 0 &&
+          out.points[out.triangles[t][1]][p.axis] == 0 &&
+          out.points[out.triangles[t][2]][p.axis] == 0)
+        throw MeshError("", "",
+                        std::string("internal: a surface triangle lies in the symmetry plane ") +
+                            axis_name(p.axis) + " = 0");
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    mesh_plane(planes[p], static_cast<int>(p), plane_edges[p], size, out);
   return out;
 }
 

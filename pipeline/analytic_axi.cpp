@@ -6,14 +6,15 @@
 #include <stdexcept>
 #include <variant>
 
-#include "pipeline/run2d.hpp"
-#include "core/constants.hpp"
-#include "core/input_error.hpp"
-#include "mesh/region_map2d.hpp"
-#include "postproc/probe_rows2d.hpp"
 #include "analytic/azimuthal_current_wrench.hpp"
 #include "analytic/coaxial_coil_field.hpp"
 #include "analytic/coil_closed_forms.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+#include "mesh/region_map2d.hpp"
+#include "mesh/region_overlap2d.hpp"
+#include "pipeline/run2d.hpp"
+#include "postproc/probe_rows2d.hpp"
 
 namespace magfem {
 namespace {
@@ -41,14 +42,16 @@ const Rectangle& source_rectangle(const CaseSpec& spec, int i) {
   return *rect;
 }
 
-// Whether a later part covers some of a source rectangle (later parts win where they
-// overlap, so the meshed source would not be the whole rectangle the models assume).
+// Whether a later part covers some of a source rectangle (a part with `overlap: replace`
+// wins where it overlaps, so the meshed source would not be the whole rectangle the models
+// assume).
 void check_uncovered(const CaseSpec& spec, const std::vector<Source>& sources) {
   const auto& g = spec.geometry2d;
   const double chord = std::max(g.options.default_size, g.outer.radius / 20);
   std::unique_ptr<RegionMap2D> map;
   try {
     map = std::make_unique<RegionMap2D>(g, [chord](int, const Vec2&) { return chord; });
+    check_region_overlaps2d(g, *map); // as the FE would refuse them
   } catch (const MeshError& e) {
     throw_mesh_error_2d(spec, e);
   }

@@ -18,7 +18,8 @@ std::string magfem_git_commit();
 // Adds magfem_version and commit to a summary, so a result names the code that produced it.
 void add_provenance(nlohmann::ordered_json& summary);
 
-// <prefix>/share/magfem when this executable runs from <prefix>/bin and that directory
+// <prefix>/share/magfem when this executable runs from <prefix>/bin, or the Python module
+// lies a few folders under <prefix> (lib/python3/dist-packages/magfem), and that directory
 // exists (an installed magfem); nothing when it runs from a build tree.
 std::optional<std::filesystem::path> installed_data_dir();
 

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
-#include "pipeline/run3d.hpp"
 #include "core/input_error.hpp"
+#include "mesh/grid_frame3d.hpp"
+#include "pipeline/run3d.hpp"
 #include "postproc/coil_linkage3d.hpp"
 #include "postproc/lorentz3d.hpp"
 #include "postproc/point_locator3d.hpp"
@@ -125,24 +127,27 @@ Eigen::Vector3d CaseCoils::J(const Eigen::Vector3d& x) const {
   return j;
 }
 
-void check_coils_in_air(const Run3D& run) {
-  if (!run.coils)
-    return;
-  const PointLocator3D locator(run.mesh);
-  const auto& spec = run.spec;
-  for (int k = 0; k < run.coils->n_coils(); ++k) {
-    const std::string field = "coils." + run.coils->coil(k).name;
-    for (const auto& q : run.coils->field(k).volume_quadrature(4)) {
-      const auto loc = locator.locate(q.x);
-      if (!loc || run.problem.is_shell(loc->tet))
-        throw InputError(spec.file, spec.coil_lines[k], field, "the coil leaves the meshed domain");
-      const int part = run.mesh.tet_part[loc->tet];
-      // Air regions (mesh aids) may hold coils; magnets and iron may not.
-      const Material* m = part >= 0 ? spec.regions[part].material : nullptr;
-      if (m && (m->is_magnet() || m->is_nonlinear() || m->mu_r != 1.0))
+void check_coils_in_air(const CaseSpec& spec, const CaseCoils& coils) {
+  const Geometry3D& g = spec.geometry3d;
+  // Strict interiors: a coil wound tightly on a core (its r_inner on the core's surface) is
+  // in air.
+  const double tol = -1e-9 * g.outer.radius;
+  for (int k = 0; k < coils.n_coils(); ++k) {
+    const std::string field = "coils." + coils.coil(k).name;
+    for (const auto& q : coils.field(k).volume_quadrature(4)) {
+      if (q.x.norm() >= g.outer.radius)
         throw InputError(spec.file, spec.coil_lines[k], field,
-                         "the coil overlaps region '" + spec.regions[part].name +
-                             "'; coils must lie in air");
+                         "the coil leaves the meshed domain (boundary radius)");
+      for (std::size_t part = 0; part < g.parts.size(); ++part) {
+        // Air regions (mesh aids) may hold coils; magnets and iron may not.
+        const Material* m = spec.regions[part].material;
+        if (!(m->is_magnet() || m->is_nonlinear() || m->mu_r != 1.0))
+          continue;
+        if (part_contains(g.parts[part], q.x, tol))
+          throw InputError(spec.file, spec.coil_lines[k], field,
+                           "the coil overlaps region '" + spec.regions[part].name +
+                               "'; coils must lie in air");
+      }
     }
   }
 }
@@ -176,12 +181,14 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
     out.coils.push_back(r);
   }
   if (run.spec.coil_inductance) {
+    const auto t0 = std::chrono::steady_clock::now();
     const auto sens = current_sensitivities_3d(assembler, u, nc,
                                                sensitivity_solver_options(run.spec.newton.linear));
     std::vector<Eigen::VectorXd> full;
     for (const auto& s : sens)
       full.push_back(assembler.expand(s));
     out.inductance_H = inductance_matrix_3d(*run.field, full);
+    out.inductance_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   out.warnings = run.coil_source.warnings;
   return out;
@@ -212,15 +219,25 @@ std::vector<ForceResult> coil_lorentz_forces(const Run3D& run) {
 
 nlohmann::ordered_json coil_results_json(const CoilResults& results) {
   nlohmann::ordered_json coils = nlohmann::ordered_json::array();
-  for (const auto& c : results.coils)
-    coils.push_back({{"name", c.name},
-                     {"turns", c.turns},
-                     {"current_A", c.current_A},
-                     {"resistance_ohm", c.resistance_ohm},
-                     {"power_W", c.power_W},
-                     {"flux_linkage_Wb", c.flux_linkage_Wb},
-                     {"force_N", {c.force_N.x(), c.force_N.y(), c.force_N.z()}},
-                     {"torque_Nm", {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()}}});
+  const auto& l = results.inductance_H;
+  for (std::size_t k = 0; k < results.coils.size(); ++k) {
+    const CoilResult& c = results.coils[k];
+    const auto i = static_cast<Eigen::Index>(k);
+    // d lambda / dI (the matrix's diagonal, null when not computed) and lambda / I, which
+    // counts the magnets' and the other coils' flux (as 2D and the analytic models say).
+    coils.push_back(
+        {{"name", c.name},
+         {"turns", c.turns},
+         {"current_A", c.current_A},
+         {"resistance_ohm", c.resistance_ohm},
+         {"power_W", c.power_W},
+         {"flux_linkage_Wb", c.flux_linkage_Wb},
+         {"inductance_H", i < l.rows() ? nlohmann::ordered_json(l(i, i)) : nullptr},
+         {"linkage_per_ampere_H",
+          c.current_A != 0 ? nlohmann::ordered_json(c.flux_linkage_Wb / c.current_A) : nullptr},
+         {"force_N", {c.force_N.x(), c.force_N.y(), c.force_N.z()}},
+         {"torque_Nm", {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()}}});
+  }
   return coils;
 }
 
@@ -237,6 +254,7 @@ std::string describe_coils(const CoilResults& results) {
     s += buf;
   }
   if (results.inductance_H.size() > 0 && results.inductance_H.rows() <= 4) {
+    s += "L = dlambda/dI (H, differential; linkage / I, the apparent one, in summary.json):\n";
     for (Eigen::Index i = 0; i < results.inductance_H.rows(); ++i) {
       s += i == 0 ? "L (H)   " : "        ";
       for (Eigen::Index j = 0; j < results.inductance_H.cols(); ++j) {

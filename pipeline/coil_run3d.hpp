@@ -9,8 +9,9 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "pipeline/force_results.hpp"
+#include "casefile/case_spec.hpp"
 #include "mesh/coil3d.hpp"
+#include "pipeline/force_results.hpp"
 #include "solver/source_field3d.hpp"
 #include "solver/source_field_cache3d.hpp"
 #include "sources/coil_field_options.hpp"
@@ -62,11 +63,17 @@ struct CoilResult {
 struct CoilResults {
   std::vector<CoilResult> coils;
   Eigen::MatrixXd inductance_H; // empty if not computed
+  // Seconds for the inductance matrix: the tangent, its preconditioner set-up, the block solve
+  // of all coils' sensitivities and the integrals (part of the post-processing time).
+  double inductance_s = 0;
   std::vector<std::string> warnings;
 };
 
-// Exit-2 error (InputError naming the coil's line) if a coil overlaps a meshed part.
-void check_coils_in_air(const Run3D& run);
+// Exit-2 error (InputError naming the coil's line and the part) if a coil overlaps a magnet
+// or iron part or leaves the domain ball. From the geometry alone, before meshing: the coil's
+// volume quadrature points are tested against the exact parts, so a slip is reported in
+// milliseconds rather than after a mesh that can take minutes.
+void check_coils_in_air(const CaseSpec& spec, const CaseCoils& coils);
 // u: the converged free-DOF solution.
 CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
                                  const Eigen::VectorXd& u);

@@ -11,17 +11,20 @@
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesher2d.hpp"
-#include "pipeline/build_info.hpp"
 #include "pipeline/force2d.hpp"
-#include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
+#include "pipeline/result_tables.hpp"
+#include "pipeline/run_summary.hpp"
+#include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
+#include "pipeline/vtu_materials.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probes2d.hpp"
 #include "postproc/vtu_export2d.hpp"
 #include "postproc/vtu_export_revolved.hpp"
 #include "solver/assembler2d.hpp"
+#include "solver/current_sensitivity2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 
 namespace magfem {
@@ -71,18 +74,41 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
   return p;
 }
 
-std::vector<CoilResult2D> coil_results(const Run2D& run) {
+// The sensitivity solves of the differential inductance stop at 1e-9 relative residual when
+// they are iterative (as in 3D, coil_run3d.cpp); direct solves are exact whatever it is.
+LinearSolverOptions sensitivity_options(LinearSolverOptions options) {
+  options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
+  // Part of post-processing: its factorization is no stage of its own on the console (it
+  // reported "factorization" after "post-processing").
+  options.progress = nullptr;
+  return options;
+}
+
+// Axisymmetric coils: the linkage with the total field (lambda / I is the apparent
+// inductance, which counts the magnets' flux) and the differential inductance d lambda / dI,
+// the linkage of the field's response to the coil's current at the operating point.
+std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& assembler,
+                                       const Eigen::VectorXd& u) {
   std::vector<CoilResult2D> out;
   if (!run.spec.axisymmetric())
     return out;
+  const auto areas = part_areas(run.mesh, run.spec.regions.size());
+  std::vector<CurrentPerAmpere2D> per_ampere;
   for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
     const RegionSpec& r = run.spec.regions[i];
     if (r.turns == 0)
       continue;
-    CoilResult2D c{r.name, r.turns, r.current, 0, 0};
+    CoilResult2D c{r.name, r.turns, r.current};
     c.flux_linkage_Wb = flux_linkage_axi(*run.field, static_cast<int>(i), r.turns);
-    c.inductance_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
+    c.linkage_per_ampere_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
     out.push_back(c);
+    per_ampere.push_back({static_cast<int>(i), r.turns / areas[i]});
+  }
+  const auto du = current_sensitivities_2d(run.problem, *run.dofs, assembler, u, per_ampere,
+                                           sensitivity_options(run.spec.newton.linear));
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Field2D response(run.problem, *run.dofs, assembler.expand(du[k]));
+    out[k].inductance_H = flux_linkage_axi(response, per_ampere[k].part, out[k].turns);
   }
   return out;
 }
@@ -97,49 +123,19 @@ void add_error_indicator(VtuGrid& grid, const Run2D& run) {
   grid.cell_data.push_back(std::move(a));
 }
 
-nlohmann::ordered_json coils_json(const std::vector<CoilResult2D>& coils) {
+} // namespace
+
+nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils) {
   auto j = nlohmann::ordered_json::array();
   for (const auto& c : coils)
     j.push_back({{"name", c.name},
                  {"turns", c.turns},
                  {"current_A", c.current_A},
                  {"flux_linkage_Wb", c.flux_linkage_Wb},
-                 {"inductance_H", c.inductance_H}});
+                 {"inductance_H", c.inductance_H},
+                 {"linkage_per_ampere_H", c.linkage_per_ampere_H}});
   return j;
 }
-
-// NaN (not known on the first pass) as null.
-nlohmann::ordered_json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-nlohmann::ordered_json adapt_json(const AdaptHistory2D& h) {
-  nlohmann::ordered_json j;
-  j["accuracy_pct"] = h.accuracy_pct;
-  j["converged"] = h.converged;
-  if (!h.converged)
-    j["stop_reason"] = h.stop_reason;
-  j["passes"] = nlohmann::ordered_json::array();
-  for (const auto& p : h.passes) {
-    nlohmann::ordered_json q = nlohmann::ordered_json::object(), e = q;
-    for (std::size_t i = 0; i < p.quantities.size(); ++i) {
-      q[p.quantities[i].first] = p.quantities[i].second;
-      e[p.quantities[i].first] = number_or_null(p.quantity_error_pct[i]);
-    }
-    j["passes"].push_back({{"pass", p.pass},
-                           {"elements", p.elements},
-                           {"unknowns", p.unknowns},
-                           {"energy_J", p.energy_J},
-                           {"energy_error_pct", p.energy_error_pct},
-                           {"delta_energy_pct", number_or_null(p.delta_energy_pct)},
-                           {"quantities", q},
-                           {"quantity_error_pct", e},
-                           {"seconds", p.seconds}});
-  }
-  return j;
-}
-
-} // namespace
 
 void throw_mesh_error_2d(const CaseSpec& spec, const MeshError& e) {
   // Point at the region that caused it when we know it, else at the mesh settings. The
@@ -217,12 +213,18 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   for (const auto& r : run->spec.regions)
     names.push_back(r.name);
   run->energy = summarize_energy_2d(*run->field, names);
+  const auto t_estimate = Clock::now();
   run->error = estimate_error_2d(*run->field, run->energy.total_J_per_m);
+  run->timings.error_estimate = since(t_estimate);
   const PointLocator2D locator(run->mesh);
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
+  const double depth = run->spec.stack_length > 0 ? run->spec.stack_length : 1.0;
+  for (const auto& section : run->spec.sections)
+    run->sections.push_back(integrate_section_2d(*run->field, section, depth));
+  check_sections_inside(run->sections, run->spec);
   run->forces = compute_forces_2d(*run);
-  run->coils = coil_results(*run);
+  run->coils = coil_results(*run, assembler, u);
   check_finite(run->energy.total_J_per_m, "magnetic energy");
   check_forces_finite(run->forces);
   run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
@@ -231,64 +233,27 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   return run;
 }
 
-std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
-
-  if (run.spec.write_vtu) {
-    std::vector<std::string> material_names = {"air"};
-    std::map<std::string, int> index = {{"air", 0}};
-    std::vector<int> material_of_part;
-    for (const auto& r : run.spec.regions) {
-      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh)
-        material_names.push_back(r.material->name);
-      material_of_part.push_back(it->second);
-    }
-    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
-    add_error_indicator(grid, run);
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-    if (run.spec.write_revolved_vtu)
-      write_vtu(stage.path_for("solution_revolved.vtu").string(),
-                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
-  }
-
+nlohmann::ordered_json summary_json_2d(const Run2D& run) {
   nlohmann::ordered_json j;
-  add_provenance(j);
-  j["case"] = run.spec.file;
   const bool axi = run.spec.axisymmetric();
-  if (axi)
-    j["dimension"] = "axi";
-  else
-    j["dimension"] = 2;
-  j["order"] = run.spec.order;
-  j["elements"] = run.mesh.n_triangles();
-  j["nodes"] = run.mesh.n_nodes();
-  j["unknowns"] = run.dofs->n_dofs();
+  add_run_header(j, {run.spec.file, axi ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2),
+                     run.spec.order, run.mesh.n_triangles(), run.mesh.n_nodes(),
+                     static_cast<std::size_t>(run.dofs->n_dofs())});
+  // Top-level min/max_angle_deg predate mesh_quality and stay for the scripts that read them.
   j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
   j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
+  j["mesh_quality"] = {{"min_angle_deg", run.mesh.quality.min_angle_deg},
+                       {"max_angle_deg", run.mesh.quality.max_angle_deg}};
   const double length = run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
-  j["energy_J"] = run.energy.total_J_per_m * length;
-  j["energy_per"] = axi                         ? "body of revolution"
-                    : run.spec.stack_length > 0 ? "stack"
-                                                : "metre of length";
-  j["error_estimate"] = {{"energy_error_pct", run.error.energy_error_pct},
-                         {"energy_norm_error_pct", run.error.energy_norm_error_pct},
-                         {"indicator", run.error.indicator}};
-  j["converged"] = run.report.converged;
-  j["iterations"] = run.report.iterations;
-  j["residual_history"] = run.report.residual_history;
-  add_solver_summary(j, run.report, 1);
-  j["timings_s"] = {{"mesh", run.timings.mesh},
-                    {"assemble", run.timings.assemble},
-                    {"solve", run.timings.solve},
-                    {"linear_setup", run.report.linear_setup_s},
-                    {"linear_solve", run.report.linear_solve_s},
-                    {"postprocess", run.timings.postprocess},
-                    {"total", run.timings.total}};
-  j["peak_memory_MB"] = peak_memory_mb();
+  const std::string per = axi                         ? "body of revolution"
+                          : run.spec.stack_length > 0 ? "stack"
+                                                      : "metre of length";
+  add_energy(j, run.energy.total_J_per_m * length, per);
+  add_error_estimate(j,
+                     {run.error.energy_error_pct, run.error.energy_norm_error_pct,
+                      run.error.indicator, run.error.total_eta2 * length},
+                     run.timings.error_estimate);
+  add_solve_record(j, run.report, run.timings, 1, 1);
   auto& regions = j["regions"];
   for (const auto& r : run.energy.regions) {
     if (r.area_m2 == 0)
@@ -302,18 +267,38 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
   for (const auto& p : run.probes)
     j["probes"].push_back(p.name + ".csv");
   if (!run.forces.empty()) {
-    j["forces_per"] = axi                         ? "body of revolution"
-                      : run.spec.stack_length > 0 ? "stack"
-                                                  : "metre of length";
+    j["forces_per"] = per;
     j["forces"] = forces_json(run.forces);
-    stage.write_text("forces.csv", forces_csv(run.forces));
   }
+  if (!run.sections.empty())
+    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
   if (!run.coils.empty())
-    j["coils"] = coils_json(run.coils);
+    j["coils"] = coils_json_2d(run.coils);
   if (run.adapt)
     j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
-  stage.write_text("summary.json", j.dump(2) + "\n");
+  return j;
+}
+
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  stage_probe_tables(stage, run.probes);
+
+  if (run.spec.write_vtu) {
+    const VtuMaterials materials = vtu_materials(run.spec.regions);
+    const auto& material_names = materials.names;
+    const auto& material_of_part = materials.of_region;
+    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
+    add_error_indicator(grid, run);
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
+    if (run.spec.write_revolved_vtu)
+      write_vtu(stage.path_for("solution_revolved.vtu").string(),
+                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
+  }
+
+  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
+  stage.write_text("summary.json", summary_json_2d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
 }
@@ -335,12 +320,8 @@ std::string describe_run_2d(const Run2D& run) {
       buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
       run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
   s += buf;
-  if (run.adapt) {
-    const auto& a = *run.adapt;
-    std::snprintf(buf, sizeof buf, "adapt    %s %.3g %% after %zu pass(es)\n",
-                  a.converged ? "reached" : "did NOT reach", a.accuracy_pct, a.passes.size());
-    s += buf;
-  }
+  if (run.adapt)
+    s += describe_adapt_result(*run.adapt);
   for (const auto& r : run.energy.regions)
     if (r.nonlinear && r.area_m2 > 0) {
       std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
@@ -348,9 +329,18 @@ std::string describe_run_2d(const Run2D& run) {
       s += buf;
     }
   s += describe_forces(run.forces, run.spec.stack_length <= 0 && !run.spec.axisymmetric());
+  for (const auto& f : run.sections) {
+    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g %s, mean Bn %.6g T, mean |B| %.6g T\n",
+                  f.name.c_str(), f.total.flux_Wb,
+                  run.spec.stack_length > 0 || run.spec.axisymmetric() ? "Wb" : "Wb/m",
+                  f.total.Bn_avg_T(), f.total.B_avg_T());
+    s += buf;
+  }
   for (const auto& c : run.coils) {
-    std::snprintf(buf, sizeof buf, "coil     %-20s linkage %.6g Wb, L = linkage / I = %.6g H\n",
-                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H);
+    std::snprintf(buf, sizeof buf,
+                  "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
+                  "linkage / I = %.6g H (apparent)\n",
+                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
     s += buf;
   }
   std::snprintf(buf, sizeof buf,

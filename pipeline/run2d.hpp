@@ -7,26 +7,27 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "casefile/case_spec.hpp"
 #include "core/progress.hpp"
 #include "mesh/mesh2d.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/size_field2d.hpp"
+#include "pipeline/adapt_loop.hpp"
 #include "pipeline/force_results.hpp"
+#include "pipeline/timings.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
 #include "postproc/probe_table.hpp"
+#include "postproc/section_flux2d.hpp"
 #include "solver/dof_map2d.hpp"
 #include "solver/mpi_context.hpp"
 #include "solver/newton.hpp"
 #include "solver/problem2d.hpp"
 
 namespace magfem {
-
-struct Timings {
-  double mesh = 0, assemble = 0, solve = 0, postprocess = 0, total = 0;
-};
 
 // Command-line overrides of case settings (refinement studies, quick checks).
 struct RunOverrides {
@@ -46,32 +47,18 @@ struct RunOverrides {
   const SizeField2D* refine_sizes = nullptr;
 };
 
-// An axisymmetric coil (region with turns and current): its flux linkage with the total field
-// and linkage / current (the self-inductance when it is the only source in linear media).
+// An axisymmetric coil (region with turns and current): its flux linkage with the total field,
+// the differential inductance d lambda / dI at the operating point (in linear media the
+// self-inductance, magnets and other currents aside) and the apparent one, linkage / current
+// (which counts the magnets' and other coils' flux).
 struct CoilResult2D {
   std::string name;
-  double turns = 0, current_A = 0, flux_linkage_Wb = 0, inductance_H = 0;
+  double turns = 0, current_A = 0, flux_linkage_Wb = 0;
+  double inductance_H = 0;         // d lambda / dI
+  double linkage_per_ampere_H = 0; // lambda / I (0 at zero current)
 };
-
-// One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
-struct AdaptPass2D {
-  int pass = 0;
-  std::size_t elements = 0;
-  int unknowns = 0;
-  double energy_J = 0;         // as summary.json energy_J (per metre, stack or revolution)
-  double energy_error_pct = 0; // the estimator's (error_estimate2d.hpp)
-  double delta_energy_pct = 0; // |W - W_previous| / W; NaN on the first pass
-  std::vector<std::pair<std::string, double>> quantities; // the named quantities' values
-  std::vector<double> quantity_error_pct; // their estimated relative errors (NaN: unknown yet)
-  double seconds = 0;
-};
-
-struct AdaptHistory2D {
-  double accuracy_pct = 0;
-  bool converged = false;
-  std::string stop_reason; // why it stopped without converging (empty when converged)
-  std::vector<AdaptPass2D> passes;
-};
+// summary.json's "coils" (also the Python module's Solution.coils).
+nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils);
 
 struct Run2D {
   CaseSpec spec;
@@ -84,10 +71,11 @@ struct Run2D {
   ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
+  std::vector<SectionFlux> sections; // parallel to spec.sections (per energy_per)
   std::vector<CoilResult2D> coils;   // axisymmetric only
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
-  std::optional<AdaptHistory2D> adapt; // set by run_adaptive_2d (adapt2d.hpp)
+  std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)
 };
 
 // A mesher error (bad part) as the InputError naming the case file's region and field.
@@ -99,6 +87,8 @@ Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides);
 // Meshes and solves; throws InputError (bad case), SolveError (no convergence).
 std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides = {});
 
+// summary.json's content (what write_outputs_2d writes; also Solution.summary in Python).
+nlohmann::ordered_json summary_json_2d(const Run2D& run);
 // Writes summary.json, one CSV per probe and solution.vtu, all-or-nothing.
 std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir);
 

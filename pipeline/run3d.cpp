@@ -10,19 +10,22 @@
 
 #include <nlohmann/json.hpp>
 
+#include "casefile/symmetry_check3d.hpp"
 #include "core/constants.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_fingerprint3d.hpp"
 #include "mesh/mesher3d.hpp"
-#include "pipeline/build_info.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
+#include "pipeline/result_tables.hpp"
+#include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
+#include "pipeline/vtu_materials.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
 #include "postproc/vtu_export3d.hpp"
@@ -79,6 +82,7 @@ InputError input_error_of(const CaseSpec& spec, const MeshError& e) {
 }
 
 Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
+  check_symmetry_3d(spec); // before meshing: the share would stand for a different device
   try {
     return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), memory_guard(spec, ov, estimate));
   } catch (const MeshError& e) {
@@ -121,6 +125,33 @@ void check_same_mesh_everywhere(const Mesh3D& mesh) {
                              "every process");
 }
 
+// The model's share -> the whole device (mesh/symmetry_plane3d.hpp). Energies: 2 per plane
+// in all (the energy density is even about each plane), and per part 2 per plane that cuts it
+// (a part on one side is whole in the model; its image beyond is another part, not meshed).
+// Flux linkages and inductances: 2 per plane, every coil being its own mirror image
+// (check_symmetry_3d) so that B . h_k is even too. Forces, torques and probes need nothing:
+// they sample the whole device's field through the mirror (PointLocator3D).
+void scale_to_whole_device(Run3D& run) {
+  if (run.spec.geometry3d.symmetry.empty())
+    return;
+  const double factor = symmetry_factor(run.spec.geometry3d.symmetry);
+  const std::vector<double> per_part = region_symmetry_factors(run.spec);
+  run.energy.total_J *= factor;
+  for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
+    auto& r = run.energy.regions[i];
+    const double f = i < per_part.size() ? per_part[i] : factor; // then air and the shell
+    r.energy_J *= f;
+    r.volume_m3 *= f;
+    if (i < run.mesh.part_volumes.size())
+      run.mesh.part_volumes[i] *= f;
+  }
+  run.error_estimate.error_norm2_J *= factor;
+  run.error_estimate.energy_norm2_J *= factor;
+  for (auto& c : run.coil_results.coils)
+    c.flux_linkage_Wb *= factor;
+  run.coil_results.inductance_H *= factor;
+}
+
 } // namespace
 
 namespace {
@@ -139,14 +170,16 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
 
 Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3D& estimate) {
   apply_overrides(spec, overrides);
+  if (!spec.geometry3d.coils.empty())
+    check_coils_in_air(spec, CaseCoils(spec.geometry3d.coils, fe_source_options()));
   return mesh_case(spec, overrides, estimate);
 }
 
-void check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
+MeshEstimate3D check_memory_3d(CaseSpec spec, const RunOverrides& ov) {
   apply_overrides(spec, ov);
   MeshEstimate3D estimate;
-  estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
-                            memory_guard(spec, ov, estimate));
+  return estimate_geometry_mesh_3d(spec.geometry3d, probe_surfaces(spec),
+                                   memory_guard(spec, ov, estimate));
 }
 
 double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
@@ -179,6 +212,10 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
       throw InputError(run->spec.file, 0, "",
                        why + " (" + std::to_string(world.size) + " processes asked for)");
 
+  if (!run->spec.geometry3d.coils.empty()) {
+    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
+    check_coils_in_air(run->spec, *run->coils); // before the mesh: fail fast
+  }
   auto t0 = Clock::now();
   stage("meshing");
   run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
@@ -200,9 +237,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   // limit the field error near curved magnet faces to O(h^2) in the geometry.
   if (run->spec.order == 2)
     run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
-  if (!run->spec.geometry3d.coils.empty()) {
-    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
-    check_coils_in_air(*run);
+  if (run->coils) {
     stage("coil source field: " + std::to_string(run->coils->n_coils()) + " coils at " +
           std::to_string(run->mesh.n_tets() * tet_rule(SourceFieldTable3D::rule_degree).size()) +
           " quadrature points");
@@ -270,9 +305,11 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   run->error_estimate = estimate_error_3d(recovery, run->energy.total_J);
   estimate_force_errors_3d(*run, recovery, run->forces);
   run->error_estimate_s = since(t_estimate);
+  run->timings.error_estimate = run->error_estimate_s;
   check_finite(run->recovered_B.values(), "recovered flux density");
   check_finite(run->energy.total_J, "magnetic energy");
   check_forces_finite(run->forces);
+  scale_to_whole_device(*run);
   run->warnings = run->mesh.warnings;
   for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
     run->warnings.push_back(std::move(w));
@@ -281,64 +318,31 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   return run;
 }
 
-std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
-  if (run.spec.write_vtu) {
-    std::vector<std::string> material_names = {"air"};
-    std::map<std::string, int> index = {{"air", 0}};
-    std::vector<int> material_of_part;
-    for (const auto& r : run.spec.regions) {
-      auto [it, fresh] = index.emplace(r.material->name, static_cast<int>(material_names.size()));
-      if (fresh)
-        material_names.push_back(r.material->name);
-      material_of_part.push_back(it->second);
-    }
-    VtuGrid grid =
-        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
-    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
-    VtuArray indicator{"error_indicator", 1, {}};
-    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
-      if (!run.problem.is_shell(t))
-        indicator.values.push_back(run.error_estimate.eta2_J[t]);
-    grid.cell_data.push_back(std::move(indicator));
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-  }
+nlohmann::ordered_json summary_json_3d(const Run3D& run) {
   nlohmann::ordered_json j;
-  add_provenance(j);
-  j["case"] = run.spec.file;
-  j["dimension"] = 3;
-  j["order"] = run.spec.order;
-  j["elements"] = run.mesh.n_tets();
-  j["nodes"] = run.mesh.n_nodes();
-  j["unknowns"] = run.dofs->n_dofs();
+  add_run_header(j, {run.spec.file, 3, run.spec.order, run.mesh.n_tets(), run.mesh.n_nodes(),
+                     static_cast<std::size_t>(run.dofs->n_dofs())});
   j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
                        {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
                        {"max_radius_edge", run.mesh.quality.max_radius_edge},
                        {"curved_tets", run.dofs->n_curved()},
                        {"straightened_edge_nodes", run.dofs->n_straightened()}};
-  j["energy_J"] = run.energy.total_J;
-  j["error_estimate"] = {{"energy_error_pct", run.error_estimate.energy_error_pct},
-                         {"energy_norm_error_pct", run.error_estimate.energy_norm_error_pct},
-                         {"indicator", run.error_estimate.indicator},
-                         {"error_norm2_J", run.error_estimate.error_norm2_J},
-                         {"scope", "physical domain; the open-boundary shell is not estimated"},
-                         {"seconds", run.error_estimate_s}};
-  j["converged"] = run.report.converged;
-  j["iterations"] = run.report.iterations;
-  j["residual_history"] = run.report.residual_history;
-  add_solver_summary(j, run.report, run.threads, run.ranks);
-  j["timings_s"] = {{"mesh", run.timings.mesh},
-                    {"assemble", run.timings.assemble},
-                    {"solve", run.timings.solve},
-                    {"linear_setup", run.report.linear_setup_s},
-                    {"linear_solve", run.report.linear_solve_s},
-                    {"postprocess", run.timings.postprocess},
-                    {"error_estimate", run.error_estimate_s},
-                    {"total", run.timings.total}};
-  j["peak_memory_MB"] = peak_memory_mb();
+  add_energy(j, run.energy.total_J, "device");
+  if (const auto& planes = run.spec.geometry3d.symmetry; !planes.empty()) {
+    // What was meshed, and that energies, linkages and inductances are the whole device's.
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& p : planes)
+      list.push_back({{"plane", axis_name(p.axis)}, {"field", field_name(p.field)}});
+    j["symmetry"] = list;
+    j["symmetry_factor"] = symmetry_factor(planes);
+  }
+  add_error_estimate(j,
+                     {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                      run.error_estimate.indicator, run.error_estimate.error_norm2_J},
+                     run.error_estimate_s);
+  add_solve_record(j, run.report, run.timings, run.threads, run.ranks);
+  // The coils' inductance matrix (part of postprocess), 3D only.
+  j["timings_s"]["inductance"] = run.coil_results.inductance_s;
   j["memory_guard"] = {
       {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
       {"estimated_peak_memory_MB",
@@ -362,7 +366,6 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     j["probes"].push_back(p.name + ".csv");
   if (!run.sections.empty()) {
     j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-    stage.write_text("sections.csv", sections_csv(run.sections, run.spec.regions));
   }
   if (run.coils) {
     j["coils"] = coil_results_json(run.coil_results);
@@ -382,25 +385,50 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
     j["coil_warnings"] = run.coil_results.warnings;
   }
   if (!run.forces.empty()) {
+    j["forces_per"] = "device";
     j["forces"] = forces_json(run.forces);
-    stage.write_text("forces.csv", forces_csv(run.forces));
   }
+  if (run.adapt)
+    j["adapt"] = adapt_json(*run.adapt);
   j["warnings"] = run.warnings;
-  stage.write_text("summary.json", j.dump(2) + "\n");
+  return j;
+}
+
+std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  stage_probe_tables(stage, run.probes);
+  if (run.spec.write_vtu) {
+    const VtuMaterials materials = vtu_materials(run.spec.regions);
+    const auto& material_names = materials.names;
+    const auto& material_of_part = materials.of_region;
+    VtuGrid grid =
+        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
+    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
+    VtuArray indicator{"error_indicator", 1, {}};
+    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
+      if (!run.problem.is_shell(t))
+        indicator.values.push_back(run.error_estimate.eta2_J[t]);
+    grid.cell_data.push_back(std::move(indicator));
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
+  }
+  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
+  stage.write_text("summary.json", summary_json_3d(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
 }
 
 std::string describe_run_3d(const Run3D& run) {
   char buf[640];
-  std::snprintf(buf, sizeof buf,
-                "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-                "solve    order %d, %d unknowns, %s, residual %.2e\n"
-                "energy   %.6g J\n",
-                run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
-                run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-                describe_solver(run.report).c_str(), run.report.residual_history.back(),
-                run.energy.total_J);
+  std::snprintf(
+      buf, sizeof buf,
+      "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
+      "solve    order %d, %d unknowns, %s, residual %.2e\n"
+      "energy   %.6g J%s\n",
+      run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+      run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
+      describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
+      run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
   std::string s = buf;
   if (run.dofs->n_straightened() > 0)
     s += "note     " + std::to_string(run.dofs->n_straightened()) +
@@ -419,6 +447,8 @@ std::string describe_run_3d(const Run3D& run) {
                 run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
                 run.error_estimate.indicator.c_str(), run.error_estimate_s);
   s += buf;
+  if (run.adapt)
+    s += describe_adapt_result(*run.adapt);
   s += describe_forces(run.forces, false);
   for (const auto& f : run.sections) {
     std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",

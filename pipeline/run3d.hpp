@@ -3,11 +3,15 @@
 // energy, VTU. Mirrors run2d.hpp.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "mesh/mesh3d.hpp"
 #include "mesh/mesh_estimate3d.hpp"
+#include "pipeline/adapt_loop.hpp"
 #include "pipeline/coil_run3d.hpp"
 #include "pipeline/run2d.hpp"
 #include "postproc/energy3d.hpp"
@@ -41,8 +45,9 @@ struct Run3D {
   double error_estimate_s = 0;       // recovery, indicator and force estimates, wall clock
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   Timings timings;
-  int threads = 1; // element-loop threads of the assembly
-  int ranks = 1;   // processes that solved it (MPI_COMM_WORLD under mpirun)
+  int threads = 1;                   // element-loop threads of the assembly
+  int ranks = 1;                     // processes that solved it (MPI_COMM_WORLD under mpirun)
+  std::optional<AdaptHistory> adapt; // set by run_adaptive_3d (adapt3d.hpp)
 };
 
 // Under mpirun (overrides.world.distributed()) every process calls this: each meshes the
@@ -57,11 +62,14 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides 
 double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& overrides = {});
 // The memory guard of run_case_3d without meshing: InputError (exit 2) naming the
 // --mesh-scale that would fit when the case cannot be solved within the limit. A geometry
-// the mesher rejects throws its MeshError (run_case_3d would name the part).
-void check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
+// the mesher rejects throws its MeshError (run_case_3d would name the part). Returns the
+// estimate it checked.
+MeshEstimate3D check_memory_3d(CaseSpec spec, const RunOverrides& overrides = {});
 // The mesh run_case_3d would solve on (the overrides applied to spec, the memory guard
 // included; straight-sided: order 2 curves the sphere edges later): `magfem mesh`.
 Mesh3D mesh_case_3d(CaseSpec& spec, const RunOverrides& overrides, MeshEstimate3D& estimate);
+// summary.json's content (what write_outputs_3d writes; also Solution.summary in Python).
+nlohmann::ordered_json summary_json_3d(const Run3D& run);
 std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir);
 std::string describe_run_3d(const Run3D& run);
 

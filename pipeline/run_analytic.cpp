@@ -140,7 +140,7 @@ nlohmann::ordered_json analytic_coils_json(const AnalyticRun& run) {
   const bool axi = run.spec.axisymmetric();
   for (std::size_t k = 0; k < run.coils.size(); ++k) {
     const CoilResult& c = run.coils[k];
-    // The FE's keys: axi reports linkage / current as inductance_H, 3D resistance and loss.
+    // The FE's keys: 3D adds resistance and loss.
     nlohmann::ordered_json j = {{"name", c.name}, {"turns", c.turns}, {"current_A", c.current_A}};
     if (!axi) {
       j["resistance_ohm"] = c.resistance_ohm;
@@ -148,10 +148,14 @@ nlohmann::ordered_json analytic_coils_json(const AnalyticRun& run) {
     }
     const bool known = run.linkage_known[k];
     j["flux_linkage_Wb"] = known ? nlohmann::ordered_json(c.flux_linkage_Wb) : nullptr;
-    if (axi)
-      j["inductance_H"] = known && c.current_A != 0
-                              ? nlohmann::ordered_json(c.flux_linkage_Wb / c.current_A)
-                              : nullptr;
+    // The FE's meaning: d lambda / dI (the models are linear, so the self-inductance, the
+    // matrix's diagonal) and the apparent lambda / I, which counts the magnets' flux.
+    const auto i = static_cast<Eigen::Index>(k);
+    j["inductance_H"] =
+        i < run.inductance_H.rows() ? nlohmann::ordered_json(run.inductance_H(i, i)) : nullptr;
+    j["linkage_per_ampere_H"] = known && c.current_A != 0
+                                    ? nlohmann::ordered_json(c.flux_linkage_Wb / c.current_A)
+                                    : nullptr;
     j["force_N"] = {c.force_N.x(), c.force_N.y(), c.force_N.z()};
     if (!axi)
       j["torque_Nm"] = {c.torque_Nm.x(), c.torque_Nm.y(), c.torque_Nm.z()};
@@ -162,12 +166,7 @@ nlohmann::ordered_json analytic_coils_json(const AnalyticRun& run) {
 
 } // namespace
 
-std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
-                                                const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  for (const auto& p : run.probes)
-    stage.write_text(p.name + ".csv", p.to_csv());
+nlohmann::ordered_json summary_json_analytic(const AnalyticRun& run) {
   nlohmann::ordered_json j;
   add_provenance(j);
   j["case"] = run.spec.file;
@@ -202,7 +201,6 @@ std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
     if (axi)
       j["forces_per"] = "body of revolution";
     j["forces"] = forces_json(run.forces);
-    stage.write_text("forces.csv", forces_csv(run.forces));
   }
   if (!run.coils.empty())
     j["coils"] = analytic_coils_json(run);
@@ -218,7 +216,18 @@ std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
     }
     j["inductance_H"] = {{"names", names}, {"matrix", l}};
   }
-  stage.write_text("summary.json", j.dump(2) + "\n");
+  return j;
+}
+
+std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
+                                                const std::filesystem::path& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  OutputStage stage(out_dir);
+  for (const auto& p : run.probes)
+    stage.write_text(p.name + ".csv", p.to_csv());
+  if (!run.forces.empty())
+    stage.write_text("forces.csv", forces_csv(run.forces));
+  stage.write_text("summary.json", summary_json_analytic(run).dump(2) + "\n");
   stage.commit();
   return stage.written();
 }
@@ -248,12 +257,18 @@ std::string describe_analytic(const AnalyticRun& run) {
                   c.name.c_str(), c.force_N.x(), c.force_N.y(), c.force_N.z(), c.torque_Nm.x(),
                   c.torque_Nm.y(), c.torque_Nm.z());
     s += buf;
-    if (run.linkage_known[k]) {
+    if (run.linkage_known[k] && c.current_A != 0) {
+      std::snprintf(buf, sizeof buf, "linkage %.6g Wb, linkage / I = %.6g H (apparent)\n",
+                    c.flux_linkage_Wb, c.flux_linkage_Wb / c.current_A);
+      s += buf;
+    } else if (run.linkage_known[k]) {
       std::snprintf(buf, sizeof buf, "linkage %.6g Wb\n", c.flux_linkage_Wb);
       s += buf;
     } else
       s += "linkage not computed\n";
   }
+  if (run.inductance_H.rows() > 0 && run.inductance_H.rows() <= 4)
+    s += "L = dlambda/dI (H, differential):\n";
   for (Eigen::Index i = 0; i < run.inductance_H.rows() && run.inductance_H.rows() <= 4; ++i) {
     s += i == 0 ? "L (H)   " : "        ";
     for (Eigen::Index k = 0; k < run.inductance_H.cols(); ++k) {

@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include <nlohmann/json.hpp>
+
 #include "pipeline/analytic_scene.hpp"
 #include "pipeline/coil_run3d.hpp"
 #include "pipeline/force_results.hpp"
@@ -39,6 +41,8 @@ struct AnalyticRun {
 };
 
 std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOptions& options);
+// summary.json's content (what write_outputs_analytic writes; AnalyticSolution.summary).
+nlohmann::ordered_json summary_json_analytic(const AnalyticRun& run);
 std::vector<std::string> write_outputs_analytic(const AnalyticRun& run,
                                                 const std::filesystem::path& out_dir);
 std::string describe_analytic(const AnalyticRun& run);

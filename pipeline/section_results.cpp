@@ -45,9 +45,10 @@ nlohmann::ordered_json sections_json(const std::vector<SectionFlux>& sections,
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const SectionFlux& s = sections[i];
-    nlohmann::ordered_json j = {
-        {"name", s.name},
-        {"type", specs[i].kind == SectionSpec::Kind::disk ? "disk" : "rectangle"}};
+    nlohmann::ordered_json j = {{"name", s.name},
+                                {"type", specs[i].kind == SectionSpec::Kind::disk   ? "disk"
+                                         : specs[i].kind == SectionSpec::Kind::line ? "line"
+                                                                                    : "rectangle"}};
     j.update(part_json(s.total));
     j["regions"] = nlohmann::ordered_json::array();
     for (const auto& p : s.parts) {

@@ -15,7 +15,7 @@ ForceTorque maxwell_stress_recovered_3d(const PatchRecovery3D& recovery,
     if (!loc || problem.is_shell(loc->tet))
       throw std::invalid_argument("recovered Maxwell stress: a surface point is outside the "
                                   "physical domain");
-    b[i] = recovery.B(loc->tet, loc->bary);
+    b[i] = loc->b_map * recovery.B(loc->tet, loc->bary);
   }
   return maxwell_stress_sum(points, b, torque_point);
 }

@@ -19,7 +19,7 @@ ForceTorque lorentz_force_3d(const Field3D& field, const PointLocator3D& locator
     if (!loc || field.problem().is_shell(loc->tet))
       throw std::invalid_argument("the coil leaves the meshed domain");
     const Eigen::Vector3d b =
-        field.B(loc->tet, loc->bary) - mu0 * current * coils.H_per_ampere(coil, p.x);
+        loc->b_map * field.B(loc->tet, loc->bary) - mu0 * current * coils.H_per_ampere(coil, p.x);
     const Eigen::Vector3d f = p.weight * p.j.cross(b);
     ft.force += f;
     ft.torque += (p.x - torque_point).cross(f);

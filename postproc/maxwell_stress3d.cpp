@@ -78,8 +78,9 @@ Eigen::Vector3d FieldSampler3D::B(const Eigen::Vector3d& x) const {
     throw std::invalid_argument("Maxwell stress: point " + where(x) +
                                 " is not in air (the surface must lie in air)");
   if (sampling_ == FieldSampling::element)
-    return field_.B(loc->tet, loc->bary);
-  Eigen::Vector3d b = field_.interpolate(recovered_, loc->tet, loc->bary);
+    return loc->b_map * field_.B(loc->tet, loc->bary);
+  // The recovered field is the coils' reaction; their own field is the whole device's at x.
+  Eigen::Vector3d b = loc->b_map * field_.interpolate(recovered_, loc->tet, loc->bary);
   if (const CoilSource3D* src = problem.source; src && src->active())
     b += mu0 * src->field->H(x);
   return b;

@@ -70,7 +70,9 @@ std::array<int, 3> PointLocator3D::cell_of(const Eigen::Vector3d& x) const {
   return c;
 }
 
-std::optional<PointLocation3D> PointLocator3D::locate(const Eigen::Vector3d& x) const {
+std::optional<PointLocation3D> PointLocator3D::locate(const Eigen::Vector3d& x_asked) const {
+  const FoldedPoint3D folded = fold_point(mesh_.symmetry, x_asked);
+  const Eigen::Vector3d& x = folded.point;
   const std::size_t b = bucket_index(cell_of(x));
   std::optional<PointLocation3D> best;
   double best_min = -0.05;
@@ -84,7 +86,8 @@ std::optional<PointLocation3D> PointLocator3D::locate(const Eigen::Vector3d& x) 
     const double m = std::min({l0, l.x(), l.y(), l.z()});
     if (m >= best_min) {
       best_min = m;
-      best = PointLocation3D{static_cast<std::size_t>(items_[i]), {l0, l.x(), l.y(), l.z()}};
+      best = PointLocation3D{
+          static_cast<std::size_t>(items_[i]), {l0, l.x(), l.y(), l.z()}, folded.b_map};
       if (m >= 0)
         break; // inside: no other tet can do better than a containing one
     }

@@ -1,8 +1,9 @@
 #pragma once
 // Finds the tetrahedron containing a point (uniform bucket grid over the bounding box of the
-// physical tets). Shell tets are skipped: probes sample the physical domain only. A point a
-// hair outside the faceted boundary of the domain (a probe on the exact sphere) is given to
-// the nearest tet of its bucket; further out it is reported as not found.
+// physical tets; points beyond a symmetry plane of the mesh are found at their mirror image,
+// PointLocation3D::b_map). Shell tets are skipped: probes sample the physical domain only. A point
+// a hair outside the faceted boundary of the domain (a probe on the exact sphere) is given to the
+// nearest tet of its bucket; further out it is reported as not found.
 #include <array>
 #include <optional>
 #include <vector>
@@ -16,6 +17,9 @@ namespace magfem {
 struct PointLocation3D {
   std::size_t tet;
   std::array<double, 4> bary;
+  // A mesh cut at symmetry planes (Mesh3D::symmetry) locates the point's mirror image on the
+  // model's side; B (and H) at the asked point is b_map times the field found there.
+  Eigen::Matrix3d b_map = Eigen::Matrix3d::Identity();
 };
 
 class PointLocator3D {

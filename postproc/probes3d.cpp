@@ -89,8 +89,8 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
     const auto loc = locator.locate(pts[k]);
     if (!loc)
       throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
-    const Eigen::Vector3d b =
-        recovered ? recovered->at(loc->tet, loc->bary) : field.B(loc->tet, loc->bary);
+    const Eigen::Vector3d b = loc->b_map * (recovered ? recovered->at(loc->tet, loc->bary)
+                                                      : field.B(loc->tet, loc->bary));
     const double region = field.problem().mesh->tet_part[loc->tet];
     const Eigen::Vector3d x = pts[k] / length_unit;
     if (plane) {

@@ -4,7 +4,7 @@
 
 #include <pybind11/stl.h>
 
-#include "casefile/case_spec.hpp"
+#include "python/case_source.hpp"
 #include "python/result_tables.hpp"
 
 namespace py = pybind11;
@@ -16,8 +16,7 @@ std::unique_ptr<Analytic> analytic_case(const std::string& path, const std::stri
                                         const std::string& name,
                                         const std::map<std::string, double>& parameters,
                                         const std::string& model, double tolerance, int n_max) {
-  CaseSpec spec =
-      path.empty() ? read_case_text(text, name, parameters) : read_case(path, parameters);
+  CaseSpec spec = read_python_case(path, text, name, parameters);
   AnalyticOptions options;
   options.model = model;
   options.tolerance = tolerance;
@@ -42,9 +41,8 @@ std::vector<std::string> Analytic::write(const std::string& dir) const {
   return write_outputs_analytic(*run_, dir);
 }
 
-std::string Analytic::summary_json() {
-  const std::lock_guard lock(output_mutex_);
-  return summary_via_outputs(*run_, write_outputs_analytic);
+std::string Analytic::summary_json() const {
+  return summary_json_analytic(*run_).dump();
 }
 
 void bind_analytic(py::module_& m) {

@@ -21,11 +21,11 @@ public:
   std::string forces_json() const; // as summary.json's "forces"
   pybind11::dict probes() const;   // name -> {column: numpy array}
   std::vector<std::string> write(const std::string& dir) const;
-  std::string summary_json(); // the writer's own (result_tables.hpp)
+  std::string summary_json() const; // the writer's own summary_json_analytic
 
 private:
   std::unique_ptr<AnalyticRun> run_;
-  mutable std::mutex output_mutex_; // as Solution's
+  mutable std::mutex output_mutex_; // write() one at a time, as Solution's
 };
 
 void bind_analytic(pybind11::module_& m);

@@ -8,8 +8,11 @@
 
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "python/actuator.hpp"
 #include "python/analytic.hpp"
 #include "python/solution.hpp"
+#include "python/sweep.hpp"
+#include "python/validate.hpp"
 
 namespace py = pybind11;
 
@@ -67,4 +70,7 @@ PYBIND11_MODULE(_core, m) {
         "Reads and validates a case file; returns [(parameter, value), ...].");
   magfem::python::bind_solution(m);
   magfem::python::bind_analytic(m);
+  magfem::python::bind_sweep(m);
+  magfem::python::bind_actuator(m);
+  magfem::python::bind_validate(m);
 }

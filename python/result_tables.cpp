@@ -1,10 +1,5 @@
 #include "python/result_tables.hpp"
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
-
 #include <pybind11/numpy.h>
 
 namespace py = pybind11;
@@ -25,25 +20,6 @@ py::dict probes_dict(const std::vector<ProbeTable>& probes) {
     out[py::str(p.name)] = columns;
   }
   return out;
-}
-
-TempDir::TempDir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "magfem-py-XXXXXX").string();
-  if (!mkdtemp(pattern.data()))
-    throw std::runtime_error("cannot create a temporary folder like " + pattern);
-  path_ = pattern;
-}
-
-TempDir::~TempDir() {
-  std::error_code ignored;
-  std::filesystem::remove_all(path_, ignored);
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 } // namespace magfem::python

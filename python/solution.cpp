@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
 
-#include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "python/case_source.hpp"
 #include "python/py_progress.hpp"
 #include "python/result_tables.hpp"
 
@@ -45,8 +45,7 @@ std::unique_ptr<Solution> solve_case(const std::string& path, const std::string&
     throw InputError("<solve>", 0, "order", "must be 1 or 2");
   if (!(mesh_scale > 0) || !std::isfinite(mesh_scale))
     throw InputError("<solve>", 0, "mesh_scale", "must be a positive number");
-  CaseSpec spec =
-      path.empty() ? read_case_text(text, name, parameters) : read_case(path, parameters);
+  CaseSpec spec = read_python_case(path, text, name, parameters);
   PyProgress reporter(std::move(progress));
   RunOverrides overrides;
   overrides.order = order;
@@ -91,15 +90,7 @@ std::string Solution::forces_json() const {
 std::string Solution::coils_json() const {
   if (run3d_)
     return coil_results_json(run3d_->coil_results).dump();
-  // The keys of summary.json's "coils" in 2D (pipeline/run2d.cpp).
-  auto j = nlohmann::ordered_json::array();
-  for (const auto& c : run2d_->coils)
-    j.push_back({{"name", c.name},
-                 {"turns", c.turns},
-                 {"current_A", c.current_A},
-                 {"flux_linkage_Wb", c.flux_linkage_Wb},
-                 {"inductance_H", c.inductance_H}});
-  return j.dump();
+  return coils_json_2d(run2d_->coils).dump();
 }
 
 py::object Solution::inductance_H() const {
@@ -142,8 +133,8 @@ Eigen::Vector3d Solution::field_3d(const Eigen::Vector3d& x, bool want_H) const 
     return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   // B as the probes read it (the recovered B of the point's region, probes3d.hpp); H has no
   // recovered counterpart, so it is the element's own.
-  return want_H ? run3d_->field->H(loc->tet, loc->bary)
-                : run3d_->recovered_B.at(loc->tet, loc->bary);
+  return loc->b_map * (want_H ? run3d_->field->H(loc->tet, loc->bary)
+                              : run3d_->recovered_B.at(loc->tet, loc->bary));
 }
 
 py::array_t<double> Solution::field_at(const py::array_t<double>& points_m, bool want_H) {
@@ -195,11 +186,8 @@ std::vector<std::string> Solution::write(const std::string& dir) const {
   return run3d_ ? write_outputs_3d(*run3d_, dir) : write_outputs_2d(*run2d_, dir);
 }
 
-std::string Solution::summary_json() {
-  const std::lock_guard lock(output_mutex_);
-  if (run3d_)
-    return summary_via_outputs(*run3d_, write_outputs_3d);
-  return summary_via_outputs(*run2d_, write_outputs_2d);
+std::string Solution::summary_json() const {
+  return (run3d_ ? summary_json_3d(*run3d_) : summary_json_2d(*run2d_)).dump();
 }
 
 void bind_solution(py::module_& m) {

@@ -38,8 +38,8 @@ public:
   pybind11::dict mesh() const;
   // The command line's outputs (write_outputs_2d/3d) into `dir`; returns the files written.
   std::vector<std::string> write(const std::string& dir) const;
-  // summary.json as the command line writes it (see solution.cpp for how).
-  std::string summary_json();
+  // summary.json as the command line writes it (the writer's own summary_json_2d/3d).
+  std::string summary_json() const;
 
 private:
   Eigen::Vector3d field_2d(const Eigen::Vector3d& x, bool want_H) const;
@@ -51,8 +51,7 @@ private:
   // of the run above, which never moves.
   std::unique_ptr<PointLocator2D> locator2d_;
   std::unique_ptr<PointLocator3D> locator3d_;
-  // write() runs without the GIL and summary_json() flips the run's VTU flag for a moment:
-  // one output at a time.
+  // write() runs without the GIL: one at a time.
   mutable std::mutex output_mutex_;
 };
 

@@ -61,6 +61,25 @@ for scale in 2 1.4 1; do
 done
 
 echo
+echo "== 3D adaptive refinement: magnetized sphere, unknowns against estimated and true energy error"
+# Exact energy B_r^2 V / (6 mu0) = 0.5555556 J (a = 10 mm, B_r = 1 T). Adaptive passes from
+# the example's coarse start, then uniform --mesh-scale refinement of the same start.
+sphere_true() { awk -v e="$1" 'BEGIN { w = 0.55555555556; printf "%.4g", 100 * (w - e) / w }'; }
+$magfem solve examples/3d/magnetized_sphere_adaptive.yaml --accuracy 0.01 --quiet --out "$out/sphad" > /dev/null
+sed -n '/"adapt"/,/"warnings"/p' "$out/sphad/summary.json" |
+  awk -F': *' '/"unknowns"/ { n = $2 } /"energy_J"/ { e = $2 } /"energy_error_pct"/ { p = $2;
+    gsub(/,/, "", n); gsub(/,/, "", e); gsub(/,/, "", p); w = 0.55555555556;
+    printf "    adaptive %9d unknowns  estimated %.4g %%  true %.4g %%\n", n, p, 100 * (w - e) / w }'
+sed '/^adapt:/,$d' examples/3d/magnetized_sphere_adaptive.yaml > "$out/sphere_uniform.yaml"
+for scale in 1 0.8 0.64 0.512; do
+  $magfem solve "$out/sphere_uniform.yaml" --mesh-scale $scale --quiet --out "$out/sphu$scale" > /dev/null
+  printf "    uniform  %9s unknowns  estimated %.4g %%  true %s %%  (mesh-scale %s)\n" \
+    "$(field "$out/sphu$scale" unknowns)" \
+    "$(grep -m1 '"energy_error_pct"' "$out/sphu$scale/summary.json" | sed 's/.*: *//; s/,$//')" \
+    "$(sphere_true "$(field "$out/sphu$scale" energy_J)")" "$scale"
+done
+
+echo
 echo "== 3D benchmark32 (thesis FEA: 947,015 elements, 39.5 min, ~1 % from the analytic model)"
 # accuracy against time: pointwise rms error vs the charge model at a few mesh levels
 $magfem analytic examples/3d/benchmark32_parallel.yaml --out "$out/b32a" > /dev/null
@@ -82,6 +101,21 @@ $magfem solve "$out/steel3d_linear.yaml" --out "$out/steel3d_lin" > /dev/null
 report "the same with linear iron (mu_r 1000)" "$out/steel3d_lin"
 awk -v a="$(timing "$out/steel3d" total)" -v b="$(timing "$out/steel3d_lin" total)" \
   'BEGIN { printf "    nonlinear / linear: %.2fx\n", a / b }'
+
+echo
+echo "== inductance matrix (issue 35 target: the n x n matrix <= 2x the time of one solve)"
+echo "   spherical_actuator_design, 12 coils, mesh-scale 3"
+$magfem solve examples/3d/spherical_actuator_design.yaml --mesh-scale 3 --quiet --out "$out/act_l" > /dev/null
+report "actuator design, 12 coils" "$out/act_l"
+awk -v s="$(timing "$out/act_l" solve)" -v l="$(timing "$out/act_l" inductance)" \
+  'BEGIN { printf "    one solve %.2f s, 12 x 12 inductance matrix %.2f s = %.2fx (target <= 2x)\n", s, l, l / s }'
+
+echo
+echo "== start-up (issue 35 target: <= 50 ms for commands that need neither PETSc nor VTK)"
+start=$(date +%s.%N)
+for _ in $(seq 20); do $magfem --version > /dev/null; done
+awk -v a="$start" -v b="$(date +%s.%N)" -v n="$(ldd $magfem | wc -l)" \
+  'BEGIN { printf "    magfem --version: %.1f ms per run over 20 runs (target <= 50 ms), %d shared libraries\n", 1000 * (b - a) / 20, n }'
 
 echo
 echo "== 3D linear solver (issue 13): CG iterations and times, incomplete Cholesky vs p-multigrid vs BoomerAMG"

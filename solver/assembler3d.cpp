@@ -14,10 +14,27 @@
 namespace magfem {
 namespace {
 
+// A symmetry plane with `field: normal` (n x H = 0) holds u = 0. Why zero, with magnets,
+// coils and total-potential iron alike: the whole device is its own mirror image there
+// (mesh/symmetry_plane3d.hpp), under which the reduced potential u is odd (H - H_s and H_s are
+// both mirror fields, and u vanishes at infinity), so it is 0 on the plane. In total regions
+// u + I_h Phi_s is the total potential; Phi_s is constant on the plane within an iron
+// component (H_s . dl = 0 along it, up to the edge quadrature), so u = 0 keeps that potential
+// constant there, which is n x H = 0. `field: parallel` (B . n = 0) is the natural condition
+// of the weak form in the total B: nothing to impose.
 std::vector<int> constrained_dofs(const Problem3D& problem, const DofMap3D& dofs) {
-  if (problem.boundary == OuterKind3D::neumann)
-    return {0}; // gauge: phi up to a constant
-  return dofs.dofs_on_faces(problem.mesh->outer_faces);
+  const Mesh3D& mesh = *problem.mesh;
+  std::vector<std::array<int, 3>> faces;
+  for (std::size_t p = 0; p < mesh.symmetry.size(); ++p)
+    if (mesh.symmetry[p].field == SymmetryField::normal)
+      faces.insert(faces.end(), mesh.symmetry_faces[p].begin(), mesh.symmetry_faces[p].end());
+  if (problem.boundary == OuterKind3D::neumann) {
+    if (faces.empty())
+      return {0}; // gauge: phi up to a constant
+    return dofs.dofs_on_faces(faces);
+  }
+  faces.insert(faces.end(), mesh.outer_faces.begin(), mesh.outer_faces.end());
+  return dofs.dofs_on_faces(faces);
 }
 
 bool problem_is_linear(const Problem3D& problem) {

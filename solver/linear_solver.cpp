@@ -265,21 +265,30 @@ void LinearSolver::factorize(const Eigen::SparseMatrix<double>& lower) {
   setup_s_ += seconds_since(t0);
 }
 
+// Why the Krylov solve of a x = rhs that ended in `o` is not a solution ("" if it is).
+std::string LinearSolver::krylov_failure(const KrylovOutcome& o, const Eigen::VectorXd& rhs,
+                                         const Eigen::VectorXd& x,
+                                         const std::string& method) const {
+  const double tol = options_.cg_tolerance;
+  if (!o.converged)
+    return describe_krylov_stop(o, method, tol);
+  const double b_norm = rhs.norm();
+  if (b_norm == 0)
+    return std::string();
+  const double true_residual =
+      (rhs - impl_->matrix->selfadjointView<Eigen::Lower>() * x).norm() / b_norm;
+  if (true_residual <= true_residual_limit(tol))
+    return std::string();
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "; the true residual |b - A x| / |b| is %.3e", true_residual);
+  return describe_krylov_stop(o, method, tol) + buf;
+}
+
 Eigen::VectorXd LinearSolver::solve_krylov(const Eigen::VectorXd& rhs) {
   const Eigen::SparseMatrix<double>& a = *impl_->matrix;
   const double tol = options_.cg_tolerance;
   auto failure = [&](const KrylovOutcome& o, const Eigen::VectorXd& x, const std::string& method) {
-    if (!o.converged)
-      return describe_krylov_stop(o, method, tol);
-    const double b_norm = rhs.norm();
-    if (b_norm == 0)
-      return std::string();
-    const double true_residual = (rhs - a.selfadjointView<Eigen::Lower>() * x).norm() / b_norm;
-    if (true_residual <= true_residual_limit(tol))
-      return std::string();
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "; the true residual |b - A x| / |b| is %.3e", true_residual);
-    return describe_krylov_stop(o, method, tol) + buf;
+    return krylov_failure(o, rhs, x, method);
   };
   Eigen::VectorXd x;
   int iterations = 0;
@@ -316,6 +325,40 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) {
     last_iterations_ = 1;
   } else {
     x = solve_krylov(rhs);
+  }
+  solve_s_ += seconds_since(t0);
+  return x;
+}
+
+Eigen::MatrixXd LinearSolver::solve_many(const Eigen::MatrixXd& rhs) {
+  const auto t0 = Clock::now();
+  Eigen::MatrixXd x(rhs.rows(), rhs.cols());
+  if (impl_->use_direct) {
+    x = impl_->direct.solve(rhs);
+    last_iterations_ = 1;
+  } else if (impl_->use_amg) {
+    if (options_.progress)
+      options_.progress->stage("solve: CG + " + impl_->amg->preconditioner_name() + ", " +
+                               std::to_string(rhs.cols()) + " right-hand sides together");
+    const auto outcomes = impl_->amg->solve_many(rhs, x);
+    last_iterations_ = 0;
+    std::string why;
+    for (Eigen::Index j = 0; j < rhs.cols() && why.empty(); ++j) {
+      last_iterations_ = std::max(last_iterations_, outcomes[j].iterations);
+      why = krylov_failure(outcomes[j], rhs.col(j), x.col(j),
+                           "CG + " + impl_->amg->preconditioner_name());
+    }
+    if (!why.empty()) {
+      if (!impl_->amg_may_fall_back)
+        throw SolveError(why);
+      fall_back(why);
+      set_up_krylov(*impl_->matrix);
+      for (Eigen::Index j = 0; j < rhs.cols(); ++j)
+        x.col(j) = solve_krylov(rhs.col(j));
+    }
+  } else {
+    for (Eigen::Index j = 0; j < rhs.cols(); ++j)
+      x.col(j) = solve_krylov(rhs.col(j));
   }
   solve_s_ += seconds_since(t0);
   return x;

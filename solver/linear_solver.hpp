@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 namespace magfem {
@@ -90,6 +91,11 @@ public:
   // a gauge, a bad material) or the preconditioner cannot be built.
   void factorize(const Eigen::SparseMatrix<double>& lower);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  // One solution per column of `rhs`, with the factorization or preconditioner set up once:
+  // CHOLMOD solves all columns in one pass over its factor; CG + pmg runs the columns side by
+  // side with each V-cycle applied to all at once (PetscSolver::solve_many). Each column is
+  // checked as solve() checks its one. last_iterations(): the largest column's count.
+  Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs);
   // Krylov solves from now on stop at this relative residual (LinearSolverOptions::
   // cg_tolerance until then); direct solves are exact whatever it is.
   void set_cg_tolerance(double tol);
@@ -114,6 +120,8 @@ private:
   void choose(const Eigen::SparseMatrix<double>& lower);
   void set_up_krylov(const Eigen::SparseMatrix<double>& lower);
   Eigen::VectorXd solve_krylov(const Eigen::VectorXd& rhs);
+  std::string krylov_failure(const KrylovOutcome& o, const Eigen::VectorXd& rhs,
+                             const Eigen::VectorXd& x, const std::string& method) const;
   void fall_back(const std::string& why);
 
   std::unique_ptr<Impl> impl_;

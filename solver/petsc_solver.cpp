@@ -17,6 +17,7 @@
 #include "core/input_error.hpp"
 #include "core/progress.hpp"
 #include "solver/galerkin_product.hpp"
+#include "solver/simultaneous_pcg.hpp"
 
 namespace magfem {
 namespace {
@@ -170,6 +171,22 @@ struct BlockFactorCache {
   int factorizations = 0;              // how many were computed (not reused)
 };
 
+// s -= (row i of the CSR matrix) x, for every column of x at once. Plain loops over a row's
+// columns (contiguous in the row-major block) rather than an Eigen expression per entry: this
+// is the inner loop of the block solve's smoother and product, and the expression's set-up
+// per matrix entry cost as much as the arithmetic.
+void subtract_row_products(const PetscInt* row_start, const PetscInt* column,
+                           const PetscScalar* value, PetscInt i, const ColumnBlock& x, double* s) {
+  const Eigen::Index m = x.cols();
+  const double* xd = x.data();
+  for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
+    const double a = value[k];
+    const double* xk = xd + static_cast<Eigen::Index>(column[k]) * m;
+    for (Eigen::Index c = 0; c < m; ++c)
+      s[c] -= a * xk[c];
+  }
+}
+
 class BlockSmoother {
 public:
   // `row_start`, `column`, `value`: the whole symmetric matrix in CSR (sorted columns); they
@@ -254,7 +271,45 @@ public:
     }
   }
 
+  // The same sweeps on a block of columns (row-major: a row's columns side by side), all
+  // columns in one pass over the matrix; the block's solves in one CHOLMOD call.
+  void smooth_many(const ColumnBlock& b, ColumnBlock& x, bool down, bool zero_guess) {
+    if (zero_guess)
+      x.setZero();
+    if (down) {
+      solve_block_many(b, x, zero_guess);
+      for (PetscInt i : rest_)
+        relax_many(b, x, i);
+    } else {
+      for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
+        relax_many(b, x, *i);
+      solve_block_many(b, x, false);
+    }
+  }
+
 private:
+  void residual_many(const ColumnBlock& b, const ColumnBlock& x, PetscInt i,
+                     Eigen::RowVectorXd& s) const {
+    s = b.row(i);
+    subtract_row_products(row_start_.data(), column_.data(), value_.data(), i, x, s.data());
+  }
+  void relax_many(const ColumnBlock& b, ColumnBlock& x, PetscInt i) {
+    residual_many(b, x, i, s_);
+    x.row(i) += inv_diag_[i] * s_;
+  }
+  void solve_block_many(const ColumnBlock& b, ColumnBlock& x, bool x_is_zero) {
+    Eigen::MatrixXd rb(static_cast<Eigen::Index>(block_.size()), b.cols());
+    for (std::size_t k = 0; k < block_.size(); ++k) {
+      if (x_is_zero)
+        s_ = b.row(block_[k]);
+      else
+        residual_many(b, x, block_[k], s_);
+      rb.row(static_cast<Eigen::Index>(k)) = s_;
+    }
+    const Eigen::MatrixXd dx = factor_->solve(rb);
+    for (std::size_t k = 0; k < block_.size(); ++k)
+      x.row(block_[k]) += dx.row(static_cast<Eigen::Index>(k));
+  }
   double residual(const double* b, const double* x, PetscInt i) const {
     double sum = b[i];
     for (PetscInt k = row_start_[i]; k < row_start_[i + 1]; ++k)
@@ -280,6 +335,7 @@ private:
   std::vector<double> inv_diag_;
   std::shared_ptr<const BlockFactor> factor_;
   Eigen::VectorXd r_;
+  Eigen::RowVectorXd s_;
 };
 
 // The block smoother is built when PETSc sets the smoothers up, not before: options that
@@ -381,6 +437,9 @@ struct PetscSolver::Impl {
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
+  bool runs_block_vcycle() const;
+  void multiply_many(const ColumnBlock& x, ColumnBlock& y) const;
+  void vcycle_many(const ColumnBlock& r, ColumnBlock& z);
   static PetscErrorCode monitor(KSP, PetscInt it, PetscReal rnorm, void* self);
 };
 
@@ -600,6 +659,86 @@ KrylovOutcome PetscSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x)
   VecDestroy(&vx);
   check(code, "KSPSolve");
   return m.outcome(m.rhs_norm);
+}
+
+// Our V-cycle is PCMG's (set_up_pmg) only while no petsc_options could have changed PCMG's
+// smoothers, cycle or coarse solve.
+bool PetscSolver::Impl::runs_block_vcycle() const {
+  return options.preconditioner == "pmg" && options.petsc_options.empty() && block_smoother &&
+         block_smoother->smoother;
+}
+
+void PetscSolver::Impl::multiply_many(const ColumnBlock& x, ColumnBlock& y) const {
+  const auto n = static_cast<PetscInt>(row_start.size()) - 1;
+  y.setZero(x.rows(), x.cols());
+  for (PetscInt i = 0; i < n; ++i)
+    subtract_row_products(row_start.data(), column.data(), value.data(), i, x,
+                          y.data() + static_cast<Eigen::Index>(i) * x.cols());
+  y = -y;
+}
+
+// One V-cycle of pmg (PCMG multiplicative, as set_up_pmg builds it) on every column of r:
+// the block smoother down from z = 0, the coarse correction of the residual (BoomerAMG, one
+// column at a time: the P1 level is small), the block smoother up.
+void PetscSolver::Impl::vcycle_many(const ColumnBlock& r, ColumnBlock& z) {
+  BlockSmoother& smoother = *block_smoother->smoother;
+  z.resize(r.rows(), r.cols());
+  smoother.smooth_many(r, z, true, true);
+  ColumnBlock residual;
+  multiply_many(z, residual);
+  residual = r - residual;
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> q(
+      static_cast<Eigen::Index>(p_row_start.size()) - 1, coarse_csr.rows,
+      static_cast<Eigen::Index>(p_value.size()), p_row_start.data(), p_column.data(),
+      p_value.data());
+  const Eigen::MatrixXd rc = q.transpose() * residual;
+  Eigen::MatrixXd ec(rc.rows(), rc.cols());
+  PC pc = nullptr;
+  KSP coarse_ksp = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCMGGetCoarseSolve(pc, &coarse_ksp), "PCMGGetCoarseSolve");
+  const auto nc = static_cast<PetscInt>(rc.rows());
+  for (Eigen::Index j = 0; j < rc.cols(); ++j) {
+    Vec vb = nullptr, vx = nullptr;
+    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nc, rc.col(j).data(), &vb),
+          "VecCreateSeqWithArray");
+    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nc, ec.col(j).data(), &vx),
+          "VecCreateSeqWithArray");
+    const PetscErrorCode code = KSPSolve(coarse_ksp, vb, vx);
+    VecDestroy(&vb);
+    VecDestroy(&vx);
+    check(code, "KSPSolve (coarse)");
+  }
+  z.noalias() += q * ec;
+  smoother.smooth_many(r, z, false, false);
+}
+
+std::vector<KrylovOutcome> PetscSolver::solve_many(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
+  Impl& m = *impl_;
+  x.resize(rhs.rows(), rhs.cols());
+  std::vector<KrylovOutcome> out;
+  bool block = false;
+  {
+    const std::lock_guard lock(petsc_mutex());
+    block = m.runs_block_vcycle();
+  }
+  if (!block) {
+    for (Eigen::Index j = 0; j < rhs.cols(); ++j) {
+      Eigen::VectorXd xj;
+      out.push_back(solve(rhs.col(j), xj));
+      x.col(j) = xj;
+    }
+    return out;
+  }
+  const std::lock_guard lock(petsc_mutex());
+  ColumnBlock xb;
+  const std::string name = "CG+pmg x" + std::to_string(rhs.cols());
+  out = simultaneous_pcg([&](const ColumnBlock& in, ColumnBlock& y) { m.multiply_many(in, y); },
+                         [&](const ColumnBlock& in, ColumnBlock& y) { m.vcycle_many(in, y); }, rhs,
+                         xb, m.options.relative_tolerance, m.options.max_iterations,
+                         m.options.progress, name.c_str());
+  x = xb;
+  return out;
 }
 
 // How the last KSPSolve ended.

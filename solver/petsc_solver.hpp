@@ -62,6 +62,12 @@ public:
   // the preconditioner. Throws SolveError when PETSc refuses (bad options, set-up failure).
   void setup(const Eigen::SparseMatrix<double>& lower);
   KrylovOutcome solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
+  // Every column of `rhs` with the preconditioner set up once by setup(), one outcome per
+  // column (x: the solutions, column for column). pmg with a smoother block (as our 3D open
+  // boundary has) runs the columns' CGs side by side with a V-cycle applied to all columns
+  // at once (simultaneous_pcg.hpp); any other preconditioner, or petsc_options that could
+  // change the cycle, runs one CG per column.
+  std::vector<KrylovOutcome> solve_many(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x);
   // The relative tolerance of the next solves (inexact Newton loosens it far from the
   // solution); takes effect at once, set-up or not.
   void set_relative_tolerance(double tol);

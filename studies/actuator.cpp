@@ -129,7 +129,7 @@ FieldAtPoints fe_field(std::shared_ptr<const Run3D> run) {
       if (!loc || run->problem.is_shell(loc->tet))
         throw InputError(run->spec.file, 0, "coils",
                          "a coil leaves the meshed domain (enlarge boundary.radius)");
-      b.push_back(run->field->B(loc->tet, loc->bary));
+      b.push_back(loc->b_map * run->field->B(loc->tet, loc->bary));
     }
     return b;
   };

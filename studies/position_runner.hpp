@@ -6,6 +6,9 @@
 // --resume tries them again. Rows come back in the order of the positions whatever the order
 // they finished in. solve(row, position) fills a fresh row; the runner times it, and an
 // exception becomes the row's error (ok false): a failed position never stops the others.
+// A stop asked through `cancel` (Ctrl-C in Python, python/background_call.hpp) starts no
+// further position: the positions under way finish, the others come back as default rows
+// (ok false, no error), which the caller throws away.
 //
 // Under mpirun (`world` distributed) the positions are dealt to the processes instead, one at
 // a time as each asks (solver/mpi_context.hpp WorkDealer); each process solves its positions
@@ -19,6 +22,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
@@ -188,7 +192,7 @@ std::vector<Row> run_positions(const std::vector<double>& positions, int workers
                                RunCheckpoint* checkpoint, const PositionCodec<Row>& codec,
                                const std::function<void(Row&, double)>& solve,
                                const std::function<void(int done, int total)>& progress,
-                               const MpiWorld& world = {}) {
+                               const MpiWorld& world = {}, std::stop_token cancel = {}) {
   using namespace position_detail;
   // Positions are a sweep's parallelism (threads, processes); a position's own BLAS stays on
   // one thread, so that its result does not depend on how many there are: a sweep's outputs
@@ -210,7 +214,7 @@ std::vector<Row> run_positions(const std::vector<double>& positions, int workers
   int done = 0;
   std::mutex mutex;
   const auto work = [&](int, std::stop_token stop) {
-    for (int i; !stop.stop_requested() && (i = next++) < total;) {
+    for (int i; !stop.stop_requested() && !cancel.stop_requested() && (i = next++) < total;) {
       const std::string key = RunCheckpoint::key_of(positions[i]);
       const auto saved = checkpoint ? checkpoint->find(key) : std::nullopt;
       if (saved) {

@@ -189,7 +189,7 @@ CaseSpec fe_position_case(CaseSpec spec, const StressSurface& surface) {
 void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
                     const RunOverrides& fe, double angle_deg) {
   row.angle_deg = angle_deg;
-  CaseSpec spec = rotate_group(base, o.group, o.axis, angle_deg * deg_to_rad, o.point);
+  CaseSpec spec = move_group(base, o, angle_deg);
   ForceResult on_group;
   if (o.analytic) {
     const AnalyticScene scene = analytic_scene(spec);
@@ -256,8 +256,7 @@ void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<do
   if (o.analytic || jobs.requested * o.world.size_on_node < 2)
     return;
   try {
-    const CaseSpec first =
-        rotate_group(spec, o.group, o.axis, angles.front() * deg_to_rad, o.point);
+    const CaseSpec first = move_group(spec, o, angles.front());
     jobs.position_memory_mb = estimated_memory_mb_3d(
         fe_position_case(first, stress_surface(first, o.group, o.surface_radius)), fe_overrides(o));
   } catch (const std::exception&) {
@@ -315,6 +314,47 @@ CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eige
                          "' (groups: " + (groups.empty() ? std::string("none") : groups) + ")");
   }
   return out;
+}
+
+CaseSpec translate_group(const CaseSpec& spec, const std::string& group,
+                         const Eigen::Vector3d& displacement) {
+  if (spec.dimension != 3)
+    throw InputError(cli, 0, "--move", "this sweep translates groups of 3D cases");
+  CaseSpec out = spec;
+  bool found = false;
+  for (std::size_t i = 0; i < out.geometry3d.parts.size(); ++i) {
+    auto& part = out.geometry3d.parts[i];
+    if (!in_group(part, group))
+      continue;
+    found = true;
+    part.placement.translation += displacement;
+    out.regions[i].magnetization.center += displacement;
+  }
+  for (auto& coil : out.geometry3d.coils)
+    if (coil.group == group)
+      found = true, coil.placement.translation += displacement;
+  if (!found)
+    throw InputError(cli, 0, "--move", "no part of " + spec.file + " is in group '" + group + "'");
+  return out;
+}
+
+std::vector<double> sweep_positions(const SweepOptions& o) {
+  if (o.motion == SweepMotion::rotate)
+    return o.angles_deg;
+  std::vector<double> mm;
+  for (const double d : o.offsets_m)
+    mm.push_back(1e3 * d);
+  return mm;
+}
+
+CaseSpec move_group(const CaseSpec& spec, const SweepOptions& o, double position) {
+  if (o.motion == SweepMotion::rotate)
+    return rotate_group(spec, o.group, o.axis, position * deg_to_rad, o.point);
+  return translate_group(spec, o.group, 1e-3 * position * o.axis.normalized());
+}
+
+std::string sweep_position_key(SweepMotion motion) {
+  return motion == SweepMotion::rotate ? "angle_deg" : "position_mm";
 }
 
 StressSurface stress_surface(const CaseSpec& spec, const std::string& group,
@@ -429,7 +469,7 @@ SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored
 std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& options,
                                 const SweepProgress& progress, SweepJobs* jobs_used) {
   // Fail early, on the main thread, for mistakes that every position would repeat.
-  (void)rotate_group(spec, options.group, options.axis, 0.0, options.point);
+  (void)move_group(spec, options, 0.0);
   if (!options.analytic)
     (void)stress_surface(spec, options.group, options.surface_radius);
   else
@@ -438,9 +478,9 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
   // A position that alone needs more memory than the limit: every position would fail the
   // guard, so the sweep is bad input (exit 2, naming the --mesh-scale that fits), as for solve.
   // A first position the mesher rejects is left to fail as a position, with its message.
-  if (!options.analytic && !options.angles_deg.empty()) {
-    const CaseSpec first = rotate_group(spec, options.group, options.axis,
-                                        options.angles_deg.front() * deg_to_rad, options.point);
+  const std::vector<double> positions = sweep_positions(options);
+  if (!options.analytic && !positions.empty()) {
+    const CaseSpec first = move_group(spec, options, positions.front());
     try {
       check_memory_3d(
           fe_position_case(first, stress_surface(first, options.group, options.surface_radius)),
@@ -449,11 +489,11 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     }
   }
 
-  const int total = static_cast<int>(options.angles_deg.size());
+  const int total = static_cast<int>(positions.size());
   SweepJobs jobs;
   jobs.requested = default_position_workers(options.world, options.jobs, total);
   jobs.used = jobs.requested;
-  plan_jobs(spec, options, options.angles_deg, jobs);
+  plan_jobs(spec, options, positions, jobs);
   if (jobs_used)
     *jobs_used = jobs;
   const int workers = jobs.used;
@@ -465,9 +505,9 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     fe.parallel_runs = at_once,
     fe.shared_memory_mb = jobs.memory_limit_mb * options.world.size_on_node;
   return run_positions<SweepRow>(
-      options.angles_deg, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      positions, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
-      progress, options.world);
+      progress, options.world, options.stop);
 }
 
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options) {
@@ -504,8 +544,8 @@ std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOpti
   return line;
 }
 
-std::string sweep_csv(const std::vector<SweepRow>& rows) {
-  std::string out = "angle_deg,Tx,Ty,Tz,Fx,Fy,Fz\n";
+std::string sweep_csv(const std::vector<SweepRow>& rows, SweepMotion motion) {
+  std::string out = sweep_position_key(motion) + ",Tx,Ty,Tz,Fx,Fy,Fz\n";
   char line[256];
   for (const auto& r : rows) {
     if (!r.ok)
@@ -515,6 +555,42 @@ std::string sweep_csv(const std::vector<SweepRow>& rows) {
     out += line;
   }
   return out;
+}
+
+nlohmann::ordered_json sweep_summary(const std::string& case_file,
+                                     const std::vector<SweepRow>& rows, const SweepOptions& options,
+                                     const SweepJobs& jobs) {
+  nlohmann::ordered_json j;
+  j["case"] = case_file;
+  j["method"] = sweep_method(rows, options);
+  j["group"] = options.group;
+  if (options.motion == SweepMotion::translate)
+    j["motion"] = "translate";
+  j["axis"] = {options.axis.x(), options.axis.y(), options.axis.z()};
+  const std::string key = sweep_position_key(options.motion);
+  int failed = 0;
+  for (const auto& r : rows) {
+    nlohmann::ordered_json p = {{key, r.angle_deg}, {"ok", r.ok}, {"seconds", r.seconds}};
+    if (r.unknowns)
+      p["unknowns"] = r.unknowns;
+    if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
+      p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
+      p["force_bound_N"] = r.force_bound;
+    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
+      p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
+    if (!r.ok)
+      p["error"] = r.error, ++failed;
+    j["positions"].push_back(p);
+  }
+  j["failed_positions"] = failed;
+  j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
+  // The memory estimate when this process's positions shared the limit (as a serial run
+  // records it; under mpirun with one position at a time per process the file stays the
+  // serial --jobs 1 one).
+  if (jobs.position_memory_mb > 0 && jobs.requested > 1)
+    j["jobs"]["estimated_position_memory_MB"] = jobs.position_memory_mb,
+    j["jobs"]["memory_limit_MB"] = jobs.memory_limit_mb;
+  return j;
 }
 
 } // namespace magfem

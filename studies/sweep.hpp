@@ -1,6 +1,7 @@
 #pragma once
-// `magfem sweep`: rotate a rigid group of parts through a list of angles, solve each position
-// (FE or analytic) and tabulate the torque about the origin and the force on the group.
+// `magfem sweep`: rotate a rigid group of parts through a list of angles (or translate it
+// through a list of offsets along an axis), solve each position (FE or analytic) and tabulate
+// the torque about the origin and the force on the group.
 //
 // Positions are independent: they run on a small pool of worker threads, a failed position is
 // recorded with its message and the others go on. The FE force comes from the Maxwell stress
@@ -12,6 +13,7 @@
 // bound), and the charge interaction otherwise (mu_r = 1 magnets in air).
 #include <functional>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -26,11 +28,19 @@ namespace magfem {
 
 class RunCheckpoint;
 
+// How the group moves from one position to the next.
+enum class SweepMotion {
+  rotate,   // about `axis` through `point` by each of angles_deg
+  translate // along `axis` by each of offsets_m (the force surface is chosen at each position)
+};
+
 struct SweepOptions {
-  std::string group;                               // Part3D::group to rotate
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitY(); // rotation axis (any length)
-  Eigen::Vector3d point = Eigen::Vector3d::Zero(); // a point on the axis, metres
-  std::vector<double> angles_deg;                  // positions
+  std::string group; // Part3D::group to move
+  SweepMotion motion = SweepMotion::rotate;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitY(); // rotation axis or direction (any length)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero(); // a point on the rotation axis, metres
+  std::vector<double> angles_deg;                  // rotate: positions
+  std::vector<double> offsets_m;                   // translate: positions
   bool analytic = false;                           // charge model instead of FE
   std::optional<double> surface_radius;            // metres; default: middle of the gap
   int jobs = 0;                                    // worker threads (0: one per core)
@@ -43,10 +53,12 @@ struct SweepOptions {
   // Under mpirun: the processes the positions are dealt to (studies/position_runner.hpp);
   // `jobs` is then per process, and the checkpoint rank 0's alone.
   MpiWorld world{};
+  // A stop asked here starts no further position (studies/position_runner.hpp).
+  std::stop_token stop;
 };
 
 struct SweepRow {
-  double angle_deg = 0;
+  double angle_deg = 0; // the position: degrees (rotate) or the offset in mm (translate)
   Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // about the origin, N m
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // on the group, N
   bool ok = false;
@@ -67,6 +79,19 @@ struct SweepRow {
 // belongs to the group or the case is not 3D.
 CaseSpec rotate_group(const CaseSpec& spec, const std::string& group, const Eigen::Vector3d& axis,
                       double angle_rad, const Eigen::Vector3d& point);
+
+// The case with every part and coil of `group` moved by `displacement` (metres); magnetizations
+// move with their parts. Throws InputError (naming --move) if no part belongs to the group or
+// the case is not 3D.
+CaseSpec translate_group(const CaseSpec& spec, const std::string& group,
+                         const Eigen::Vector3d& displacement);
+
+// The positions as rows, sweep.csv and summary.json report them: degrees (rotate) or mm
+// (translate); and the case moved to one of them.
+std::vector<double> sweep_positions(const SweepOptions& options);
+CaseSpec move_group(const CaseSpec& spec, const SweepOptions& options, double position);
+// "angle_deg" or "position_mm": the position's column and key.
+std::string sweep_position_key(SweepMotion motion);
 
 // Radius (metres) of a sphere about the origin lying in air between the group and the rest,
 // and whether the group is outside it. Throws InputError if the two do not separate radially.
@@ -113,7 +138,16 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options);
 std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOptions& options);
 
-// sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in angle order).
-std::string sweep_csv(const std::vector<SweepRow>& rows);
+// sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in the order given);
+// position_mm,... for a translation.
+std::string sweep_csv(const std::vector<SweepRow>& rows, SweepMotion motion = SweepMotion::rotate);
+
+// summary.json of a rotating sweep (3D or planar) but the provenance and the peak memory the
+// command line adds: case, method, group, axis, positions (angle_deg, ok, seconds, and per
+// method unknowns, truncation bounds or error estimates, the error of a failed one),
+// failed_positions, jobs. Also magfem.sweep's `summary` in Python.
+nlohmann::ordered_json sweep_summary(const std::string& case_file,
+                                     const std::vector<SweepRow>& rows, const SweepOptions& options,
+                                     const SweepJobs& jobs);
 
 } // namespace magfem

@@ -69,6 +69,18 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, bool& reve
                        "' and no region carries current: keep one for the sweep");
 }
 
+} // namespace
+
+std::string sweep_axi_method(const CaseSpec& spec, const std::string& group) {
+  bool reversed = false;
+  const ForceSpec f = group_force(spec, group, reversed);
+  if (f.kind == ForceSpec::Kind::contour)
+    return "stress_tensor_contour";
+  return reversed ? "lorentz_reaction" : "lorentz";
+}
+
+namespace {
+
 void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOptions& o, double dz) {
   row.position_m = dz;
   CaseSpec spec = move_group_axi(base, o.group, dz);
@@ -127,7 +139,8 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
       default_position_workers(o.world, o.jobs, static_cast<int>(o.positions_m.size()));
   return run_positions<AxiSweepRow>(
       o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json},
-      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress, o.world);
+      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress, o.world,
+      o.stop);
 }
 
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {
@@ -139,6 +152,26 @@ std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {
       out += buf;
     }
   return out;
+}
+
+nlohmann::ordered_json sweep_axi_summary(const CaseSpec& spec, const std::vector<AxiSweepRow>& rows,
+                                         const AxiSweepOptions& options) {
+  nlohmann::ordered_json j;
+  j["case"] = spec.file;
+  j["method"] = sweep_axi_method(spec, options.group);
+  j["group"] = options.group;
+  int failed = 0;
+  for (const auto& r : rows) {
+    nlohmann::ordered_json p = {{"position_mm", 1e3 * r.position_m},
+                                {"ok", r.ok},
+                                {"seconds", r.seconds},
+                                {"unknowns", r.unknowns}};
+    if (!r.ok)
+      p["error"] = r.error, ++failed;
+    j["positions"].push_back(p);
+  }
+  j["failed_positions"] = failed;
+  return j;
 }
 
 } // namespace magfem

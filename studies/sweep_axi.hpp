@@ -5,12 +5,16 @@
 //
 // The force is the Lorentz force F_z = -int J_phi B_r 2 pi r dA: on the group's current
 // regions when it has any, else, reversed, on the other current regions (Newton's third law:
-// the isolated system feels no net force). Groups that carry no current and face no current
-// (magnet against magnet or iron) would need a stress sphere between them and are refused.
+// the isolated system feels no net force). A group that carries no current and faces none (a
+// magnet over iron) takes the stress-tensor force of the case's one `contour` force on a
+// region of the group, whose box moves with it.
 // Positions run on a small pool of threads like the 3D sweep; a failed position is recorded.
 #include <functional>
+#include <stop_token>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "casefile/case_spec.hpp"
 #include "solver/mpi_context.hpp"
@@ -29,6 +33,8 @@ struct AxiSweepOptions {
   RunCheckpoint* checkpoint = nullptr;
   // Under mpirun: the processes the positions are dealt to (as SweepOptions::world).
   MpiWorld world{};
+  // A stop asked here starts no further position (studies/position_runner.hpp).
+  std::stop_token stop;
 };
 
 struct AxiSweepRow {
@@ -45,13 +51,25 @@ struct AxiSweepRow {
 // case is not axisymmetric or no region is in the group.
 CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz);
 
+// How the sweep takes the force on the group, as its summary.json `method` says: "lorentz",
+// "lorentz_reaction" (on the other current regions, reversed) or "stress_tensor_contour".
+// Throws InputError as run_sweep_axi when there is no way.
+std::string sweep_axi_method(const CaseSpec& spec, const std::string& group);
+
 using AxiSweepProgress = std::function<void(int done, int total)>;
-// Throws InputError if the force on the group cannot be had from Lorentz forces. Under
+// Throws InputError if the force on the group cannot be had (sweep_axi_method). Under
 // mpirun every process calls this; rank 0 gets the rows, the others none.
 std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& options,
                                        const AxiSweepProgress& progress = {});
 
 // sweep.csv: position_mm,Fz_N (successful positions, in the given order).
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows);
+
+// summary.json of the sweep but the peak memory the command line adds: case, method, group,
+// positions (position_mm, ok, seconds, unknowns, error of a failed one), failed_positions.
+// Also magfem.sweep's `summary` in Python.
+nlohmann::ordered_json sweep_axi_summary(const CaseSpec& spec,
+                                         const std::vector<AxiSweepRow>& rows,
+                                         const AxiSweepOptions& options);
 
 } // namespace magfem

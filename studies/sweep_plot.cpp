@@ -7,7 +7,7 @@
 namespace magfem {
 
 bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
-                const std::filesystem::path& png, std::string& why) {
+                const std::filesystem::path& png, std::string& why, SweepMotion motion) {
   if (!gnuplot_available(why))
     return false;
   const auto data = std::filesystem::path(png).replace_extension(".dat");
@@ -22,7 +22,8 @@ bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
     g << "set terminal png size 1200,500 noenhanced\n"
       << "set output '" << png.string() << "'\n"
       << "set multiplot layout 1,2 title \"" << gnuplot_title(title) << "\"\n"
-      << "set grid\nset xlabel 'angle (deg)'\n"
+      << "set grid\nset xlabel '"
+      << (motion == SweepMotion::rotate ? "angle (deg)" : "offset along the axis (mm)") << "'\n"
       << "set ylabel 'torque about the origin (N m)'\n"
       << "plot '" << data.string()
       << "' u 1:2 w lp t 'Tx', '' u 1:3 w lp t 'Ty', '' u 1:4 w lp t 'Tz'\n"

@@ -12,7 +12,9 @@ namespace magfem {
 
 // Writes `png` from the rows; returns false (and says why in `why`) if gnuplot is missing or
 // fails. The sweep's CSV does not depend on it.
+// The x axis is the rows' position: the angle, or the offset of a translation.
 bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
-                const std::filesystem::path& png, std::string& why);
+                const std::filesystem::path& png, std::string& why,
+                SweepMotion motion = SweepMotion::rotate);
 
 } // namespace magfem

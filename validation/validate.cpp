@@ -189,39 +189,34 @@ ValidateOptions parse_validate_options(const std::vector<std::string>& args) {
   return o;
 }
 
-int run_validate(const ValidateOptions& options) {
-  const auto t_start = Clock::now();
+ValidationRun select_validation(const ValidateOptions& options) {
   ValidationRun run;
   run.options = options;
   run.catalogue_file = options.catalogue.empty() ? default_catalogue() : options.catalogue;
-  const Catalogue catalogue = read_catalogue(run.catalogue_file);
-  run.sources = catalogue.sources;
-  const auto selected = select(catalogue, options);
-
+  run.catalogue = std::make_shared<const Catalogue>(read_catalogue(run.catalogue_file));
+  run.sources = run.catalogue->sources;
+  const auto selected = select(*run.catalogue, options);
   run.results.resize(selected.size());
   for (std::size_t i = 0; i < selected.size(); ++i)
     run.results[i].entry = selected[i];
   const int n_hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   run.jobs = std::max(
       1, std::min<int>(options.jobs > 0 ? options.jobs : n_hw, static_cast<int>(selected.size())));
-  // Finished entries go to a checkpoint as they finish, so that an interrupted run continues
-  // with --resume (failed entries are evaluated again).
-  std::string selection =
-      "tier=" + to_string(options.tier) + " source=" + options.source + " only=";
-  for (const auto& id : options.only)
-    selection += id + ",";
-  RunCheckpoint checkpoint(options.out_dir,
-                           checkpoint_identity("validate", run.catalogue_file, selection),
-                           options.resume);
+  return run;
+}
+
+void evaluate_validation(ValidationRun& run, RunCheckpoint* checkpoint,
+                         const ValidationProgress& progress, std::stop_token stop) {
+  const auto t_start = Clock::now();
   ComputeCache cache;
   std::atomic<std::size_t> next{0};
-  std::mutex print_mutex;
+  std::mutex report_mutex;
   int done = 0;
   auto worker = [&] {
-    for (std::size_t i = next++; i < run.results.size(); i = next++) {
+    for (std::size_t i = next++; i < run.results.size() && !stop.stop_requested(); i = next++) {
       EntryResult& r = run.results[i];
       bool resumed = false;
-      if (const auto saved = checkpoint.find(r.entry->id)) {
+      if (const auto saved = checkpoint ? checkpoint->find(r.entry->id) : std::nullopt) {
         try {
           entry_from_checkpoint(*saved, r);
           resumed = true;
@@ -232,15 +227,14 @@ int run_validate(const ValidateOptions& options) {
         }
       }
       if (!resumed) {
-        evaluate(r, options.tier, cache);
-        if (r.status != "fail")
-          checkpoint.record(r.entry->id, entry_to_checkpoint(r));
+        evaluate(r, run.options.tier, cache);
+        if (checkpoint && r.status != "fail")
+          checkpoint->record(r.entry->id, entry_to_checkpoint(r));
       }
-      std::lock_guard<std::mutex> lock(print_mutex);
+      std::lock_guard<std::mutex> lock(report_mutex);
       ++done;
-      std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n", done,
-                   run.results.size(), r.status.c_str(), r.entry->id.c_str(), r.seconds,
-                   since(t_start), resumed ? " resumed" : "");
+      if (progress)
+        progress(r, done, since(t_start), resumed);
     }
   };
   std::vector<std::thread> pool;
@@ -250,6 +244,25 @@ int run_validate(const ValidateOptions& options) {
   for (auto& t : pool)
     t.join();
   run.wall_seconds = since(t_start);
+}
+
+int run_validate(const ValidateOptions& options) {
+  ValidationRun run = select_validation(options);
+  // Finished entries go to a checkpoint as they finish, so that an interrupted run continues
+  // with --resume (failed entries are evaluated again).
+  std::string selection =
+      "tier=" + to_string(options.tier) + " source=" + options.source + " only=";
+  for (const auto& id : options.only)
+    selection += id + ",";
+  RunCheckpoint checkpoint(options.out_dir,
+                           checkpoint_identity("validate", run.catalogue_file, selection),
+                           options.resume);
+  evaluate_validation(
+      run, &checkpoint, [&](const EntryResult& r, int done, double elapsed_s, bool resumed) {
+        std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n", done,
+                     run.results.size(), r.status.c_str(), r.entry->id.c_str(), r.seconds,
+                     elapsed_s, resumed ? " resumed" : "");
+      });
 
   std::filesystem::create_directories(options.out_dir);
   OutputStage stage(options.out_dir, "results.csv");

@@ -2,7 +2,10 @@
 // `magfem validate`: runs the catalogue of published figures (validation/catalogue.yaml)
 // and writes results.csv, results.json, report.md and report.html (all or nothing).
 // Exit codes: 0 nothing failed, 4 some entry failed (ids on stderr), 2 bad input.
+#include <functional>
+#include <memory>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -11,6 +14,8 @@
 #include "validation/validate_evaluators.hpp"
 
 namespace magfem {
+
+class RunCheckpoint;
 
 struct ValidateOptions {
   ValidationTier tier = ValidationTier::quick;
@@ -35,7 +40,8 @@ struct EntryResult {
 struct ValidationRun {
   ValidateOptions options;
   std::string catalogue_file;
-  std::vector<SourceCitation> sources; // the catalogue's citations (report.html)
+  std::shared_ptr<const Catalogue> catalogue; // what the results' entries point into
+  std::vector<SourceCitation> sources;        // the catalogue's citations (report.html)
   std::vector<EntryResult> results;
   double wall_seconds = 0;
   int jobs = 1;
@@ -45,6 +51,22 @@ struct ValidationRun {
 ValidateOptions parse_validate_options(const std::vector<std::string>& args);
 // Its options (for `magfem help validate` and the completion).
 std::vector<OptionInfo> validate_option_infos();
+// Reads the catalogue and selects the entries of `options` (results with their entry only,
+// jobs settled); throws InputError for bad input (unknown id, bad catalogue).
+ValidationRun select_validation(const ValidateOptions& options);
+
+// After each entry (serialized): the entry's result, how many are done, the seconds since the
+// evaluation started and whether the checkpoint had it.
+using ValidationProgress =
+    std::function<void(const EntryResult& r, int done, double elapsed_s, bool resumed)>;
+
+// Evaluates the selected entries on run.jobs threads, without writing outputs: finished
+// entries are taken from `checkpoint` (may be null) and the others recorded there but failed
+// ones. A stop asked through `stop` (Ctrl-C in Python) starts no further entry; entries not
+// started keep an empty status.
+void evaluate_validation(ValidationRun& run, RunCheckpoint* checkpoint,
+                         const ValidationProgress& progress = {}, std::stop_token stop = {});
+
 // Selects entries, runs them, writes the outputs; returns the exit code. Throws InputError
 // for bad input (unknown id, bad catalogue).
 int run_validate(const ValidateOptions& options);

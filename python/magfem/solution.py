@@ -111,8 +111,9 @@ class Solution(_Result):
 
     @property
     def coils(self):
-        """name -> dict: turns, current_A, flux_linkage_Wb; inductance_H (linkage / current)
-        in 2D axisymmetric cases; resistance_ohm, power_W, force_N, torque_Nm in 3D."""
+        """name -> dict: turns, current_A, flux_linkage_Wb, inductance_H (d lambda / dI, the
+        differential inductance) and linkage_per_ampere_H (lambda / I, the apparent one,
+        with the magnets' flux); resistance_ohm, power_W, force_N, torque_Nm in 3D."""
         return {c["name"]: _numpy_vectors(c) for c in json.loads(self._core.coils_json())}
 
     @property

@@ -192,6 +192,36 @@ TEST(CaseReader3D, BadInputNamesTheExactLineAndFieldPath) {
   }
 }
 
+// Slips a new user makes get the answer in the message: a British spelling, a material name
+// without its hyphen, a dimension spelt out.
+TEST(CaseReader, SlipsAreAnsweredWithTheNearestNameOrTheChoices) {
+  struct Slip {
+    std::string from, to, field, want;
+  };
+  const std::vector<Slip> slips{
+      {"magnetization: {type: axial}", "magnetisation: {type: axial}", "regions[1].magnetisation",
+       "did you mean 'magnetization'?"},
+      {"material: pm\n    magnetization: {type: axial}",
+       "material: M19\n    magnetization: {type: axial}", "regions[1].material",
+       "did you mean 'M-19'?"},
+      {"dimension: 3", "dimension: axisymmetric", "dimension",
+       "dimension must be 2 | 3 | axi (got 'axisymmetric')"},
+  };
+  for (const auto& slip : slips) {
+    std::string text = case3d;
+    const auto at = text.find(slip.from);
+    ASSERT_NE(at, std::string::npos) << slip.from;
+    text.replace(at, slip.from.size(), slip.to);
+    try {
+      read_case(write_case("slip.yaml", text));
+      ADD_FAILURE() << "accepted: " << slip.to;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), slip.field) << e.what();
+      EXPECT_NE(std::string(e.what()).find(slip.want), std::string::npos) << e.what();
+    }
+  }
+}
+
 // cut_phi (the spherical actuator's hemispherical array, issue 10): the 32-segment layout
 // centred on phi = 0, +-45, .. cut at phi = +-90 keeps 4 x 3 whole segments and 4 x 2 halves;
 // each keeps the name, sign and direction of its uncut segment (a half at phi = 90 still

@@ -1,4 +1,5 @@
-// The adaptive loop of 2D and axisymmetric solves (app/adapt2d): it reaches a target with
+// The adaptive loop of 2D and axisymmetric solves (pipeline/adapt2d), and 3D from the
+// command line (tests/pipeline/test_adapt3d.cpp for its accuracy): it reaches a target with
 // fewer unknowns than uniform refinement, the named quantities' error estimates hold against
 // an exact force, reaching a limit is reported (converged: false, a warning), and bad input
 // (case file or command line) names the file, line and field and writes nothing.
@@ -11,11 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analytic/coil_closed_forms.hpp"
+#include "core/input_error.hpp"
 #include "pipeline/adapt2d.hpp"
 #include "tests/case_helpers.hpp"
-#include "core/input_error.hpp"
 #include "tests/run_cli.hpp"
-#include "analytic/coil_closed_forms.hpp"
 
 using namespace magfem;
 
@@ -54,7 +55,8 @@ TEST(Adapt2D, ReachesTheTargetWithFewerUnknownsThanUniformRefinement) {
   // same start (every size times s, s down by 0.8 a step) is judged by the same estimate,
   // whose effectivity is tested in tests/pipeline/test_error_estimate2d.cpp.
   constexpr double target = 1e-3;
-  CaseSpec spec = read_case(test::write_temp_case("adapt_solenoid.yaml", test::coarse_solenoid_case));
+  CaseSpec spec =
+      read_case(test::write_temp_case("adapt_solenoid.yaml", test::coarse_solenoid_case));
   spec.adapt.accuracy_pct = target;
   const auto adaptive = run_adaptive_2d(spec, {});
   ASSERT_TRUE(adaptive->adapt->converged);
@@ -177,12 +179,29 @@ TEST(Adapt2D, CliAdaptsWritesTheHistoryAndRefusesBadOptions) {
     EXPECT_EQ(r.status, 2) << bad << ": " << r.out;
     EXPECT_FALSE(std::filesystem::exists(out / "summary.json")) << bad;
   }
-  // 3D: refused, saying why (the 3D estimator is another piece of work).
-  const auto r3 = test::run_cli("solve " + test::example("3d/magnetized_sphere.yaml") +
-                                " --accuracy 1 --quiet --out " + out.string());
-  EXPECT_EQ(r3.status, 2);
-  EXPECT_NE(r3.out.find("2D and axisymmetric"), std::string::npos) << r3.out;
+  // 3D (pipeline/adapt3d): a bad accuracy exits 2 and writes nothing; a limit reached
+  // exits 0 with converged: false, the stop reason and the warning on the console.
+  const std::string sphere = test::example("3d/magnetized_sphere_adaptive.yaml");
+  const auto r3 = test::run_cli("solve " + sphere + " --accuracy 0 --quiet --out " + out.string());
+  EXPECT_EQ(r3.status, 2) << r3.out;
   EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
+  const auto limited =
+      test::run_cli("solve " + sphere + " --accuracy 0.001 --max-passes 1 --out " + out.string());
+  ASSERT_EQ(limited.status, 0) << limited.out;
+  EXPECT_NE(limited.out.find("pass 1"), std::string::npos) << limited.out;
+  EXPECT_NE(limited.out.find("tetrahedra"), std::string::npos) << limited.out;
+  EXPECT_NE(limited.out.find("warning  adaptive refinement stopped before reaching"),
+            std::string::npos)
+      << limited.out;
+  {
+    std::ifstream in3(out / "summary.json");
+    const auto j3 = nlohmann::json::parse(in3);
+    EXPECT_FALSE(j3["adapt"]["converged"]);
+    EXPECT_NE(j3["adapt"]["stop_reason"].get<std::string>().find("max_passes"), std::string::npos);
+    EXPECT_EQ(j3["adapt"]["passes"].size(), 1u);
+    EXPECT_EQ(j3["adapt"]["passes"][0]["unknowns"], j3["unknowns"]);
+  }
+  std::filesystem::remove_all(out);
 
   const auto ok = test::run_cli("solve " + path + " --accuracy 0.01 --quiet --out " + out.string());
   ASSERT_EQ(ok.status, 0) << ok.out;

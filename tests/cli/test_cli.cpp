@@ -22,10 +22,10 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include "tests/case_helpers.hpp"
 #include "core/constants.hpp"
 #include "materials/bh_table_file.hpp"
 #include "materials/material_library.hpp"
+#include "tests/case_helpers.hpp"
 #include "tests/run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -139,7 +139,8 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
   const auto out = fresh_dir("options");
   const std::string c = magfem::test::example("2d/diametric_cylinder.yaml");
   const std::string o = " --out " + out.string();
-  const std::array<std::pair<std::string, std::string>, 10> cases{{
+  const std::string s3 = magfem::test::example("3d/two_spheres.yaml");
+  const std::array<std::pair<std::string, std::string>, 13> cases{{
       {"solve " + c + o + " --order 3", "--order"},
       {"solve " + c + o + " --order 1.5", "--order"}, // was truncated to 1
       {"solve " + c + o + " --order 0", "--order"},   // was "as in the case", silently
@@ -149,6 +150,10 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
       {"solve " + c + o + " --frobnicate 2", "--frobnicate"},
       {"solve" + o, "wrong number of arguments"},
       {"sweep " + c + o + " --rotate arm --axis z --angles 0:10:20 --jobs 0", "--jobs"},
+      // A planar case turns; a translation is for axisymmetric and 3D cases.
+      {"sweep " + c + o + " --move magnet --axis x --positions 0,1", "--move"},
+      {"sweep " + s3 + o + " --move arm --rotate arm --axis z --positions 0,1", "not both"},
+      {"sweep " + s3 + o + " --move arm --axis z --angles 0,1", "--angles"},
       {"transmogrify " + c, "unknown command"},
   }};
   for (const auto& [args, named] : cases) {
@@ -377,6 +382,35 @@ TEST(Cli, ParallelSweepEqualsTheSerialOne) {
   const std::string serial = read_text(one / "sweep.csv");
   EXPECT_EQ(std::count(serial.begin(), serial.end(), '\n'), 7); // header + 6 angles
   EXPECT_EQ(serial, read_text(two / "sweep.csv"));
+}
+
+// A 3D translation: sweep.csv and summary.json name the position in mm, and the analytic
+// force along the line of centres falls as the dipole-dipole force, 1/d^4 (14 -> 20 mm:
+// (14/20)^4 = 0.2401 of the first).
+TEST(Cli, SweepTranslatingA3DGroupReportsPositionsInMillimetres) {
+  const auto out = fresh_dir("sweep_translate");
+  const auto r = run("sweep " + magfem::test::example("3d/two_spheres.yaml") +
+                     " --move arm --axis z --positions 0,6 --analytic --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string csv = read_text(out / "sweep.csv");
+  EXPECT_EQ(csv.rfind("position_mm,Tx,Ty,Tz,Fx,Fy,Fz\n0,", 0), 0u) << csv;
+  EXPECT_NE(csv.find("\n6,"), std::string::npos) << csv;
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary.at("motion"), "translate");
+  EXPECT_EQ(summary.at("positions").at(1).at("position_mm"), 6.0);
+  std::istringstream rows(csv);
+  std::string line;
+  std::getline(rows, line);
+  std::vector<double> fx;
+  while (std::getline(rows, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');)
+      v.push_back(std::stod(cell));
+    fx.push_back(v.at(4));
+  }
+  ASSERT_EQ(fx.size(), 2u);
+  EXPECT_NEAR(fx[1] / fx[0], std::pow(14.0 / 20.0, 4), 1e-5);
 }
 
 // Rotated about (0, 0, 7) mm, the small sphere sits inside the large one at 180 degrees: that

@@ -2,10 +2,14 @@
 # Installs the build into a temporary prefix, moves the prefix elsewhere (the installed tree
 # must not depend on where it was installed, nor on the build tree), and runs from there:
 # --version, help pages, a 2D example (summary.json carries version and commit) and one
-# validation entry (the catalogue must come from the installed share/magfem).
-# Usage: install_and_run.sh BUILD_DIR
+# validation entry (the catalogue must come from the installed share/magfem). With PYTHON (the
+# interpreter the module was built for): `import magfem` from the moved prefix with
+# PYTHONPATH=<prefix>/lib/python3/dist-packages, a solve and a sweep through it, and a
+# validation entry that must also find the installed catalogue.
+# Usage: install_and_run.sh BUILD_DIR [PYTHON]
 set -euo pipefail
 build=$1
+python=${2:-}
 root=$(mktemp -d)
 trap 'rm -rf "$root"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -47,3 +51,24 @@ grep -q "\"commit\": \"$commit\"" $summary || fail "summary.json lacks commit $c
 grep -q "\"catalogue\": \"$share/validation/catalogue.yaml\"" validate/results.json ||
   fail "validate did not use the installed catalogue: $(grep catalogue validate/results.json)"
 echo "install, relocation, solve and validate from the prefix: ok"
+
+[[ -n $python ]] || exit 0
+site=$prefix/lib/python3/dist-packages
+[[ -f $site/magfem/__init__.py ]] || fail "not installed: lib/python3/dist-packages/magfem"
+ls "$site"/magfem/_core.*.so >/dev/null 2>&1 || fail "not installed: the compiled magfem._core"
+PYTHONPATH=$site "$python" - "$site" "$share" "$semver" <<'PY' || fail "the installed Python module"
+import sys
+import magfem
+site, share, semver = sys.argv[1:]
+assert magfem.__file__.startswith(site + "/"), "imported %s, not the installed one" % magfem.__file__
+assert magfem.__version__ == semver, magfem.__version__
+sol = magfem.Case.load(share + "/examples/2d/diametric_cylinder.yaml").solve(mesh_scale=2.0)
+assert sol.summary["magfem_version"] == semver and sol.energy > 0
+curve = magfem.sweep(magfem.Case.load(share + "/examples/3d/compensator_table42.yaml"),
+                     rotate="outer", angles=[0, 90], analytic=True)
+assert abs(curve["Ty"][1]) > 1, curve
+v = magfem.validate(entries=["harwin.t1.paper.max_ratio_4"], jobs=1)
+assert v.catalogue == share + "/validation/catalogue.yaml", "validate used " + v.catalogue
+assert v.failed == [], v.rows
+PY
+echo "Python module from the prefix: import, solve, sweep and validate: ok"

@@ -15,6 +15,8 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_finish2d.hpp"
 #include "mesh/mesher2d.hpp"
+#include "mesh/region_map2d.hpp"
+#include "mesh/region_overlap2d.hpp"
 
 namespace magfem {
 namespace {
@@ -195,10 +197,10 @@ TEST(Mesher2D, DirichletBoundaryHasNoShellAndOuterEdgesOnDomainCircle) {
 TEST(Mesher2D, LaterPartsTakePrecedence) {
   Geometry2D g = base_geometry(OuterKind::neumann, 40 * mm);
   g.parts.push_back({"yoke", Rectangle{Vec2::Zero(), 30 * mm, 16 * mm, 0.0}, 1 * mm});
-  g.parts.push_back({"inset", Disk{Vec2(-5 * mm, 0), 4 * mm}, 0.5 * mm});
+  g.parts.push_back({"inset", Disk{Vec2(-5 * mm, 0), 4 * mm}, 0.5 * mm, true});
   // Straddles the right edge; off-centre so that no split point of that edge lies on its circle
   // (circle_polygon_area collects every node on the circle).
-  g.parts.push_back({"cap", Disk{Vec2(15 * mm, 0.37 * mm), 3 * mm}, 0});
+  g.parts.push_back({"cap", Disk{Vec2(15 * mm, 0.37 * mm), 3 * mm}, 0, true});
   const Mesh2D m = build_mesh_2d(g);
   expect_ccw_and_quality(m, 28.0);
   const auto areas = region_areas(m);
@@ -484,12 +486,65 @@ TEST(Mesher2D, BadInputThrowsMeshErrorNamingThePart) {
   // "ok" (a 2 mm disk) is covered completely by the later 5 mm disk.
   expect_mesh_error(
       [&] {
-        build_mesh_2d(with({"cover", Disk{Vec2::Zero(), 5 * mm}, 0}));
+        build_mesh_2d(with({"cover", Disk{Vec2::Zero(), 5 * mm}, 0, true}));
       },
       "ok", "");
   Geometry2D g = with({"fine", Disk{Vec2(5 * mm, 0), 1 * mm}, 0});
   g.options.default_size = 0;
   expect_mesh_error([&] { build_mesh_2d(g); }, "", "default_size");
+}
+
+// Overlap is an error naming both parts, the exact shared area and where, unless the later
+// part replaces. A 5 x 5 mm magnet and a coil rectangle 1 mm into it over 4 mm share exactly
+// 4 mm^2 (straight edges: the outlines are exact, and the area is computed exactly, so the
+// 1e-9 tolerance is round-off of the mm -> m conversion only).
+TEST(Mesher2D, OverlapIsAnErrorNamingBothPartsUnlessTheLaterReplaces) {
+  Geometry2D g = base_geometry(OuterKind::open, 30 * mm);
+  g.parts.push_back({"magnet", Rectangle{Vec2::Zero(), 5 * mm, 5 * mm, 0.0}, 1 * mm});
+  g.parts.push_back({"coil", Rectangle{Vec2(4 * mm, 0.5 * mm), 5 * mm, 4 * mm, 0.0}, 1 * mm});
+  try {
+    build_mesh_2d(g);
+    ADD_FAILURE() << "overlap accepted";
+  } catch (const MeshError& e) {
+    EXPECT_EQ(e.part, "coil");
+    EXPECT_NE(e.reason.find("region 'coil' overlaps region 'magnet' (4 mm^2 around"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(e.reason.find("overlap: replace"), std::string::npos) << e.what();
+  }
+  // The shared area itself, exact for straight outlines.
+  std::vector<Outline2D> outlines;
+  {
+    const RegionMap2D map(g, [](int, const Vec2&) { return 1 * mm; });
+    const auto o = find_region_overlap2d(g.parts, {map.part(0), map.part(1)});
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->earlier, 0u);
+    EXPECT_EQ(o->later, 1u);
+    EXPECT_NEAR(o->area, 4 * mm * mm, 1e-9 * 4 * mm * mm);
+    EXPECT_GT(o->point.x(), 1.5 * mm);
+    EXPECT_LT(o->point.x(), 2.5 * mm);
+  }
+  // With replace the coil takes the 4 mm^2: the magnet keeps 21 mm^2.
+  g.parts[1].replace_earlier = true;
+  const auto areas = region_areas(build_mesh_2d(g));
+  EXPECT_NEAR(areas.at(0), 21 * mm * mm, area_rel_tol * 25 * mm * mm);
+  EXPECT_NEAR(areas.at(1), 20 * mm * mm, area_rel_tol * 20 * mm * mm);
+}
+
+// Parts that only touch share no area: along an edge (rectangles of different lengths, whose
+// edge split points differ), a disk in an annulus's hole (a shared circle), a sector beside a
+// sector, and two disks tangent to each other (inscribed chords stay apart).
+TEST(Mesher2D, TouchingPartsAreNoOverlap) {
+  Geometry2D g = base_geometry(OuterKind::open, 40 * mm);
+  g.parts.push_back({"base", Rectangle{Vec2(0, -2 * mm), 20 * mm, 4 * mm, 0.0}, 1 * mm});
+  g.parts.push_back({"top", Rectangle{Vec2(1.3 * mm, 1.5 * mm), 7 * mm, 3 * mm, 0.0}, 0.7 * mm});
+  g.parts.push_back({"shaft", Disk{Vec2(0, 15 * mm), 3 * mm}, 0.5 * mm});
+  g.parts.push_back({"rotor", Annulus{Vec2(0, 15 * mm), 3 * mm, 6 * mm}, 0.5 * mm});
+  g.parts.push_back({"s1", AnnularSector{Vec2(0, -20 * mm), 2 * mm, 6 * mm, 0.0, 1.0}, 0});
+  g.parts.push_back({"s2", AnnularSector{Vec2(0, -20 * mm), 2 * mm, 6 * mm, 1.0, 2.0}, 0});
+  g.parts.push_back({"d1", Disk{Vec2(20 * mm, 0), 3 * mm}, 0});
+  g.parts.push_back({"d2", Disk{Vec2(26 * mm, 0), 3 * mm}, 0});
+  EXPECT_NO_THROW(build_mesh_2d(g));
 }
 
 // Speed figure (long tier: bash scripts/test.sh --long): about 50k triangles. CPU time is

@@ -11,13 +11,13 @@
 #include <filesystem>
 #include <sys/wait.h>
 
-#include "pipeline/run_analytic.hpp"
-#include "tests/case_helpers.hpp"
-#include "core/constants.hpp"
-#include "core/input_error.hpp"
-#include "tests/test_paths.hpp"
 #include "analytic/coil_closed_forms.hpp"
 #include "analytic/rotor_coil_pair.hpp"
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+#include "pipeline/run_analytic.hpp"
+#include "tests/case_helpers.hpp"
+#include "tests/test_paths.hpp"
 
 using namespace magfem;
 
@@ -255,7 +255,7 @@ regions:
       "analytic_axi_covered.yaml",
       head + "  - {name: coil, shape: rectangle, center: [6, 0], width: 4, height: 10, "
              "turns: 10, current: 1}\n"
-             "  - {name: hole, shape: disk, center: [6, 0], radius: 1}\n");
+             "  - {name: hole, shape: disk, center: [6, 0], radius: 1, overlap: replace}\n");
   try {
     run_case_analytic(read_case(covered), {});
     ADD_FAILURE() << "covered coil accepted";

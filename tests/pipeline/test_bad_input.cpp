@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/input_error.hpp"
 #include "pipeline/run3d.hpp"
 #include "tests/case_helpers.hpp"
-#include "core/input_error.hpp"
 #include "tests/test_paths.hpp"
 
 using namespace magfem;
@@ -99,10 +99,36 @@ TEST(BadInput, ProbeOutsideTheDomain) {
 TEST(BadInput, EmptyRegion) {
   // A later region covering an earlier one completely leaves it without elements.
   const std::string text = replace(good, "boundary:", R"(  - name: cover
+    overlap: replace
     shape: disk
     radius: 11
 boundary:)");
   expect_input_error("empty_region", text, {5, "regions[0]"}, true);
+}
+
+// A coil drawn into the magnet: an error at the coil's line naming both regions, before any
+// triangle is made; a misspelt `overlap` value names the field.
+TEST(BadInput, OverlappingRegions) {
+  const std::string coil =
+      R"(  - {name: coil, shape: rectangle, center: [11, 0], width: 4, height: 4,
+     turns: 10, current: 1}
+boundary:)";
+  const auto path = test::write_temp_case("overlap.yaml", replace(good, "boundary:", coil));
+  try {
+    run_case_2d(read_case(path));
+    FAIL() << "overlap accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 10);
+    EXPECT_EQ(e.field(), "regions[1]");
+    EXPECT_NE(std::string(e.what()).find("region 'coil' overlaps region 'magnet'"),
+              std::string::npos)
+        << e.what();
+  }
+  expect_input_error("overlap_value",
+                     replace(good, "boundary:", R"(  - {name: coil, shape: disk, radius: 1,
+     overlap: cut}
+boundary:)"),
+                     {11, "regions[1].overlap"});
 }
 
 TEST(BadInput, MeshThatCannotBeBuilt) {

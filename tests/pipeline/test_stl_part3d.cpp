@@ -172,6 +172,20 @@ TEST(StlPart3D, BadSurfacesNameTheirFile) {
   EXPECT_NE(why.find("ball.stl"), std::string::npos) << why;
   EXPECT_NE(why.find("beyond the domain ball"), std::string::npos) << why;
 
+  // With a symmetry plane: a surface part is not cut at planes, so the case is refused.
+  {
+    const std::string path = write_case("mirror.yaml", "ball.stl", 3.0);
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string open = "boundary: {type: open, radius: 25.000000";
+    ASSERT_NE(text.find(open), std::string::npos) << text;
+    text.replace(text.find(open), open.size(), open + ", symmetry: [{plane: x, field: parallel}]");
+    std::ofstream(path) << text;
+    std::tie(why, field) = mesh_refusal(path);
+    EXPECT_NE(why.find("surface (STL) part"), std::string::npos) << why;
+    EXPECT_EQ(field, "regions[0]");
+  }
+
   // From the command line: exit 2, the file named.
   const test::CliOutcome o =
       test::run_cli("mesh " + case_dir() + "/open.yaml --out " + case_dir() + "/open_out");

@@ -9,11 +9,11 @@
 #include <iterator>
 #include <string>
 
-#include "studies/sweep_axi.hpp"
-#include "tests/case_helpers.hpp"
+#include "analytic/coil_closed_forms.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
-#include "analytic/coil_closed_forms.hpp"
+#include "studies/sweep_axi.hpp"
+#include "tests/case_helpers.hpp"
 
 using namespace magfem;
 
@@ -84,6 +84,9 @@ TEST(AxiSweep, MagnetOverSteelByItsContourForceEqualsItsCurrentSheet) {
   o.jobs = 2;
   const auto by_contour = run_sweep_axi(magnet, o);
   const auto by_lorentz = run_sweep_axi(sheet, o);
+  // summary.json's method says which force the sweep took (it said "lorentz" for both).
+  EXPECT_EQ(sweep_axi_method(magnet, "magnet"), "stress_tensor_contour");
+  EXPECT_EQ(sweep_axi_method(sheet, "magnet"), "lorentz");
   for (std::size_t i = 0; i < o.positions_m.size(); ++i) {
     ASSERT_TRUE(by_contour[i].ok) << by_contour[i].error;
     ASSERT_TRUE(by_lorentz[i].ok) << by_lorentz[i].error;

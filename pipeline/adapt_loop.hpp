@@ -1,0 +1,122 @@
+#pragma once
+// The adaptive loop shared by 2D/axisymmetric (adapt2d.hpp) and 3D (adapt3d.hpp) solves:
+//   solve a pass -> record it -> stop when the estimated energy error and the estimated error
+//   of every named quantity are below accuracy_pct, or at a limit -> else plan the next mesh.
+// The dimensions differ only in how a pass is solved and how the next mesh is asked for (a
+// CGAL size field in 2D, size sources for TetGen in 3D); the marking rule (adapt_size_ratios),
+// the quantities' error estimate and the stopping rule are the same, and live here.
+//
+// The error of a named quantity (force, torque, probe) is its change between the last two
+// passes, extrapolated with the observed ratio of successive changes; the energy's is the
+// estimator's. Reaching max_passes, max_unknowns or the memory guard first stops with
+// converged = false, a stop reason and a warning: never a silent pass.
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "casefile/adapt_spec.hpp"
+#include "casefile/case_spec.hpp"
+#include "pipeline/force_results.hpp"
+#include "postproc/probe_table.hpp"
+
+namespace magfem {
+
+// One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
+struct AdaptPass {
+  int pass = 0;
+  std::size_t elements = 0;
+  int unknowns = 0;
+  double energy_J = 0;         // as summary.json energy_J (2D: per metre, stack or revolution)
+  double energy_error_pct = 0; // the estimator's (error_estimate2d.hpp, error_estimate3d.hpp)
+  double delta_energy_pct = 0; // |W - W_previous| / W; NaN on the first pass
+  std::vector<std::pair<std::string, double>> quantities; // the named quantities' values
+  std::vector<double> quantity_error_pct; // their estimated relative errors (NaN: unknown yet)
+  double seconds = 0;
+};
+
+struct AdaptHistory {
+  double accuracy_pct = 0;
+  bool converged = false;
+  std::string stop_reason; // why it stopped without converging (empty when converged)
+  std::vector<AdaptPass> passes;
+};
+
+// What one solved pass tells the loop.
+struct AdaptMeasure {
+  std::size_t elements = 0;
+  int unknowns = 0;
+  double energy_J = 0;
+  double energy_error_pct = 0;
+  std::vector<double> quantities; // parallel to the resolved quantities
+};
+
+// The next mesh as planned: its predicted unknowns, or why it cannot be made (the memory
+// guard's message); the loop stops on either limit.
+struct AdaptPlan {
+  double predicted_unknowns = 0;
+  std::string refusal; // non-empty: stop with this reason
+};
+
+// The dimension's side of the loop. solve(pass): mesh (the case's sizes on pass 1, else the
+// last accepted plan's), solve, estimate and measure. plan(target_pct, coarsen): the sizes
+// for the next pass from the last solve's indicators (adapt_size_ratios), kept until the
+// next solve.
+struct AdaptSteps {
+  std::function<AdaptMeasure(int pass)> solve;
+  std::function<AdaptPlan(double target_pct, bool coarsen)> plan;
+};
+
+// The quantities spec.adapt names, resolved (InputError at adapt.quantities otherwise).
+std::vector<AdaptQuantity> resolve_adapt_quantities(const CaseSpec& spec);
+
+// The value of a named quantity: energy_J, a force component, or a probe's rms |B| over the
+// `b_columns` of its table (planar Bx By, axisymmetric Br Bz, 3D Bx By Bz).
+double adapt_quantity_value(const AdaptQuantity& q, double energy_J,
+                            const std::vector<ForceResult>& forces,
+                            const std::vector<ProbeTable>& probes,
+                            const std::vector<std::string>& b_columns);
+
+// Runs the loop to convergence or a limit; on_pass (may be empty) hears every pass as it
+// ends. The caller's last solve is the last pass.
+AdaptHistory run_adapt_loop(const AdaptSpec& spec, const AdaptSteps& steps,
+                            const std::function<void(const AdaptPass&)>& on_pass);
+
+// The refinement ratio h_new / h of every element from its indicator eta_K^2 (J, or J/m in
+// 2D): elements whose indicator exceeds the equidistributed share of the target shrink, the
+// others grow,
+//   h_new = h * clamp((eta_target / eta_K)^(1/p), 0.3, 2)    (p: the element order),
+// the rule of Zienkiewicz and Zhu (1987): eta_K scales like h^p in the energy norm when the
+// number of elements is held fixed. target_pct: the energy error aimed at (energy_error_pct's
+// measure, 100 sum eta^2 / (2 W)), shared equally by all elements. Elements `in_shell` never
+// grow (2D: they keep the layers the mesher gives the open boundary; 3D: they carry no
+// indicator). coarsen = false: no ratio above 1. `exponent` replaces 1/p when positive (the
+// damping of 3D, adapt3d.cpp).
+std::vector<double> adapt_size_ratios(const std::vector<double>& eta2, double energy, int order,
+                                      double target_pct, bool coarsen,
+                                      const std::function<bool(std::size_t)>& in_shell,
+                                      double exponent = 0);
+
+// The warning of a loop that stopped before its target ("" when it converged).
+std::string adapt_warning(const AdaptHistory& h);
+
+// Files the history in the last pass's run (Run2D or Run3D), with the warning when the loop
+// stopped before its target.
+template <class Run> void file_adapt_history(Run& run, AdaptHistory history) {
+  if (!history.converged)
+    run.warnings.push_back(adapt_warning(history));
+  run.adapt = std::move(history);
+}
+
+// summary.json's adapt block.
+nlohmann::ordered_json adapt_json(const AdaptHistory& h);
+
+// One console line for a pass; `element_word`: "triangles" or "tetrahedra".
+std::string describe_adapt_pass(const AdaptPass& pass, const char* element_word = "triangles");
+
+// The summary's line: reached or not, after how many passes.
+std::string describe_adapt_result(const AdaptHistory& h);
+
+} // namespace magfem

@@ -1,0 +1,226 @@
+"""magfem.sweep (and the other studies): the command line's studies in-process, their tables
+as numpy columns (the compiled part is _core.sweep)."""
+import json
+
+import numpy as np
+
+from . import _core
+
+
+def _argument_error(field, message, call="<sweep>"):
+    """An InputError about an argument of a study call ("<sweep>: field: message")."""
+    err = _core._InputError("%s: %s: %s" % (call, field, message))
+    err.file, err.line, err.field = call, None, field
+    return err
+
+
+def _count(name, value):
+    """None -> 0 (the library's "as many as cores" / "as in the case"), else a positive int."""
+    if value is None:
+        return 0
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
+        raise _argument_error(name, "must be a positive integer, not %r" % (value,))
+    return int(value)
+
+
+class SweepResult(dict):
+    """A sweep's table: a dict of numpy columns named as the command line's sweep.csv
+    (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm,
+    Fz_N`` for translate sweeps), successful positions only, in the order given.
+
+    ``summary``: summary.json as ``magfem sweep`` writes it, but the provenance and the peak
+    memory; ``method``, ``positions`` (per position: ok, seconds, error, ...) and ``failed``
+    (the number of failed positions) are taken from it. ``csv()`` is sweep.csv's text."""
+
+    def __init__(self, columns, summary):
+        super().__init__(columns)
+        self.summary = summary
+        self.method = summary["method"]
+        self.positions = summary["positions"]
+        self.failed = summary["failed_positions"]
+
+    @property
+    def columns(self):
+        """The column names, in sweep.csv's order."""
+        return list(self.keys())
+
+    def csv(self):
+        """sweep.csv as the command line writes it (ten significant digits)."""
+        lines = [",".join(self.columns)]
+        for row in zip(*self.values()):
+            lines.append(",".join("%.10g" % v for v in row))
+        return "\n".join(lines) + "\n"
+
+    def __repr__(self):
+        return "<magfem.SweepResult %s: %d positions, %d failed>" % (
+            self.method, len(self.positions), self.failed)
+
+
+def _axis_text(axis):
+    if axis is None:
+        return ""
+    if isinstance(axis, str):
+        return axis
+    a = np.asarray(axis, dtype=float).ravel()
+    if a.size != 3:
+        raise _argument_error("axis", "x, y, z or three numbers, not %r" % (axis,))
+    return ",".join(repr(float(x)) for x in a)
+
+
+def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, progress=None,
+          *, translate=None, positions=None, point=None, surface_radius=None, order=None,
+          mesh_scale=1.0):
+    """Runs ``magfem sweep`` on a Case in-process and returns a SweepResult (numpy columns).
+
+    Rotating sweeps (3D and planar 2D cases): ``rotate`` names the group to turn, ``axis``
+    ("x", "y", "z" or three numbers; None: "y" in 3D, "z" for planar cases, which turn about
+    z only), ``angles`` in degrees (any sequence or numpy array), ``point`` on the axis
+    (three numbers in the case's length unit; default the origin), ``analytic`` (3D only: the
+    analytic interaction instead of FE), ``surface_radius`` (3D FE: the stress sphere's
+    radius in the case's length unit; default mid-gap). Translate sweeps (axisymmetric
+    cases): ``translate`` names the group moved along z, ``positions`` in mm (as the command
+    line's --positions). FE positions take ``order`` (1 or 2; None: as in the case) and
+    ``mesh_scale``. ``jobs``: positions at once (None: one per core).
+
+    ``progress``: None, True (a "position i/n done" line on stderr per position) or a
+    callable ``progress(done, total)``, called on the calling thread. The GIL is released
+    while positions run. Ctrl-C (or an exception raised by ``progress``) starts no further
+    position: those under way finish, then KeyboardInterrupt (or that exception) is raised.
+    Raises InputError for a bad argument or a case the sweep cannot move; a failed position
+    is not an exception (see ``SweepResult.failed`` and ``positions``).
+    """
+    request = _core.SweepRequest()
+    if rotate is not None and translate is not None:
+        raise _argument_error("rotate", "give one of rotate= (a group to turn) and translate= "
+                              "(a group to move)")
+    if translate is not None:
+        request.translate = str(translate)
+        values, field = positions, "positions"
+        if angles is not None:
+            raise _argument_error("angles", "translate sweeps take positions= (mm)")
+    else:
+        request.rotate = "" if rotate is None else str(rotate)
+        values, field = angles, "angles"
+        if positions is not None:
+            raise _argument_error("positions", "rotating sweeps take angles= (degrees)")
+    if values is None:
+        raise _argument_error(field, "give the %s" % field)
+    request.values = [float(v) for v in np.asarray(values, dtype=float).ravel()]
+    request.axis = _axis_text(axis)
+    request.analytic = bool(analytic)
+    if point is not None:
+        request.point = [float(v) for v in np.asarray(point, dtype=float).ravel()]
+    if surface_radius is not None:
+        request.surface_radius = float(surface_radius)
+    request.jobs = _count("jobs", jobs)
+    request.order = _count("order", order)
+    request.mesh_scale = float(mesh_scale)
+    out = _core.sweep(case._path or "", case._text or "", case._name or "", case._params,
+                      request, progress)
+    return SweepResult(out["columns"], json.loads(out["summary"]))
+
+
+class ActuatorResult:
+    """``magfem actuator``'s tables as numpy arrays (returned by magfem.actuator).
+
+    ``coils`` (names, the columns' order), ``resistance_ohm`` (per coil),
+    ``orientations_deg`` (n x 3: rx, ry, rz; R = Rz(rz) Ry(ry) Rx(rx)), ``gamma`` (n x 3 x
+    coils: the torque constants, N m/A, torque_constants.csv's kx, ky, kz per coil),
+    ``commutations``: demand name ("T_d", or "P_x", "P_y", "P_z" for the unit torques) ->
+    dict with ``torque_Nm`` (3,), ``currents_A`` (n x coils), ``P_W``, ``i_peak_A``,
+    ``cond_Gamma`` and ``ok`` (n,), as the commutation CSVs (NaN where an ill-conditioned
+    row leaves the cell empty); ``method`` ("charge_model" or "fe"), ``n_field_solves``,
+    ``notes``."""
+
+    def __init__(self, d):
+        self.method = d["method"]
+        self.coils = list(d["coils"])
+        self.resistance_ohm = d["resistance_ohm"]
+        self.orientations_deg = d["orientations_deg"]
+        self.gamma = d["gamma"]
+        self.commutations = dict(d["commutations"])
+        self.n_field_solves = d["n_field_solves"]
+        self.notes = list(d["notes"])
+
+    def __repr__(self):
+        return "<magfem.ActuatorResult %s: %d orientations x %d coils>" % (
+            self.method, len(self.orientations_deg), len(self.coils))
+
+
+def actuator(case, rotor, orientations, analytic=True, torque=None, *, order=None,
+             mesh_scale=1.0, progress=None):
+    """Runs ``magfem actuator`` on a Case in-process; returns an ActuatorResult.
+
+    ``rotor``: the rotor's group. ``orientations``: the command line's --orientations text
+    ("rx=-45:15:45,ry=0,rz=0", or a CSV file with rx_deg,ry_deg,rz_deg) or an n x 3 array of
+    (rx, ry, rz) in degrees. ``torque``: the demanded torque (3 numbers, N m; None: the unit
+    torques about x, y and z, the thesis's power study). ``analytic``: the charge model
+    (True) or FE (False; ``order``, ``mesh_scale`` and ``progress`` as in Case.solve, whose
+    Ctrl-C handling the FE solves share). The GIL is released meanwhile. Raises InputError.
+    """
+    request = _core.ActuatorRequest()
+    request.rotor = str(rotor)
+    if isinstance(orientations, str):
+        request.orientations_text = orientations
+    else:
+        rows = np.asarray(orientations, dtype=float)
+        if rows.ndim != 2 or rows.shape[1] != 3:
+            raise _argument_error("orientations", "an n x 3 array of (rx, ry, rz) in degrees "
+                                  "or the command line's text, not shape %s" % (rows.shape,),
+                                  "<actuator>")
+        request.orientations = [tuple(float(x) for x in r) for r in rows]
+    if torque is not None:
+        t = np.asarray(torque, dtype=float).ravel()
+        if t.size != 3:
+            raise _argument_error("torque", "three numbers (N m)", "<actuator>")
+        request.torque_Nm = tuple(float(x) for x in t)
+    request.analytic = bool(analytic)
+    request.order = _count("order", order)
+    request.mesh_scale = float(mesh_scale)
+    return ActuatorResult(_core.actuator(case._path or "", case._text or "", case._name or "",
+                                         case._params, request, progress))
+
+
+class ValidationResult:
+    """``magfem validate``'s results (returned by magfem.validate): ``rows``, one dict per
+    entry as results.json's "entries" (id, source, quantity, unit, published, fe, analytic,
+    tolerance_pct, the errors, status, seconds, method, details, ...), ``summary`` (status
+    -> count), ``tier``, ``catalogue``, ``failed`` (ids of failed entries) and ``table()``
+    (numpy columns of the numeric results.csv columns)."""
+
+    def __init__(self, results):
+        self.rows = results["entries"]
+        self.summary = results["summary"]
+        self.tier = results["tier"]
+        self.catalogue = results["catalogue"]
+        self.failed = [r["id"] for r in self.rows if r["status"] == "fail"]
+
+    def table(self):
+        """id and status as lists; published, fe, analytic, tolerance_pct, fe_error_pct,
+        analytic_error_pct and seconds as numpy arrays (NaN where an entry has none)."""
+        out = {"id": [r["id"] for r in self.rows], "status": [r["status"] for r in self.rows]}
+        for key in ("published", "fe", "analytic", "tolerance_pct", "fe_error_pct",
+                    "analytic_error_pct", "seconds"):
+            out[key] = np.array([np.nan if r[key] is None else r[key] for r in self.rows])
+        return out
+
+    def __repr__(self):
+        return "<magfem.ValidationResult %s: %s>" % (self.tier, self.summary)
+
+
+def validate(tier="quick", entries=None, source=None, jobs=None, progress=None,
+             catalogue=None):
+    """Runs ``magfem validate`` in-process (nothing written); returns a ValidationResult.
+
+    ``tier``: "quick" or "full"; ``entries``: catalogue ids (as --only; None: all of the
+    tier), or ``source``: a seed file prefix (as --source); ``jobs``: entries at once (None:
+    one per core); ``catalogue``: another catalogue file (None: the installed or source
+    tree's validation/catalogue.yaml). ``progress``: None, True or ``progress(done, total)``
+    on the calling thread; Ctrl-C starts no further entry and raises KeyboardInterrupt, as
+    in sweep(). A failed entry is a row with status "fail", not an exception.
+    """
+    if isinstance(entries, str):
+        entries = [entries]
+    out = _core.validate(str(tier), [str(e) for e in entries or []], source or "",
+                         _count("jobs", jobs), str(catalogue or ""), progress)
+    return ValidationResult(json.loads(out))

@@ -1,0 +1,33 @@
+#pragma once
+// Sensitivity of the 2D (planar or axisymmetric) solution to one region's current at a
+// converged operating point: K du = f, K the Newton tangent there and f the load of the
+// region's current density per ampere (turns / area), so that du = dA / dI. For linear media
+// du is the potential of that current alone (magnets and other currents do not enter); for
+// nonlinear iron it is the small-signal response. The differential inductance of a coil is
+// its linkage with du (coil_linkage_axi.hpp).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/assembler2d.hpp"
+#include "solver/dof_map2d.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/problem2d.hpp"
+
+namespace magfem {
+
+struct CurrentPerAmpere2D {
+  int part = 0;             // Problem2D::parts index
+  double density_per_A = 0; // A/m^2 per ampere of the coil current (turns / meshed area)
+};
+
+// du/dI for every entry, as free-DOF vectors of `assembler` (built on `problem` and `dofs`).
+// One factorization of the tangent serves all of them.
+std::vector<Eigen::VectorXd> current_sensitivities_2d(const Problem2D& problem,
+                                                      const DofMap2D& dofs,
+                                                      const Assembler2D& assembler,
+                                                      const Eigen::VectorXd& u,
+                                                      const std::vector<CurrentPerAmpere2D>& coils,
+                                                      const LinearSolverOptions& options);
+
+} // namespace magfem
