@@ -497,6 +497,18 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
   return m;
 }
 
+// Mesh3D::tet_size: what tet_unsuitable and the regions' volume bounds asked for.
+std::vector<double> requested_sizes(const Mesh3D& m, const SizeRules& rules,
+                                    const SizeField3D& field) {
+  std::vector<double> h(m.n_tets());
+  for (std::size_t t = 0; t < m.n_tets(); ++t) {
+    const auto& k = m.tets[t];
+    const Vec3 centre = (m.nodes[k[0]] + m.nodes[k[1]] + m.nodes[k[2]] + m.nodes[k[3]]) / 4;
+    h[t] = std::min(field(centre), rules.region(m.tet_part[t]));
+  }
+  return h;
+}
+
 // One warning per pair of parts with an unresolved gap. A warning, not a refusal: the mesh is
 // valid and the answer usable (a coarse --mesh-scale run is often a deliberate first look or
 // a convergence study's coarsest step), but the field in the gap, and a force across it, are
@@ -663,6 +675,7 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   run_tetgen(geo, in, out, field);
   Mesh3D m = collect_mesh(geo, dec, surf, out);
   m.warnings = unresolved_gap_warnings(geo, rules.scale, unresolved);
+  m.tet_size = requested_sizes(m, rules, field);
   return m;
 }
 
