@@ -243,6 +243,9 @@ void check_shape(const AnalyticMagnet& magnet) {
   } else if (const auto* b = std::get_if<Box>(&magnet.shape)) {
     if (!(b->size.minCoeff() > 0))
       fail("box needs positive sizes");
+  } else {
+    fail("the charge model takes spherical segments, cylinders and boxes, not triangulated "
+         "surfaces");
   }
   if (magnet.magnetization.active() && !(magnet.B_r >= 0))
     fail("B_r must be >= 0");

@@ -1,8 +1,9 @@
 // Regions of a 3D case: spherical segments and segment arrays (with the thesis's
-// magnetization patterns), cylinders and radial cylinder arrays on a sphere, boxes; rigid
-// placement and groups.
+// magnetization patterns), cylinders and radial cylinder arrays on a sphere, boxes, CAD parts
+// (closed STL surfaces); rigid placement and groups.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <set>
 
@@ -11,6 +12,8 @@
 #include "casefile/case_spec.hpp"
 #include "casefile/reader_helpers.hpp"
 #include "core/constants.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/stl_reader3d.hpp"
 
 namespace magfem {
 namespace {
@@ -83,6 +86,23 @@ SphericalSegment read_segment(const YamlNode& r, double s) {
   if (g.phi_max - g.phi_min > 2 * pi + 1e-12)
     r.at("phi").fail("the phi range exceeds 360 degrees");
   return g;
+}
+
+// shape: surface, file: part.stl (relative to the case file), file_unit: mm (STL files carry
+// no unit; CAD systems export millimetres by default).
+TriangleSurface read_surface(const YamlNode& r) {
+  const YamlNode file = r.at("file");
+  const std::filesystem::path given(file.as_string());
+  const std::filesystem::path path =
+      given.is_absolute() ? given : std::filesystem::path(r.file()).parent_path() / given;
+  const double unit = r.has("file_unit") ? unit_scale(r.at("file_unit")) : 1e-3;
+  try {
+    TriangleSurface surface = read_stl_surface(path.string(), unit);
+    surface.file = given.string();
+    return surface;
+  } catch (const MeshError& e) {
+    file.fail(e.reason);
+  }
 }
 
 struct Reader3D {
@@ -322,13 +342,17 @@ void read_regions_3d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary
       if (size.minCoeff() <= 0)
         r.at("size").fail("box sizes must be positive");
       reader.single(r, name, Box{size});
+    } else if (shape == "surface") {
+      r.allow_keys(keys_with({"file", "file_unit"}));
+      reader.single(r, name, read_surface(r));
     } else if (shape == "segment_array") {
       reader.segment_array(r, name);
     } else if (shape == "cylinder_array") {
       reader.cylinder_array(r, name);
     } else {
-      r.at("shape").fail("unknown shape '" + shape +
-                         "' (spherical_segment, segment_array, cylinder, cylinder_array, box)");
+      r.at("shape").fail(
+          "unknown shape '" + shape +
+          "' (spherical_segment, segment_array, cylinder, cylinder_array, box, surface)");
     }
   }
 }

@@ -150,6 +150,16 @@ std::vector<double> region_symmetry_factors(const CaseSpec& spec) {
 }
 
 void check_symmetry_3d(const CaseSpec& spec) {
+  if (spec.geometry3d.symmetry.empty())
+    return;
+  // A CAD surface would have to be cut at the plane and its mirror matched triangle by
+  // triangle: not done, so say so rather than mesh a share that may not be one.
+  for (std::size_t i = 0; i < spec.geometry3d.parts.size(); ++i)
+    if (std::holds_alternative<TriangleSurface>(spec.geometry3d.parts[i].shape))
+      throw InputError(spec.file, spec.regions[i].line, "regions[" + std::to_string(i) + "]",
+                       "part '" + spec.regions[i].name +
+                           "' is a surface (STL) part, which cannot be used with symmetry "
+                           "planes: model the whole device (remove boundary.symmetry)");
   for (const SymmetryPlane3D& plane : spec.geometry3d.symmetry) {
     check_parts(spec, plane);
     check_coils(spec, plane);

@@ -20,6 +20,7 @@
 #include "cli/command_options.hpp"
 #include "cli/materials_command.hpp"
 #include "cli/mesh_command.hpp"
+#include "core/backend_module.hpp"
 #include "core/input_error.hpp"
 #include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
@@ -481,6 +482,8 @@ int main(int argc, char** argv) {
     return fail(2, std::string("error: ") + e.what());
   } catch (const magfem::SolveError& e) {
     return fail(3, std::string("solver failed: ") + e.what());
+  } catch (const magfem::BackendModuleError& e) {
+    return fail(1, std::string("installation error: ") + e.what());
   } catch (const std::exception& e) {
     return fail(1, std::string("internal error: ") + e.what());
   }

@@ -24,8 +24,8 @@ magfem_require(NLopt_FOUND libnlopt-cxx-dev)
 find_package(Threads REQUIRED)
 
 # PETSc (with hypre's BoomerAMG and Open MPI) for algebraic multigrid in 3D and the
-# distributed solve under mpirun; only solver/petsc_solver.cpp includes it (and
-# solver/mpi_context.cpp MPI).
+# distributed solve under mpirun; only the module magfem_petsc (solver/petsc_backend.hpp)
+# includes and links them.
 find_package(PkgConfig QUIET)
 if(PkgConfig_FOUND)
   pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)
@@ -33,8 +33,8 @@ endif()
 magfem_require(PETSC_FOUND libpetsc-real-dev)
 find_package(MPI QUIET COMPONENTS CXX)
 magfem_require(MPI_CXX_FOUND libopenmpi-dev)
-add_library(magfem_petsc INTERFACE)
-target_link_libraries(magfem_petsc INTERFACE PkgConfig::PETSC MPI::MPI_CXX)
+add_library(magfem_petsc_libs INTERFACE)
+target_link_libraries(magfem_petsc_libs INTERFACE PkgConfig::PETSC MPI::MPI_CXX)
 
 # SuiteSparse ships no CMake config in Debian 12: locate CHOLMOD directly.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)

@@ -1,5 +1,6 @@
 # Install layout (relative to the prefix, so the tree can move):
 #   bin/magfem
+#   ${CMAKE_INSTALL_LIBDIR}/magfem/libmagfem_{petsc,vtk}.so  backend modules (MagfemModules.cmake)
 #   share/magfem/{examples,docs,validation,materials}   found by the binary from its own path
 #   share/bash-completion/completions/magfem
 #   share/doc/magfem/README.md

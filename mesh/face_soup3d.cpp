@@ -1,6 +1,8 @@
 #include "mesh/face_soup3d.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include <Eigen/Geometry>
@@ -131,6 +133,21 @@ void FaceSoup3D::check_parts(const Geometry3D& geo) const {
                               "' (parts of different frames must be disjoint)");
     }
   }
+}
+
+std::vector<int> FaceSoup3D::labels_met(const std::array<Vec3, 3>& triangle) const {
+  std::vector<Iterator> hits;
+  tree_->tree.all_intersected_primitives(
+      Triangle(cgal(triangle[0]), cgal(triangle[1]), cgal(triangle[2])), std::back_inserter(hits));
+  std::vector<int> labels;
+  for (Iterator id : hits) {
+    const GridFace3D& face = dec_.faces[tri_face_[id - tree_->triangles.begin()]];
+    labels.push_back(face.label_low);
+    labels.push_back(face.label_high);
+  }
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  return labels;
 }
 
 double FaceSoup3D::distance_to_face(const Vec3& origin, const Vec3& direction, double min_distance,

@@ -2,6 +2,7 @@
 // Coarse triangulations of all interface faces (their sample grids cut into triangles) for
 // geometric queries before the real surface mesh exists: intersections between parts of
 // different frames, and widths of air gaps (first face hit along a ray).
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -25,6 +26,10 @@ public:
   // when a part lies inside a part of another frame, or when a part outside frame 0 reaches the
   // domain ball's radius.
   void check_parts(const Geometry3D& geometry) const;
+
+  // Labels (>= 0: part indices; region_shell_3d etc. for the domain's spheres) on either side
+  // of the faces whose coarse triangles the triangle (global corners) meets, sorted, unique.
+  std::vector<int> labels_met(const std::array<Vec3, 3>& triangle) const;
 
   // Distance from origin along the unit direction to the first face met at an angle of
   // incidence within about 78 deg of the normal (grazing hits are no gap) and at least

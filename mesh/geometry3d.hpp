@@ -2,6 +2,7 @@
 // 3D geometry as the mesher and the analytic models see it: parts built from primitives in a
 // local frame, placed by a rigid motion. SI metres and radians (the case reader converts).
 // Spherical coordinates as in the thesis body: theta polar from +z, phi azimuth from +x.
+#include <array>
 #include <memory>
 #include <string>
 #include <variant>
@@ -33,7 +34,22 @@ struct Box {
   Vec3 size = Vec3::Zero();
 };
 
-using Shape3D = std::variant<SphericalSegment, Cylinder, Box>;
+class SurfaceIndex3D; // mesh/surface_index3d.hpp
+
+// A closed triangulated surface read from a file (an STL part), in the local frame: one
+// connected, manifold, self-intersection-free shell, every triangle counter-clockwise seen
+// from outside (mesh/stl_reader3d.hpp checks all of this). The mesher keeps its triangles as
+// the part's boundary (it may split them, never move them).
+struct TriangleSurface {
+  std::string file; // as the case names it (for messages)
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  Vec3 inside_point = Vec3::Zero(); // strictly inside, near the surface (the region seed)
+  // Point-in-volume and distance queries (built once, shared by copies of the part).
+  std::shared_ptr<const SurfaceIndex3D> index;
+};
+
+using Shape3D = std::variant<SphericalSegment, Cylinder, Box, TriangleSurface>;
 
 struct Part3D {
   std::string name;

@@ -8,6 +8,7 @@
 
 #include "mesh/face_chart3d.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/surface_index3d.hpp"
 
 namespace magfem {
 namespace {
@@ -93,6 +94,8 @@ void validate_shape(const Part3D& part, const Cylinder& c) {
           "r_outer must exceed r_inner");
   require(std::isfinite(c.height) && c.height > 0, part, "height", "height must be > 0");
 }
+
+void validate_shape(const Part3D&, const TriangleSurface&) {} // checked when read
 
 void validate_shape(const Part3D& part, const Box& b) {
   require(b.size.allFinite() && b.size.minCoeff() > 0, part, "size",
@@ -505,6 +508,11 @@ GridDecomposition3D decompose_geometry_3d(const Geometry3D& geo) {
   for (std::size_t p = 0; p < geo.parts.size(); ++p) {
     const Part3D& part = geo.parts[p];
     validate_placement(part);
+    // A triangulated surface is no grid's: the mesher takes its triangles as they are.
+    if (std::holds_alternative<TriangleSurface>(part.shape)) {
+      dec.part_frame[p] = -1;
+      continue;
+    }
     std::visit([&](const auto& s) { validate_shape(part, s); }, part.shape);
     validate_thickness(geo, part);
     const GridKind3D kind = kind_of(part.shape);
@@ -576,6 +584,8 @@ bool part_contains(const Part3D& part, const Vec3& x, double tol) {
     return l.z() >= -tol && l.z() <= c->height + tol && rho >= c->r_inner - tol &&
            rho <= c->r_outer + tol;
   }
+  if (const auto* t = std::get_if<TriangleSurface>(&part.shape))
+    return t->index->contains(l, tol);
   const Vec3 h = std::get<Box>(part.shape).size / 2;
   return (l.cwiseAbs() - h).maxCoeff() <= tol;
 }

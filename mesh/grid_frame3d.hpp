@@ -60,7 +60,7 @@ struct GridDecomposition3D {
   std::vector<GridFrame3D> frames; // frames[0]: spherical, identity placement, holds the
                                    // outer ball (and shell) boundaries
   std::vector<GridFace3D> faces;
-  std::vector<int> part_frame; // per part, its frame
+  std::vector<int> part_frame; // per part, its frame (-1: a TriangleSurface, in no grid)
 };
 
 // Validates every part (degenerate primitive, bad placement, part of frame 0 beyond the

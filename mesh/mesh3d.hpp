@@ -33,6 +33,13 @@ struct Mesh3D {
   std::vector<std::vector<std::array<int, 3>>> symmetry_faces;
   MeshQuality3D quality;
   std::vector<double> part_volumes; // per Geometry3D part, m^3 (sum of its tet volumes)
+  // Per tet: the size the mesher asked for there (m), its size field at the centroid capped by
+  // the region's size. TetGen keeps every longest edge below it and lands well below (about
+  // 0.7 of it in the mean, measured on the magnetized sphere), so a refinement relative to a
+  // mesh must scale the request, not the edges it produced: asking for the edges again shrank
+  // every tet by that factor, about 3x the unknowns a pass where nothing was to change.
+  // Empty for meshes not made by build_mesh_3d.
+  std::vector<double> tet_size;
   // What the mesher could not honour but did not refuse (e.g. an air gap with fewer than one
   // element across it at a coarse --mesh-scale); the run reports them (summary.json warnings).
   std::vector<std::string> warnings;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <tuple>
@@ -22,6 +23,8 @@
 #include "mesh/mesh_quality3d.hpp"
 #include "mesh/size_field3d.hpp"
 #include "mesh/surface_mesher3d.hpp"
+#include "mesh/surface_part_checks3d.hpp"
+#include "mesh/surface_part_rays3d.hpp"
 #include "mesh/tetgen_termination.hpp"
 
 namespace magfem {
@@ -347,7 +350,7 @@ void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
   for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
     const int f = surf.triangle_face[t];
     if (f < 0)
-      continue; // symmetry planes bound the domain: one side is outside
+      continue; // symmetry planes bound the domain; surface parts are seeded by the part
     if (seen[f])
       continue;
     seen[f] = true;
@@ -366,6 +369,16 @@ void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
       const double h = rules.region(label);
       const Vec3 x = centre + side * eps * n;
       seeds.push_back({x.x(), x.y(), x.z(), attribute_of(label), h * h * h / (6 * std::sqrt(2.0))});
+    }
+  }
+  // A surface part: the point inside it that its reader found.
+  for (std::size_t p = 0; p < rules.geo.parts.size(); ++p) {
+    const Part3D& part = rules.geo.parts[p];
+    if (const auto* s = std::get_if<TriangleSurface>(&part.shape)) {
+      const Vec3 x = part.placement.to_global(s->inside_point);
+      const double h = rules.region(static_cast<int>(p));
+      seeds.push_back({x.x(), x.y(), x.z(), attribute_of(static_cast<int>(p)),
+                       h * h * h / (6 * std::sqrt(2.0))});
     }
   }
   in.numberofregions = static_cast<int>(seeds.size());
@@ -394,7 +407,7 @@ void fill_plc(const SurfaceMesh3D& surf, tetgenio& in) {
     f.polygonlist[0].vertexlist = new int[3];
     for (int k = 0; k < 3; ++k)
       f.polygonlist[0].vertexlist[k] = surf.triangles[t][k];
-    in.facetmarkerlist[t] = surf.triangle_face[t] + 1; // symmetry planes: <= 0
+    in.facetmarkerlist[t] = surf.triangle_face[t] + 1; // symmetry planes and surface parts: <= 0
   }
 }
 
@@ -461,10 +474,12 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
   m.symmetry = geo.symmetry;
   m.symmetry_faces.resize(geo.symmetry.size());
   for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
-    if (surf.triangle_face[t] < 0) {
+    if (is_symmetry_face(surf.triangle_face[t])) {
       m.symmetry_faces[symmetry_plane_of(surf.triangle_face[t])].push_back(surf.triangles[t]);
       continue;
     }
+    if (surf.triangle_face[t] < 0)
+      continue; // a surface part's: inside the domain
     const GridFace3D& face = dec.faces[surf.triangle_face[t]];
     if (face.label_high != region_exterior_3d)
       continue;
@@ -480,6 +495,18 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
   }
   m.quality = compute_quality_3d(m.nodes, m.tets);
   return m;
+}
+
+// Mesh3D::tet_size: what tet_unsuitable and the regions' volume bounds asked for.
+std::vector<double> requested_sizes(const Mesh3D& m, const SizeRules& rules,
+                                    const SizeField3D& field) {
+  std::vector<double> h(m.n_tets());
+  for (std::size_t t = 0; t < m.n_tets(); ++t) {
+    const auto& k = m.tets[t];
+    const Vec3 centre = (m.nodes[k[0]] + m.nodes[k[1]] + m.nodes[k[2]] + m.nodes[k[3]]) / 4;
+    h[t] = std::min(field(centre), rules.region(m.tet_part[t]));
+  }
+  return h;
 }
 
 // One warning per pair of parts with an unresolved gap. A warning, not a refusal: the mesh is
@@ -503,6 +530,67 @@ std::vector<std::string> unresolved_gap_warnings(const Geometry3D& geo, double s
     out.emplace_back(text);
   }
   return out;
+}
+
+// Points on the triangle abc at most about `step` apart (a barycentric grid).
+std::vector<Vec3> triangle_samples(const Vec3& a, const Vec3& b, const Vec3& c, double step) {
+  const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+  const int n = std::max(1, static_cast<int>(std::ceil(longest / step)));
+  std::vector<Vec3> out;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j)
+      out.push_back(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n));
+  return out;
+}
+
+// The size rules on the triangles of the surface parts, as on a built-in part's faces: the
+// smaller of the part's and the air's region size, sampled like them (their facets are the
+// geometry, so no chord limit applies), and the gap rule across the air to every other part
+// (rays along the outward normal; a part's gaps to itself, across a concave edge, are not
+// counted, or every such edge would ask for ever smaller elements towards it).
+void add_surface_part_sources(const GridDecomposition3D& dec, const SizeRules& rules,
+                              const FaceSoup3D& soup, SizeField3D& field) {
+  const Geometry3D& geo = rules.geo;
+  const int layers = std::max(1, geo.options.gap_layers);
+  const double eps = 1e-7 * geo.outer.radius;
+  std::unique_ptr<SurfacePartRays3D> rays;
+  for (std::size_t p = 0; p < geo.parts.size(); ++p) {
+    const Part3D& part = geo.parts[p];
+    const auto* s = std::get_if<TriangleSurface>(&part.shape);
+    if (!s)
+      continue;
+    if (!rays)
+      rays = std::make_unique<SurfacePartRays3D>(geo, dec, soup);
+    const int self = static_cast<int>(p);
+    const double h = std::min(rules.region(self), rules.region(region_background_3d));
+    const double spacing = sample_fraction * h;
+    for (const auto& t : s->triangles) {
+      const Vec3 a = part.placement.to_global(s->points[t[0]]);
+      const Vec3 b = part.placement.to_global(s->points[t[1]]);
+      const Vec3 c = part.placement.to_global(s->points[t[2]]);
+      const Vec3 n = (b - a).cross(c - a).normalized(); // outward (the reader's orientation)
+      for (const Vec3& x : triangle_samples(a, b, c, spacing))
+        field.add_source(x, h);
+      if (part.air)
+        continue; // an air part bounds no gap (see add_surface_sources)
+      auto gap = [&](const Vec3& x) {
+        return rays->gap(self, x + eps * n, n, 0.1 * spacing) + eps;
+      };
+      double narrowest = std::numeric_limits<double>::infinity();
+      for (const Vec3& x : triangle_samples(a, b, c, spacing))
+        if (const double w = gap(x); rules.scale * w / layers < h)
+          narrowest = std::min(narrowest, w);
+      if (!std::isfinite(narrowest))
+        continue;
+      for (const Vec3& x : triangle_samples(a, b, c, std::min(narrowest / layers, spacing))) {
+        const double w = gap(x), across = rules.scale * w / layers;
+        if (across >= h)
+          continue;
+        for (int k = 0; k <= layers; ++k)
+          field.add_source(x + n * (w * k / layers), gap_source_factor * across);
+      }
+    }
+  }
 }
 
 // The size field capped by the region size of the part (or air) at x: TetGen's volume bound
@@ -535,6 +623,7 @@ SizeField3D build_size_field(const GridDecomposition3D& dec, const SizeRules& ru
                              UnresolvedGaps* unresolved = nullptr) {
   SizeField3D field(grading);
   add_surface_sources(dec, rules, fs, soup, field, unresolved);
+  add_surface_part_sources(dec, rules, soup, field);
   if (rules.geo.options.probe_size > 0)
     for (const ProbeSurface& p : refine)
       field.add_probe(p, rules.scale * rules.geo.options.probe_size);
@@ -568,6 +657,7 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   const FaceSizing fs = face_sizing(dec, rules);
   const FaceSoup3D soup(dec, fs.soup_spacing);
   soup.check_parts(geo);
+  check_surface_parts(geo, soup);
 
   UnresolvedGaps unresolved;
   const SizeField3D field = build_size_field(dec, rules, fs, soup, refine, &unresolved);
@@ -578,13 +668,14 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   const double outer =
       geo.outer.radius * (geo.outer.kind == OuterKind3D::open ? geo.outer.shell_ratio : 1.0);
   const SurfaceMesh3D surf = mesh_surfaces_3d(
-      dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio, geo.symmetry, outer);
+      geo, dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio, geo.symmetry, outer);
   tetgenio in, out;
   fill_plc(surf, in);
   add_region_seeds(dec, surf, rules, in);
   run_tetgen(geo, in, out, field);
   Mesh3D m = collect_mesh(geo, dec, surf, out);
   m.warnings = unresolved_gap_warnings(geo, rules.scale, unresolved);
+  m.tet_size = requested_sizes(m, rules, field);
   return m;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 #include "mesh/grid_frame3d.hpp"
 
 namespace magfem {
@@ -26,6 +28,12 @@ Vec3 local_sample(const Shape3D& shape, const Vec3& t) {
           const double r = s.r_inner + t.x() * (s.r_outer - s.r_inner);
           const double phi = 2 * std::numbers::pi * t.y();
           return Vec3(r * std::cos(phi), r * std::sin(phi), t.z() * s.height);
+        } else if constexpr (std::is_same_v<T, TriangleSurface>) {
+          // Its bounding box: samples outside the surface fail part_contains(a) anyway.
+          Eigen::AlignedBox3d box;
+          for (const Vec3& x : s.points)
+            box.extend(x);
+          return box.min() + t.cwiseProduct(box.sizes());
         } else {
           return (t - Vec3::Constant(0.5)).cwiseProduct(s.size);
         }
@@ -41,7 +49,12 @@ double size_of(const Shape3D& shape) {
           return s.r_outer;
         else if constexpr (std::is_same_v<T, Cylinder>)
           return std::hypot(s.r_outer, s.height);
-        else
+        else if constexpr (std::is_same_v<T, TriangleSurface>) {
+          Eigen::AlignedBox3d box;
+          for (const Vec3& x : s.points)
+            box.extend(x);
+          return box.diagonal().norm();
+        } else
           return s.size.norm();
       },
       shape);

@@ -1,5 +1,6 @@
 #include "mesh/surface_mesher3d.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -82,21 +83,12 @@ private:
   std::unordered_map<Key, std::vector<int>, Hash> cells_;
 };
 
-// A grid edge: along `axis` over cell `cell`, at breakpoints fixed[0], fixed[1] of the other
-// two axes taken in increasing axis order.
-struct EdgeKey {
-  int frame, axis, cell;
-  std::array<int, 2> fixed;
-  bool operator<(const EdgeKey& o) const {
-    return std::tie(frame, axis, cell, fixed) < std::tie(o.frame, o.axis, o.cell, o.fixed);
-  }
-};
-
 // Divides the curve at(t), t in [lo, hi], so that consecutive points are about h apart:
-// integrates 1/h along it and places points at equal increments of the integral. Point ids
-// from the lower to the upper end.
-std::vector<int> divide_curve(const std::function<Vec3(double)>& at, double lo, double hi,
-                              const SizeField3D& size, PointPool& pool) {
+// integrates 1/h along it and places points at equal increments of the integral. Returns the
+// pooled point ids from at(lo) to at(hi); a curve of no length is one point.
+template <class Curve>
+std::vector<int> divide_curve(const Curve& at, double lo, double hi, const SizeField3D& size,
+                              PointPool& pool) {
   const Vec3 a = at(lo), b = at(hi), m = at(0.5 * (lo + hi));
   if ((a - b).norm() + (a - m).norm() < 1e-12 * (1 + a.norm()))
     return {pool.insert(a)};
@@ -120,17 +112,27 @@ std::vector<int> divide_curve(const std::function<Vec3(double)>& at, double lo, 
   }
   const int n_seg = std::max(1, static_cast<int>(std::ceil(integral.back() - 1e-6)));
   std::vector<int> ids{pool.insert(a)};
-  std::size_t s = 0;
+  std::size_t k_s = 0;
   for (int k = 1; k < n_seg; ++k) {
     const double target = integral.back() * k / n_seg;
-    while (integral[s + 1] < target)
-      ++s;
-    const double w = (target - integral[s]) / (integral[s + 1] - integral[s]);
-    ids.push_back(pool.insert(at(ts[s] + w * (ts[s + 1] - ts[s]))));
+    while (integral[k_s + 1] < target)
+      ++k_s;
+    const double w = (target - integral[k_s]) / (integral[k_s + 1] - integral[k_s]);
+    ids.push_back(pool.insert(at(ts[k_s] + w * (ts[k_s + 1] - ts[k_s]))));
   }
   ids.push_back(pool.insert(b));
   return ids;
 }
+
+// A grid edge: along `axis` over cell `cell`, at breakpoints fixed[0], fixed[1] of the other
+// two axes taken in increasing axis order.
+struct EdgeKey {
+  int frame, axis, cell;
+  std::array<int, 2> fixed;
+  bool operator<(const EdgeKey& o) const {
+    return std::tie(frame, axis, cell, fixed) < std::tie(o.frame, o.axis, o.cell, o.fixed);
+  }
+};
 
 class CurveCache {
 public:
@@ -321,11 +323,12 @@ std::size_t refine_into(Cdt& cdt, const ToSurface& to_3d, const SizeField3D& siz
   return n_constrained;
 }
 
-void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& size,
-               CurveCache& curves, SurfaceMesh3D& out) {
-  const GridFace3D& face = dec.faces[face_id];
-  const FaceChart3D chart(dec.frames[face.frame], face);
-  const std::vector<int> loop = face_loop(dec, face, curves);
+// Triangulates the closed loop of surface points (ids into out.points) in its chart by 2D
+// Delaunay refinement without splitting the loop's segments; the triangles go to `out` with
+// `face_code` as their triangle_face.
+template <class Chart>
+void mesh_loop(const Chart& chart, const std::vector<int>& loop, const SizeField3D& size,
+               int face_code, SurfaceMesh3D& out) {
   if (loop.size() < 3)
     throw MeshError("", "", "internal: degenerate interface face");
   Cdt cdt;
@@ -340,8 +343,73 @@ void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& s
   for (std::size_t i = 0; i < vh.size(); ++i)
     cdt.insert_constraint(vh[i], vh[(i + 1) % vh.size()]);
   const ToSurface to_3d = [&chart](const Eigen::Vector2d& uv) { return chart.to_3d(uv); };
-  if (refine_into(cdt, to_3d, size, face_id, out) != loop.size())
+  if (refine_into(cdt, to_3d, size, face_code, out) != loop.size())
     throw MeshError("", "", "internal: a face boundary was split while meshing the face");
+}
+
+void mesh_face(const GridDecomposition3D& dec, int face_id, const SizeField3D& size,
+               CurveCache& curves, SurfaceMesh3D& out) {
+  const GridFace3D& face = dec.faces[face_id];
+  mesh_loop(FaceChart3D(dec.frames[face.frame], face), face_loop(dec, face, curves), size, face_id,
+            out);
+}
+
+// The plane of one triangle of a TriangleSurface, with isometric coordinates.
+class TriangleChart {
+public:
+  TriangleChart(const Vec3& a, const Vec3& b, const Vec3& c) : origin_(a) {
+    e1_ = (b - a).normalized();
+    e2_ = (b - a).cross(c - a).cross(b - a).normalized();
+  }
+  Eigen::Vector2d to_2d(const Vec3& x) const {
+    return {(x - origin_).dot(e1_), (x - origin_).dot(e2_)};
+  }
+  Vec3 to_3d(const Eigen::Vector2d& uv) const { return origin_ + uv.x() * e1_ + uv.y() * e2_; }
+
+private:
+  Vec3 origin_, e1_, e2_;
+};
+
+// The triangles of the TriangleSurface parts: each edge divided once by the size field (so
+// neighbours conform), each triangle refined in its plane. The input corners stay where they
+// are and every new point lies on an input triangle: the surface is split, never moved.
+void mesh_surface_parts(const Geometry3D& geo, const SizeField3D& size, PointPool& pool,
+                        SurfaceMesh3D& out) {
+  for (std::size_t p = 0; p < geo.parts.size(); ++p) {
+    const auto* surface = std::get_if<TriangleSurface>(&geo.parts[p].shape);
+    if (!surface)
+      continue;
+    std::vector<Vec3> x;
+    for (const Vec3& local : surface->points)
+      x.push_back(geo.parts[p].placement.to_global(local));
+    std::map<std::pair<int, int>, std::vector<int>> edges; // from the lower to the higher id
+    auto edge = [&](int i, int j) {
+      const auto key = std::minmax(i, j);
+      auto it = edges.find(key);
+      if (it == edges.end()) {
+        const Vec3 a = x[key.first], b = x[key.second];
+        it = edges
+                 .emplace(key, divide_curve([&](double t) { return Vec3(a + t * (b - a)); }, 0.0,
+                                            1.0, size, pool))
+                 .first;
+      }
+      return it->second;
+    };
+    for (const auto& t : surface->triangles)
+      for (int k = 0; k < 3; ++k)
+        edge(t[k], t[(k + 1) % 3]);
+    const int tag = part_surface_tag(static_cast<int>(p));
+    for (const auto& t : surface->triangles) {
+      std::vector<int> loop;
+      for (int k = 0; k < 3; ++k) {
+        std::vector<int> ids = edge(t[k], t[(k + 1) % 3]);
+        if (t[k] > t[(k + 1) % 3])
+          std::reverse(ids.begin(), ids.end());
+        loop.insert(loop.end(), ids.begin(), ids.end() - 1);
+      }
+      mesh_loop(TriangleChart(x[t[0]], x[t[1]], x[t[2]]), loop, size, tag, out);
+    }
+  }
 }
 
 using Edge = std::pair<int, int>; // point ids, lower first
@@ -412,9 +480,9 @@ void mesh_plane(const SymmetryPlane3D& plane, int index, const std::set<Edge>& e
 
 } // namespace
 
-SurfaceMesh3D mesh_surfaces_3d(const GridDecomposition3D& dec, const SizeField3D& size,
-                               double merge_tol, const std::vector<SymmetryPlane3D>& planes,
-                               double outer_radius) {
+SurfaceMesh3D mesh_surfaces_3d(const Geometry3D& geo, const GridDecomposition3D& dec,
+                               const SizeField3D& size, double merge_tol,
+                               const std::vector<SymmetryPlane3D>& planes, double outer_radius) {
   SurfaceMesh3D out;
   PointPool pool(out.points, merge_tol);
   CurveCache curves(dec, size, pool);
@@ -443,6 +511,7 @@ SurfaceMesh3D mesh_surfaces_3d(const GridDecomposition3D& dec, const SizeField3D
         x[p.axis] = 0;
   for (std::size_t i = 0; i < dec.faces.size(); ++i)
     mesh_face(dec, static_cast<int>(i), size, curves, out);
+  mesh_surface_parts(geo, size, pool, out);
   // A face triangle lying in a plane would double its facet (a face curved onto the plane).
   for (std::size_t t = 0; t < out.triangles.size(); ++t)
     for (const SymmetryPlane3D& p : planes)

@@ -26,10 +26,9 @@ std::unique_ptr<Run3D> run_adaptive_3d(const CaseSpec& spec, const RunOverrides&
                                        const std::function<void(const AdaptPass&)>& on_pass = {});
 
 // The size sources of the next pass: at every node and tet centroid of run's mesh, the
-// tet's longest edge times adapt_size_ratios (a node takes the smallest of its tets'). The
-// shell of an open boundary carries no indicator: its tets take the geometric mean ratio of
-// the physical tets that touch it (the field there continues the field at the boundary).
-// Exposed for the tests.
+// size the tet was asked to have (Mesh3D::tet_size) times adapt_size_ratios (a node takes the
+// smallest of its tets'), the open boundary's shell by its own indicator like every other
+// tet. Exposed for the tests.
 std::vector<SizeSample3D> adapted_size_samples_3d(const Run3D& run, double target_pct,
                                                   bool coarsen);
 

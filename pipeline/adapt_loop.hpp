@@ -91,9 +91,9 @@ AdaptHistory run_adapt_loop(const AdaptSpec& spec, const AdaptSteps& steps,
 // the rule of Zienkiewicz and Zhu (1987): eta_K scales like h^p in the energy norm when the
 // number of elements is held fixed. target_pct: the energy error aimed at (energy_error_pct's
 // measure, 100 sum eta^2 / (2 W)), shared equally by all elements. Elements `in_shell` never
-// grow (2D: they keep the layers the mesher gives the open boundary; 3D: they carry no
-// indicator). coarsen = false: no ratio above 1. `exponent` replaces 1/p when positive (the
-// damping of 3D, adapt3d.cpp).
+// grow (2D: they keep the layers the mesher gives the open boundary; 3D passes none: its
+// shell follows its own indicator). coarsen = false: no ratio above 1. `exponent` replaces 1/p when
+// positive (the damping of 3D, adapt3d.cpp).
 std::vector<double> adapt_size_ratios(const std::vector<double>& eta2, double energy, int order,
                                       double target_pct, bool coarsen,
                                       const std::function<bool(std::size_t)>& in_shell,

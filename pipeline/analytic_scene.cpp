@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <variant>
 
 #include "core/constants.hpp"
@@ -24,6 +25,8 @@ double max_extent(const AnalyticMagnet& m) {
           return s.r_outer;
         else if constexpr (std::is_same_v<T, Cylinder>)
           return std::hypot(s.r_outer, s.height);
+        else if constexpr (std::is_same_v<T, TriangleSurface>)
+          return std::numeric_limits<double>::infinity(); // never a magnet here (refused)
         else
           return 0.5 * s.size.norm();
       },
@@ -48,7 +51,12 @@ std::pair<Vec3, double> bounding_sphere(const Part3D& part) {
         else if constexpr (std::is_same_v<T, Cylinder>)
           return {part.placement.to_global(Vec3(0, 0, 0.5 * s.height)),
                   std::hypot(s.r_outer, 0.5 * s.height)};
-        else
+        else if constexpr (std::is_same_v<T, TriangleSurface>) {
+          double r = 0;
+          for (const Vec3& x : s.points)
+            r = std::max(r, x.norm());
+          return {part.placement.translation, r};
+        } else
           return {part.placement.translation, 0.5 * s.size.norm()};
       },
       part.shape);
@@ -116,6 +124,12 @@ AnalyticScene analytic_scene(const CaseSpec& spec) {
     };
     if (is_air(mat))
       continue;
+    if (const auto* surface = std::get_if<TriangleSurface>(&part.shape))
+      throw InputError(spec.file, region.line, "regions[" + std::to_string(i) + "].shape",
+                       "region " + region.name + " (" + surface->file +
+                           ") is a triangulated surface: the analytic models take spherical "
+                           "segments, cylinders and boxes only; solve the case by finite "
+                           "elements (magfem solve)");
     if (mat.is_magnet()) {
       if (mat.mu_r != 1.0)
         scene.notes.push_back("region " + region.name + ": recoil mu_r " +

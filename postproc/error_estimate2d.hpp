@@ -10,11 +10,14 @@
 // the element shape and on mu_r, which would have to be tuned per problem; the recovery needs
 // none and its effectivity is tested against exact answers (tests/postproc/).
 //
-// Per element K (shell elements excluded: their metric maps the exterior to infinity, their
-// size is set by the mesher, and the field there is the smooth far field):
+// Per element K:
 //   eta_K^2 = integral_K (B* - B_h) . (H(B*) - H(B_h)) dV      (J/m planar, J axisymmetric)
 // with H from the region's law (magnets: the remanence cancels in the difference; soft iron:
-// monotone, so the product is >= 0). For a linear problem solved by Galerkin,
+// monotone, so the product is >= 0). The open-boundary shell is a region of its own, recovered
+// in its mapped coordinates, and its eta_K^2 carries the transformation's metric (nu0 d . T d
+// with T the planar or the meridional curl metric, shell_transform.hpp), so the exterior's
+// error is in the sum as the 3D estimate's is (error_estimate3d.hpp). For a linear problem
+// solved by Galerkin,
 //   |W - W_h| = (1/2) ||B - B_h||_E^2  exactly,
 // so sum_K eta_K^2 / 2 estimates the error of the stored energy itself; the estimate is
 // reported relative to the energy, and as the relative error in the energy norm.
@@ -27,7 +30,7 @@ namespace magfem {
 
 struct ErrorEstimate2D {
   std::string indicator = "zz_recovery_per_region"; // summary.json error_estimate.indicator
-  std::vector<double> eta2;         // per triangle: eta_K^2 (J/m planar, J axi; 0 in the shell)
+  std::vector<double> eta2;         // per triangle: eta_K^2 (J/m planar, J axi), the shell's too
   double total_eta2 = 0;            // sum of eta2
   double energy_error_pct = 0;      // 100 * (total_eta2 / 2) / W: estimated relative error of W
   double energy_norm_error_pct = 0; // 100 * sqrt(total_eta2 / (2 W)): relative energy-norm error

@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "solver/shell_transform.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
 
@@ -23,6 +25,8 @@ double element_eta2(const PatchRecovery3D& rec, std::size_t t) {
   const Material& mat = *problem.physics(problem.mesh->tet_part[t]).material;
   const int order = field.dofs().order();
   const bool curved = field.dofs().is_curved(t);
+  const bool in_shell = problem.is_shell(t);
+  const ShellTransform shell{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius};
   std::array<Eigen::Vector3d, 10> g_star;
   const int n = rec.nodal_values(t, g_star);
   const std::array<Eigen::Vector3d, 4>& corner = rec.corners(t); // unused if curved
@@ -45,6 +49,12 @@ double element_eta2(const PatchRecovery3D& rec, std::size_t t) {
                                                        l[2] * corner[2] + l[3] * corner[3]);
     const Eigen::Vector3d d = g - h;
     const double dv = q.weight * (curved ? field.volume_density(t, l) : volume);
+    if (in_shell) {
+      // The mapped exterior: the physical error J^-1 d over dV' = |det J| dV carries the
+      // metric T = |det J| J^-1 J^-T, as in the shell's stiffness (assembler3d.cpp).
+      sum += dv * mu0 * d.dot(shell.metric<3>(field.point(t, l)) * d);
+      continue;
+    }
     if (!mat.is_nonlinear()) {
       sum += dv * mu * d.squaredNorm();
       continue;
@@ -73,8 +83,7 @@ ErrorEstimate3D estimate_error_3d(const PatchRecovery3D& recovery, double energy
     threads = element_loop_threads(n);
   parallel_blocks(n, 2048, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     for (std::size_t t = lo; t < hi; ++t)
-      if (!problem.is_shell(t))
-        out.eta2_J[t] = element_eta2(recovery, t);
+      out.eta2_J[t] = element_eta2(recovery, t);
   });
   for (double e : out.eta2_J) // in element order: the same bits whatever the thread count
     out.error_norm2_J += e;

@@ -19,9 +19,16 @@
 // uses Galerkin orthogonality, ||H||^2 = ||H_h||^2 + ||H - H_h||^2 with ||H_h||^2 = 2 W_h
 // (energy3d.hpp: W measured from the remanent state is (1/2) int mu |H|^2).
 //
-// Scope: the open-boundary shell (mapped coordinates, no recovery there) gets no indicator;
-// its error is not in the sum. With coils, H* - H_h holds only the potential's part (the
-// coils' field is exact), and 2 W_h uses the total field.
+// The open-boundary shell stands for the whole exterior and can hold much of the error (on
+// the magnetized sphere of tests/pipeline/test_adapt3d.cpp a 4x finer shell alone halves the
+// true energy error). Its indicator is the same ZZ measure in the mapped coordinates: with
+// d = G* - G_h the mesh-gradient difference recovered there (patch_recovery3d.hpp),
+//
+//   eta_K^2 = int_K mu0 d . T d dV,   T = |det J| J^-1 J^-T   (shell_transform.hpp),
+//
+// which is the physical int mu0 |J^-1 d|^2 dV' over the part of the exterior K stands for.
+// With coils, H* - H_h holds only the potential's part (the coils' field is exact), and
+// 2 W_h uses the total field.
 #include <string>
 #include <vector>
 
@@ -31,7 +38,7 @@ namespace magfem {
 
 struct ErrorEstimate3D {
   std::string indicator;            // how eta_K was computed, for summary.json
-  std::vector<double> eta2_J;       // per tet: eta_K^2 (J); 0 in the shell
+  std::vector<double> eta2_J;       // per tet: eta_K^2 (J), the shell's included
   double error_norm2_J = 0;         // sum of eta_K^2 (J)
   double energy_norm2_J = 0;        // 2 W_h (J)
   double energy_norm_error_pct = 0; // relative error of the field in the energy norm (above)

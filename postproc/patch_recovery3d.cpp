@@ -101,8 +101,6 @@ void PatchRecovery3D::build_slots() {
   std::vector<int> first_part(dofs.n_dofs(), no_part);
   std::vector<std::pair<int, int>> others;
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    if (problem.is_shell(t))
-      continue;
     const int part = mesh.tet_part[t];
     const int* dof = dofs.element_dofs(t);
     for (int i = 0; i < n; ++i) {
@@ -159,21 +157,19 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
   if (threads <= 0)
     threads = element_loop_threads(mesh.n_tets());
 
-  // Vertex -> physical tets (CSR).
+  // Vertex -> tets (CSR).
   std::vector<int> at_first(n_vertices + 1, 0), at_tets;
   for (std::size_t t = 0; t < mesh.n_tets(); ++t)
-    if (!problem.is_shell(t))
-      for (int v : mesh.tets[t])
-        ++at_first[v + 1];
+    for (int v : mesh.tets[t])
+      ++at_first[v + 1];
   for (int v = 0; v < n_vertices; ++v)
     at_first[v + 1] += at_first[v];
   at_tets.resize(at_first[n_vertices]);
   {
     std::vector<int> fill(at_first.begin(), at_first.end() - 1);
     for (std::size_t t = 0; t < mesh.n_tets(); ++t)
-      if (!problem.is_shell(t))
-        for (int v : mesh.tets[t])
-          at_tets[fill[v]++] = static_cast<int>(t);
+      for (int v : mesh.tets[t])
+        at_tets[fill[v]++] = static_cast<int>(t);
   }
 
   // G_h at the corners of every straight tet, once: there it is linear in the barycentric
@@ -184,7 +180,7 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
   corner.resize(mesh.n_tets());
   parallel_blocks(mesh.n_tets(), 4096, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     for (std::size_t t = lo; t < hi; ++t)
-      if (!problem.is_shell(t) && !dofs.is_curved(t))
+      if (!dofs.is_curved(t))
         for (int i = 0; i < 4; ++i)
           corner[t][i] = G_h(t, tet_dof_nodes[i]);
   });
@@ -257,6 +253,21 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
     const Eigen::Vector3d& x = dofs.dof_points()[d];
     for (int s = first_[d]; s < first_[d + 1]; ++s)
       value_[s] = 0.5 * (fits[slot(ends[0], part_[s])].at(x) + fits[slot(ends[1], part_[s])].at(x));
+  }
+  keep_radial_at_infinity();
+}
+
+void PatchRecovery3D::keep_radial_at_infinity() {
+  const Problem3D& problem = field_.problem();
+  const Mesh3D& mesh = *problem.mesh;
+  if (problem.boundary != OuterKind3D::open)
+    return;
+  for (int d : field_.dofs().dofs_on_faces(mesh.outer_faces)) {
+    const int s = slot(d, region_shell_3d);
+    if (s < 0)
+      continue;
+    const Eigen::Vector3d e = field_.dofs().dof_points()[d].normalized();
+    value_[s] = e * e.dot(value_[s]);
   }
 }
 

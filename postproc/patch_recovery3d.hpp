@@ -29,7 +29,19 @@
 // its own patch's polynomial, a P2 edge node the mean of its two end vertices' polynomials at
 // the node; inside a tet of r, G* interpolates r's nodal values with the element's shape
 // functions (isoparametric on curved tets). Like RecoveredB3D, a region never sees another
-// region's field. Shell tets (mapped coordinates) take no part and must not be queried.
+// region's field.
+//
+// The open-boundary shell is a region of its own, recovered in its mapped (mesh) coordinates:
+// there G = -grad phi is the mesh gradient of the potential, which the radial map makes
+// smooth (a dipole's potential becomes cos theta times a quadratic in R2 - r, shell_transform.hpp)
+// and which jumps in its radial part at r = R1 (J is not the identity there), so the shell
+// never shares a fit with the air. G and G_h there are mesh quantities (the error
+// estimate weighs them with the shell's metric); B() is physical and not for shell tets.
+// At the shell's outer sphere (infinity, phi = 0) the exact G is normal to the sphere, and
+// the metric's tangential part grows like 1 / (R2 - r)^2 towards it: the one-sided fits there
+// extrapolate a tangential G* that the metric magnifies (on the magnetized sphere, order 2,
+// the shell's estimate was 2.6x its true error in the tets touching R2), so those nodal
+// values keep only their radial part.
 #include <array>
 #include <vector>
 
@@ -48,7 +60,7 @@ public:
   // result does not depend on the count.
   explicit PatchRecovery3D(const Field3D& field, int threads = 0);
 
-  // Recovered G* = -grad phi* (A/m) at bary of tet t (not a shell tet).
+  // Recovered G* = -grad phi* (A/m) at bary of tet t (shell tets: the mesh gradient).
   Eigen::Vector3d G(std::size_t t, const std::array<double, 4>& bary) const;
   // G_h at the four vertices of straight tet t (it is linear there): G_h at bary is
   // sum_i bary_i corners(t)[i]. Not for curved tets.
@@ -69,6 +81,7 @@ public:
 
 private:
   void build_slots();
+  void keep_radial_at_infinity();    // n x G* = 0 on the open boundary's outer sphere
   int slot(int dof, int part) const; // -1 if region part does not touch dof
 
   const Field3D& field_;

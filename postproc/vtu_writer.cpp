@@ -1,75 +1,19 @@
 #include "postproc/vtu_writer.hpp"
 
-#include <stdexcept>
-
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDoubleArray.h>
-#include <vtkFieldData.h>
-#include <vtkIdTypeArray.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkStringArray.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridWriter.h>
+#include "core/backend_module.hpp"
+#include "postproc/vtk_backend.hpp"
 
 namespace magfem {
-namespace {
 
-vtkNew<vtkDoubleArray> make_array(const VtuArray& a) {
-  vtkNew<vtkDoubleArray> arr;
-  arr->SetName(a.name.c_str());
-  arr->SetNumberOfComponents(a.components);
-  const vtkIdType n = static_cast<vtkIdType>(a.values.size()) / a.components;
-  arr->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n * a.components; ++i)
-    arr->SetValue(i, a.values[i]);
-  return arr;
+const VtkBackend& vtk_backend() {
+  // Opened once; concurrent first callers wait, and a failed open is tried again next time.
+  static const VtkBackend* const backend = static_cast<const VtkBackend*>(
+      open_backend_module(vtk_module_file, vtk_module_entry, "writing .vtu files (VTK)"));
+  return *backend;
 }
 
-} // namespace
-
 void write_vtu(const std::string& path, const VtuGrid& grid) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(grid.points.size()));
-  for (std::size_t i = 0; i < grid.points.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), grid.points[i].data());
-
-  vtkNew<vtkCellArray> cells;
-  int begin = 0;
-  std::vector<vtkIdType> ids;
-  for (const int end : grid.offsets) {
-    ids.assign(grid.connectivity.begin() + begin, grid.connectivity.begin() + end);
-    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    begin = end;
-  }
-  vtkNew<vtkUnstructuredGrid> ug;
-  ug->SetPoints(points);
-  ug->SetCells(const_cast<int*>(grid.cell_types.data()), cells);
-  for (const auto& a : grid.point_data)
-    ug->GetPointData()->AddArray(make_array(a));
-  for (const auto& a : grid.cell_data)
-    ug->GetCellData()->AddArray(make_array(a));
-  if (!grid.material_names.empty()) {
-    vtkNew<vtkStringArray> names;
-    names->SetName("material_names");
-    for (const auto& n : grid.material_names)
-      names->InsertNextValue(n);
-    ug->GetFieldData()->AddArray(names);
-  }
-
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(ug);
-  writer->SetDataModeToBinary();
-  // LZ4 rather than zlib: compressing with zlib was 15 % of a 100k-unknown axisymmetric run;
-  // LZ4 compresses about ten times faster, and ParaView and VTK read it alike.
-  writer->SetCompressorTypeToLZ4();
-  if (writer->Write() != 1)
-    throw std::runtime_error("cannot write " + path);
+  vtk_backend().write_vtu(path, grid);
 }
 
 } // namespace magfem

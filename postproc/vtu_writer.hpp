@@ -1,6 +1,6 @@
 #pragma once
 // A mesh with point and cell arrays, written as a VTK XML unstructured grid (.vtu) for
-// ParaView. This header is VTK-free; VTK is confined to vtu_writer.cpp.
+// ParaView. This header is VTK-free; VTK is confined to the module (vtk_backend.hpp).
 #include <string>
 #include <vector>
 
@@ -16,8 +16,9 @@ struct VtuArray {
 
 struct VtuGrid {
   std::vector<Eigen::Vector3d> points;
-  std::vector<int> cell_types;   // VTK cell type ids (5 triangle, 22 quadratic triangle, 10 tet, 24 quadratic tet)
-  std::vector<int> offsets;      // end offset of each cell in connectivity
+  std::vector<int>
+      cell_types; // VTK cell type ids (5 triangle, 22 quadratic triangle, 10 tet, 24 quadratic tet)
+  std::vector<int> offsets; // end offset of each cell in connectivity
   std::vector<int> connectivity;
   std::vector<VtuArray> point_data;
   std::vector<VtuArray> cell_data;

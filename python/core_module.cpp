@@ -11,6 +11,7 @@
 #include "python/actuator.hpp"
 #include "python/analytic.hpp"
 #include "python/solution.hpp"
+#include "python/study.hpp"
 #include "python/sweep.hpp"
 #include "python/validate.hpp"
 
@@ -71,6 +72,7 @@ PYBIND11_MODULE(_core, m) {
   magfem::python::bind_solution(m);
   magfem::python::bind_analytic(m);
   magfem::python::bind_sweep(m);
+  magfem::python::bind_study(m);
   magfem::python::bind_actuator(m);
   magfem::python::bind_validate(m);
 }

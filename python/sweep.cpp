@@ -44,15 +44,17 @@ csv_columns(const std::vector<Row>& rows,
   return out;
 }
 
-// The columns of sweep_csv (studies/sweep.cpp), in its order.
-py::dict rotation_columns(const std::vector<SweepRow>& rows) {
-  return csv_columns<SweepRow>(rows, {{"angle_deg", [](const SweepRow& r) { return r.angle_deg; }},
-                                      {"Tx", [](const SweepRow& r) { return r.torque.x(); }},
-                                      {"Ty", [](const SweepRow& r) { return r.torque.y(); }},
-                                      {"Tz", [](const SweepRow& r) { return r.torque.z(); }},
-                                      {"Fx", [](const SweepRow& r) { return r.force.x(); }},
-                                      {"Fy", [](const SweepRow& r) { return r.force.y(); }},
-                                      {"Fz", [](const SweepRow& r) { return r.force.z(); }}});
+// The columns of sweep_csv (studies/sweep.cpp), in its order; the position named as there.
+py::dict rotation_columns(const std::vector<SweepRow>& rows, SweepMotion motion) {
+  const std::string position = sweep_position_key(motion);
+  return csv_columns<SweepRow>(rows,
+                               {{position.c_str(), [](const SweepRow& r) { return r.angle_deg; }},
+                                {"Tx", [](const SweepRow& r) { return r.torque.x(); }},
+                                {"Ty", [](const SweepRow& r) { return r.torque.y(); }},
+                                {"Tz", [](const SweepRow& r) { return r.torque.z(); }},
+                                {"Fx", [](const SweepRow& r) { return r.force.x(); }},
+                                {"Fy", [](const SweepRow& r) { return r.force.y(); }},
+                                {"Fz", [](const SweepRow& r) { return r.force.z(); }}});
 }
 
 // The columns of sweep_axi_csv (studies/sweep_axi.cpp).
@@ -73,8 +75,13 @@ struct SweepRequest {
   double mesh_scale = 0;
 };
 
-// The axial sweep, as `magfem sweep --move GROUP --axis z --positions ...` runs it.
+// The axial sweep, as `magfem sweep CASE2D --move GROUP --axis z --positions ...` runs it
+// (a planar case is refused there, naming --move).
 py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
+  if (!spec.axisymmetric())
+    throw InputError(where, 0, "translate",
+                     "a planar 2D sweep turns a group (rotate=); translations are for "
+                     "axisymmetric and 3D cases");
   if (!q.axis.empty() && q.axis != "z")
     throw InputError(where, 0, "axis", "an axisymmetric group moves along z: give axis=\"z\"");
   // Arguments of the rotating sweeps: refused rather than ignored.
@@ -101,13 +108,26 @@ py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& 
   return out;
 }
 
-// The rotating sweep, 3D or planar, as `magfem sweep --rotate GROUP ...` runs it.
-py::dict rotate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
+// The rotating sweep (3D or planar) and the 3D translate sweep, as `magfem sweep --rotate
+// GROUP ...` and `magfem sweep CASE3D --move GROUP ...` run them.
+py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
   const bool planar = spec.dimension == 2 && !spec.axisymmetric();
+  const bool move = !q.translate.empty();
   SweepOptions o;
-  o.group = q.rotate;
+  o.group = move ? q.translate : q.rotate;
+  if (move) {
+    // As --move: the direction is asked for, never assumed; the group moves, nothing turns.
+    if (q.axis.empty())
+      throw InputError(where, 0, "axis", "give the direction to move along");
+    if (q.point)
+      throw InputError(where, 0, "point", "not for translate sweeps (the group moves, no axis)");
+    o.motion = SweepMotion::translate;
+    for (const double p : q.values)
+      o.offsets_m.push_back(1e-3 * p); // as the command line converts --positions
+  } else {
+    o.angles_deg = q.values;
+  }
   o.axis = parse_axis(q.axis.empty() ? (planar ? "z" : "y") : q.axis);
-  o.angles_deg = q.values;
   const double s = spec.length_unit;
   if (q.point) {
     if (q.point->size() != 3)
@@ -128,7 +148,7 @@ py::dict rotate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& cal
     rows = planar ? run_sweep_planar(spec, o, report, &jobs) : run_sweep(spec, o, report, &jobs);
   });
   py::dict out;
-  out["columns"] = rotation_columns(rows);
+  out["columns"] = rotation_columns(rows, o.motion);
   out["summary"] = sweep_summary(spec.file, rows, o, jobs).dump();
   return out;
 }
@@ -150,7 +170,9 @@ py::dict sweep_case(const std::string& path, const std::string& text, const std:
     throw InputError(where, 0, "mesh_scale", "must be a positive number");
   const CaseSpec spec = read_python_case(path, text, name, parameters);
   BackgroundCall call(std::move(progress));
-  return request.translate.empty() ? rotate(spec, request, call) : translate(spec, request, call);
+  const bool axial = spec.dimension == 2;
+  return request.translate.empty() || !axial ? rotate_or_move_3d(spec, request, call)
+                                             : translate(spec, request, call);
 }
 
 } // namespace

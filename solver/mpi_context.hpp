@@ -3,7 +3,7 @@
 // there are, and the few collective operations the distributed 3D solve and the studies
 // dealt across processes need outside the linear algebra (agreeing that replicated data is
 // identical, dealing work items and collecting their results, stopping every process on an
-// error). MPI itself stays in mpi_context.cpp and petsc_solver.cpp; nothing else includes it.
+// error). MPI itself stays in the PETSc module (petsc_backend.hpp); nothing else includes it.
 //
 // A process not launched by mpirun never starts MPI here (a serial run pays nothing).
 #include <cstdint>
@@ -13,6 +13,8 @@
 #include <vector>
 
 namespace magfem {
+
+class WorkDealerEngine;
 
 struct MpiWorld {
   int rank = 0;         // this process in MPI_COMM_WORLD
@@ -86,8 +88,7 @@ public:
   void serve(const std::function<void(int item, const std::string& result)>& on_result);
 
 private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<WorkDealerEngine> engine_; // in the PETSc module
 };
 
 // Ends every process of the run with `code` (MPI_Abort): an error on one process must not

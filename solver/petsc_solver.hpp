@@ -2,10 +2,10 @@
 // Conjugate gradients preconditioned by algebraic multigrid (hypre BoomerAMG or PETSc GAMG),
 // or by two-level p-multigrid (pmg: a symmetric Gauss-Seidel smoother on the system, BoomerAMG on
 // the Galerkin coarse operator P^T A P of a given coarse space), through PETSc. This header keeps
-// PETSc out of every other translation unit: its types live behind Impl in petsc_solver.cpp, the
-// only file that includes PETSc (mpi_context.cpp includes MPI alone). PETSc (and MPI) start on
-// the first use in a process, or at the start of a run under mpirun (start_petsc), and stop at
-// its exit.
+// PETSc out of every other translation unit: PETSc is called only from the module
+// libmagfem_petsc.so (petsc_backend.hpp), which the first PetscSolver, start_petsc or
+// petsc_options_problem of a process opens. PETSc (and MPI) start on the first use in a
+// process, or at the start of a run under mpirun (start_petsc), and stop at its exit.
 //
 // Two ways to give it the system: setup() copies a whole matrix held by this process into a
 // sequential PETSc matrix; the distributed mode (begin_distributed, add_element,
@@ -20,6 +20,7 @@
 namespace magfem {
 
 class Progress;
+class PetscSolverEngine;
 
 struct PetscSolverOptions {
   std::string preconditioner = "boomeramg"; // boomeramg | gamg | pmg
@@ -96,8 +97,7 @@ public:
   int block_factorizations() const;
 
 private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<PetscSolverEngine> engine_; // in the PETSc module
 };
 
 // Why PETSc would refuse `options.petsc_options` (their form: -name [value] pairs; a value or

@@ -95,7 +95,7 @@ StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<doubl
     ParameterOverrides overrides;
     for (std::size_t i = 0; i < values.size(); ++i)
       overrides[o.parameters[i].name] = values[i];
-    const CaseSpec spec = read_case(o.case_file, overrides);
+    const CaseSpec spec = o.read ? o.read(overrides) : read_case(o.case_file, overrides);
     SweepOptions so = o.sweep;
     so.angles_deg = design_angles(o);
     const auto rows = run_sweep(spec, so);
@@ -282,14 +282,15 @@ std::string study_checkpoint_identity(const StudyOptions& o) {
   return checkpoint_identity("study", o.case_file, text);
 }
 
-std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* checkpoint) {
+std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* checkpoint,
+                                   const std::function<void(int, int)>& on_design) {
   // Fail early for names the file does not declare (read_case names them as --param); the
   // first design's own problems (crossing radii) are that design's, reported with it.
   try {
     ParameterOverrides check;
     for (const auto& p : options.parameters)
       check[p.name] = p.values.front();
-    (void)read_case(options.case_file, check);
+    (void)(options.read ? options.read(check) : read_case(options.case_file, check));
   } catch (const InputError& e) {
     if (e.file() == cli || e.line() == 0) // an option, or a file that cannot be opened
       throw;
@@ -309,6 +310,8 @@ std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* c
   // design takes minutes and gets its own line).
   auto last = std::chrono::steady_clock::now();
   for (const auto& values : grid) {
+    if (options.sweep.stop.stop_requested())
+      break;
     const std::string key = design_key(values);
     std::optional<StudyDesign> restored;
     if (checkpoint)
@@ -327,6 +330,8 @@ std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* c
                    designs.back().seconds, designs.back().ok ? "" : ", failed");
       last = now;
     }
+    if (on_design)
+      on_design(static_cast<int>(designs.size()), static_cast<int>(grid.size()));
   }
   return designs;
 }
@@ -353,22 +358,9 @@ std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign
   return out;
 }
 
-int run_study_command(const StudyOptions& options) {
-  RunCheckpoint checkpoint(options.out_dir, study_checkpoint_identity(options), options.resume);
-  if (checkpoint.n_restored())
-    std::fprintf(stderr, "magfem: --resume: %zu finished designs from the checkpoint\n",
-                 checkpoint.n_restored());
-  const auto designs = run_study(options, &checkpoint);
-  std::filesystem::create_directories(options.out_dir);
-  OutputStage stage(options.out_dir);
-  stage.write_text("study.csv", study_csv(options, designs));
-  std::string why;
-  const bool plotted = plot_study(options, designs, stage.path_for("study.png"), why);
-  if (!plotted)
-    std::cerr << "magfem: note: no study.png: " << why << "\n";
-
+nlohmann::ordered_json study_summary(const StudyOptions& options,
+                                     const std::vector<StudyDesign>& designs) {
   nlohmann::ordered_json j;
-  add_provenance(j);
   j["case"] = options.case_file;
   std::string method;
   int failed = 0;
@@ -399,6 +391,32 @@ int run_study_command(const StudyOptions& options) {
   // Harmonic form: rigorous truncation bound; the other analytic methods: estimated error.
   if (options.sweep.analytic)
     j["max_torque_error_Nm"] = accuracy;
+  return j;
+}
+
+int run_study_command(const StudyOptions& options) {
+  RunCheckpoint checkpoint(options.out_dir, study_checkpoint_identity(options), options.resume);
+  if (checkpoint.n_restored())
+    std::fprintf(stderr, "magfem: --resume: %zu finished designs from the checkpoint\n",
+                 checkpoint.n_restored());
+  const auto designs = run_study(options, &checkpoint);
+  std::filesystem::create_directories(options.out_dir);
+  OutputStage stage(options.out_dir);
+  stage.write_text("study.csv", study_csv(options, designs));
+  std::string why;
+  const bool plotted = plot_study(options, designs, stage.path_for("study.png"), why);
+  if (!plotted)
+    std::cerr << "magfem: note: no study.png: " << why << "\n";
+
+  nlohmann::ordered_json j;
+  add_provenance(j);
+  j.update(study_summary(options, designs));
+  const std::string method = j["method"];
+  const double seconds = j["seconds"];
+  double accuracy = 0;
+  for (const auto& d : designs)
+    accuracy = std::max(accuracy, d.torque_accuracy);
+  const int failed = j["failed_designs"];
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
   checkpoint.remove();

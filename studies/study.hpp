@@ -13,10 +13,12 @@
 //
 // Every finished design is kept in DIR/.magfem-checkpoint.jsonl as it finishes
 // (pipeline/run_checkpoint.hpp, the sweep's); --resume restores them and evaluates the rest.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 
 #include "casefile/case_spec.hpp"
 #include "core/option_table.hpp"
@@ -46,6 +48,9 @@ struct StudyOptions {
   std::string out_dir;
   bool quiet = false;  // no progress lines on stderr
   bool resume = false; // continue from the checkpoint in out_dir
+  // Reads the case with a design's parameter values; empty: read_case(case_file, ..). Python
+  // sets it for a case given as YAML text (magfem.Case.from_dict), which has no file.
+  std::function<CaseSpec(const ParameterOverrides&)> read;
 };
 
 // Parses the arguments after `study`; throws InputError naming the option.
@@ -77,8 +82,11 @@ StudyDesign evaluate_study_design(const StudyOptions& options, const std::vector
 // or a case that fails for every design (unknown parameter, group) throws InputError.
 // With a checkpoint, a design it holds is restored instead of evaluated, and every design
 // that succeeds is recorded in it as it finishes (failed ones are evaluated again on resume).
-std::vector<StudyDesign> run_study(const StudyOptions& options,
-                                   RunCheckpoint* checkpoint = nullptr);
+// on_design(done, total) after each design; a stop asked through options.sweep.stop starts
+// no further design (those returned are the ones done).
+std::vector<StudyDesign>
+run_study(const StudyOptions& options, RunCheckpoint* checkpoint = nullptr,
+          const std::function<void(int done, int total)>& on_design = nullptr);
 
 // The identity line of a study's checkpoint: the case file's hash, the commit and every
 // option that changes a result (values with 17 significant digits; not --jobs, --quiet).
@@ -86,6 +94,12 @@ std::string study_checkpoint_identity(const StudyOptions& options);
 
 // study.csv: the parameter names, then the objective names; successful designs only.
 std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs);
+
+// summary.json but the provenance: case, method, group, axis, angles_deg, parameters,
+// objectives, designs, failed_designs, failures, seconds, max_torque_error_Nm (analytic).
+// Also magfem.study's `summary` in Python.
+nlohmann::ordered_json study_summary(const StudyOptions& options,
+                                     const std::vector<StudyDesign>& designs);
 
 // The command: runs, writes study.csv, study.png (if gnuplot is there) and summary.json
 // through one OutputStage, prints a table; returns the exit code (3 if any design failed).

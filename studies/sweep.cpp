@@ -86,6 +86,12 @@ std::pair<double, double> radial_range(const Part3D& part) {
                 const double r = s.r_inner + (s.r_outer - s.r_inner) * k / n, p = 2 * pi * j / n;
                 local.emplace_back(r * std::cos(p), r * std::sin(p), z);
               }
+        } else if constexpr (std::is_same_v<T, TriangleSurface>) {
+          // Corners and centroids: the closest point of a large facet may lie between them,
+          // which the margin below covers only for facets under extent / n across.
+          local = s.points;
+          for (const auto& t : s.triangles)
+            local.push_back((s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3);
         } else {
           for (int i = 0; i <= n; ++i)
             for (int j = 0; j <= n; ++j)

@@ -3,7 +3,7 @@
 So far: ``__version__``, ``Case`` (load, from_dict, with_params, to_yaml: the case read and
 validated by the same reader as ``magfem solve``), ``Case.solve`` returning a ``Solution``
 (the same in-process pipeline as ``magfem solve``), ``analytic``, ``sweep`` (``magfem sweep``
-in-process, numpy columns), ``actuator``, ``validate`` and the exception types.
+in-process, numpy columns), ``study``, ``actuator``, ``validate`` and the exception types.
 """
 import contextlib
 import os
@@ -11,8 +11,8 @@ import os
 from . import _core
 from ._core import __version__
 from .solution import AnalyticSolution, Mesh, Solution
-from .studies import (ActuatorResult, SweepResult, ValidationResult, actuator, sweep,
-                      validate)
+from .studies import (ActuatorResult, StudyResult, SweepResult, ValidationResult, actuator,
+                      study, sweep, validate)
 
 # The compiled reader raises this (a ValueError carrying file, line, field).
 InputError = _core._InputError
@@ -129,5 +129,5 @@ def analytic(case, model="charge", tolerance=1e-6, n_max=150):
 
 
 __all__ = ["__version__", "ActuatorResult", "AnalyticSolution", "Case", "InputError", "Mesh", "Solution",
-           "SolveError", "SweepResult", "ValidationResult", "actuator", "analytic", "sweep",
-           "validate"]
+           "SolveError", "StudyResult", "SweepResult", "ValidationResult", "actuator", "analytic",
+           "study", "sweep", "validate"]

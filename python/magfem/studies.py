@@ -25,8 +25,9 @@ def _count(name, value):
 
 class SweepResult(dict):
     """A sweep's table: a dict of numpy columns named as the command line's sweep.csv
-    (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm,
-    Fz_N`` for translate sweeps), successful positions only, in the order given.
+    (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm, Tx,
+    ..., Fz`` for 3D translate sweeps; ``position_mm, Fz_N`` for axisymmetric ones), successful
+    positions only, in the order given.
 
     ``summary``: summary.json as ``magfem sweep`` writes it, but the provenance and the peak
     memory; ``method``, ``positions`` (per position: ok, seconds, error, ...) and ``failed``
@@ -77,9 +78,11 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     z only), ``angles`` in degrees (any sequence or numpy array), ``point`` on the axis
     (three numbers in the case's length unit; default the origin), ``analytic`` (3D only: the
     analytic interaction instead of FE), ``surface_radius`` (3D FE: the stress sphere's
-    radius in the case's length unit; default mid-gap). Translate sweeps (axisymmetric
-    cases): ``translate`` names the group moved along z, ``positions`` in mm (as the command
-    line's --positions). FE positions take ``order`` (1 or 2; None: as in the case) and
+    radius in the case's length unit; default mid-gap). Translate sweeps: ``translate`` names
+    the group moved, ``positions`` its offsets in mm (as the command line's --positions);
+    axisymmetric cases move it along z (FE, force Fz), 3D cases along ``axis`` (required; FE
+    or ``analytic``; the rotating sweep's columns with ``position_mm`` first); planar cases do
+    not translate. FE positions take ``order`` (1 or 2; None: as in the case) and
     ``mesh_scale``. ``jobs``: positions at once (None: one per core).
 
     ``progress``: None, True (a "position i/n done" line on stderr per position) or a
@@ -118,6 +121,74 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     out = _core.sweep(case._path or "", case._text or "", case._name or "", case._params,
                       request, progress)
     return SweepResult(out["columns"], json.loads(out["summary"]))
+
+
+class StudyResult(dict):
+    """A study's table: a dict of numpy columns named as the command line's study.csv (one per
+    parameter, in the order given, then one per objective: ``peak_torque_Nm``,
+    ``torque_at_90deg_Nm``, N m), successful designs only, the last parameter varying fastest.
+
+    ``summary``: summary.json as ``magfem study`` writes it, but the provenance; ``method``
+    and ``failed`` (the number of failed designs) are taken from it, ``failures`` lists each
+    failed design's parameters and error. ``csv()`` is study.csv's text."""
+
+    def __init__(self, columns, summary):
+        super().__init__(columns)
+        self.summary = summary
+        self.method = summary["method"]
+        self.failed = summary["failed_designs"]
+        self.failures = summary.get("failures", [])
+
+    @property
+    def columns(self):
+        """The column names, in study.csv's order."""
+        return list(self.keys())
+
+    def csv(self):
+        """study.csv as the command line writes it (ten significant digits)."""
+        lines = [",".join(self.columns)]
+        for row in zip(*self.values()):
+            lines.append(",".join("%.10g" % v for v in row))
+        return "\n".join(lines) + "\n"
+
+    def __repr__(self):
+        return "<magfem.StudyResult %s: %d designs, %d failed>" % (
+            self.method, self.summary["designs"], self.failed)
+
+
+def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jobs=None,
+          progress=None, *, order=None, mesh_scale=1.0):
+    """Runs ``magfem study`` on a Case in-process and returns a StudyResult (numpy columns).
+
+    ``params``: {name: values} over the case's parameters (values in the parameter's own
+    unit, any sequence or numpy array; the grid of all combinations, the last name varying
+    fastest, as repeated --param). ``objectives``: names as --objective (``"peak_torque"``,
+    ``"torque_at:DEG"``), a string or a list. ``rotate``, ``axis``, ``angles`` (degrees; needed
+    by peak_torque) as in ``sweep``; ``analytic`` True (the default, as the command line) or
+    False for FE designs with ``order`` and ``mesh_scale``; ``jobs``: positions at once.
+    ``progress``: None, True (a line per design) or ``progress(done, total)`` per design; the
+    GIL is released meanwhile; Ctrl-C starts no further design and raises KeyboardInterrupt.
+    A design whose case cannot be read or solved is recorded (``failed``, ``failures``), not
+    raised; a bad argument, parameter name or group raises InputError.
+    """
+    request = _core.StudyRequest()
+    if not isinstance(params, dict) or not params:
+        raise _argument_error("params", "a dict {parameter: values}, not %r" % (params,),
+                              "<study>")
+    request.parameters = [(str(k), [float(v) for v in np.asarray(vals, dtype=float).ravel()])
+                          for k, vals in params.items()]
+    request.objectives = [objectives] if isinstance(objectives, str) else list(objectives)
+    request.rotate = str(rotate)
+    request.axis = _axis_text(axis)
+    if angles is not None:
+        request.angles = [float(v) for v in np.asarray(angles, dtype=float).ravel()]
+    request.analytic = bool(analytic)
+    request.jobs = _count("jobs", jobs)
+    request.order = _count("order", order)
+    request.mesh_scale = float(mesh_scale)
+    out = _core.study(case._path or "", case._text or "", case._name or "", case._params,
+                      request, progress)
+    return StudyResult(out["columns"], json.loads(out["summary"]))
 
 
 class ActuatorResult:

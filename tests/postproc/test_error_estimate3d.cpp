@@ -1,8 +1,8 @@
 // The 3D error estimator (postproc/error_estimate3d.hpp) against the exact field of the
 // uniformly magnetized sphere in air (sphere_cases3d.hpp): the energy-norm effectivity
 // (estimated / true error) on two mesh scales for orders 1 and 2, and the estimate falling
-// at the rate of the energy norm (h^p) under refinement. The open-boundary shell has no
-// indicator, so the true error is measured on the same physical tets.
+// at the rate of the energy norm (h^p) under refinement; and the open-boundary shell's own
+// indicator (mapped coordinates, the shell's metric) against the exact exterior field.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +10,7 @@
 
 #include "postproc/energy3d.hpp"
 #include "postproc/error_estimate3d.hpp"
+#include "solver/shell_transform.hpp"
 #include "solver/tet_quadrature.hpp"
 #include "sphere_cases3d.hpp"
 
@@ -29,18 +30,32 @@ Eigen::Vector3d exact_H(const Eigen::Vector3d& x, bool in_magnet, double a, doub
   return (3 * m.dot(x) * x / std::pow(r, 5) - m / std::pow(r, 3)) / (4 * pi);
 }
 
-// True ||H - H_h||^2 in the energy norm, int mu |H - H_h|^2 over the physical tets (J);
-// exact(t, x): the exact H of tet t's region at x.
-template <class Exact> double true_error2(const test::SphereSolution& s, const Exact& exact) {
-  double sum = 0;
+// True ||H - H_h||^2 in the energy norm (J), over the physical tets and over the shell.
+struct TrueError2 {
+  double physical = 0, shell = 0;
+};
+
+// Physical tets: int mu |H - H_h|^2 with exact(t, x) the exact H of tet t's region at x.
+// Shell tets, independently of the metric the estimator uses: the mesh point x stands for
+// x' = map(x), where the exact field is the dipole's H'(x') and the FE field J^-1 (-grad phi_h);
+// int mu0 |H' - J^-1 G_h|^2 |det J| dV is that error's energy over the exterior.
+template <class Exact> TrueError2 true_error2(const test::SphereSolution& s, const Exact& exact) {
+  TrueError2 sum;
+  const ShellTransform shell{s.mesh.shell_inner_radius, s.mesh.shell_outer_radius};
   for (std::size_t t = 0; t < s.mesh.n_tets(); ++t) {
-    if (s.problem.is_shell(t))
-      continue;
+    const bool in_shell = s.problem.is_shell(t);
     const double mu = mu0 * s.problem.physics(s.mesh.tet_part[t]).material->mu_r;
     for (const auto& q : tet_rule(5)) {
       const Eigen::Vector3d x = s.field->point(t, q.bary);
-      const Eigen::Vector3d e = exact(t, x) - s.field->H(t, q.bary);
-      sum += q.weight * s.field->volume_density(t, q.bary) * mu * e.squaredNorm();
+      const double dv = q.weight * s.field->volume_density(t, q.bary);
+      if (in_shell) {
+        const Eigen::Vector3d e =
+            exact(t, shell.map(x)) - shell.inverse_jacobian(x) * s.field->H(t, q.bary);
+        sum.shell += dv * mu0 * e.squaredNorm() * shell.det_jacobian(x);
+      } else {
+        const Eigen::Vector3d e = exact(t, x) - s.field->H(t, q.bary);
+        sum.physical += dv * mu * e.squaredNorm();
+      }
     }
   }
   return sum;
@@ -66,10 +81,16 @@ Eigen::Vector3d shell_exact_H(const test::ShellSphereExact& ex, const test::Sphe
   return centroid.norm() < ex.b ? h(ex.coef[1], ex.coef[2]) : h(0, ex.coef[5]);
 }
 
+// Squared error norms (J) estimated and true, over the physical tets and over the shell.
 struct Measured {
   double estimated2 = 0, true2 = 0, pct = 0;
+  double shell_estimated2 = 0, shell_true2 = 0;
   long unknowns = 0;
   double effectivity() const { return std::sqrt(estimated2 / true2); }
+  double shell_effectivity() const { return std::sqrt(shell_estimated2 / shell_true2); }
+  double total_effectivity() const {
+    return std::sqrt((estimated2 + shell_estimated2) / (true2 + shell_true2));
+  }
 };
 
 template <class Exact> Measured measure(const test::SphereCase& c, const Exact& exact_of) {
@@ -87,14 +108,20 @@ template <class Exact> Measured measure(const test::SphereCase& c, const Exact& 
   std::printf("recovery %.3f s, indicator %.3f s, solve %.3f s\n", rec_s, test::seconds_since(t1),
               s->report.solve_s);
   Measured m;
-  m.estimated2 = est.error_norm2_J;
-  m.true2 =
+  for (std::size_t t = 0; t < s->mesh.n_tets(); ++t)
+    (s->problem.is_shell(t) ? m.shell_estimated2 : m.estimated2) += est.eta2_J[t];
+  const TrueError2 truth =
       true_error2(*s, [&](std::size_t t, const Eigen::Vector3d& x) { return exact_of(*s, t, x); });
+  m.true2 = truth.physical;
+  m.shell_true2 = truth.shell;
   m.pct = est.energy_error_pct;
   m.unknowns = s->dofs->n_dofs();
-  std::printf("order %d scale %.2f: %ld unknowns, estimated %.4g %%, effectivity %.3f, "
-              "%zu patches degraded\n",
-              c.order, c.size_scale, m.unknowns, m.pct, m.effectivity(), est.degraded_patches);
+  std::printf("order %d scale %.2f: %ld unknowns, estimated %.4g %%, effectivity %.3f "
+              "(physical tets), %.3f (shell), %.3f (all; shell holds %.0f %% of the true "
+              "error), %zu patches degraded\n",
+              c.order, c.size_scale, m.unknowns, m.pct, m.effectivity(), m.shell_effectivity(),
+              m.total_effectivity(), 100 * m.shell_true2 / (m.true2 + m.shell_true2),
+              est.degraded_patches);
   return m;
 }
 
@@ -125,6 +152,16 @@ void check_order(int order, double coarse, double fine) {
     // gives 1.7 (within 0.3..3); dropping the background air gives 0.06.
     EXPECT_GT(m->effectivity(), 0.75) << "order " << order;
     EXPECT_LT(m->effectivity(), 1.3) << "order " << order;
+    // The open-boundary shell holds 26..43 % of the true error here. Its own effectivity,
+    // measured 0.79..1.01 (the lowest: order 1, one or two tets across the shell), and that
+    // of the whole estimate (0.86..1.02) within the same bounds as the physical tets'.
+    // Planted (shell; whole): the shell's indicator dropped 0; 0.76..0.77 (the whole alone
+    // would pass); the identity in place of the shell's metric 0.32..0.46; 0.79..0.82; the
+    // fits' tangential part kept at infinity (order 2) 2.24..2.27; 1.65..1.66.
+    EXPECT_GT(m->shell_effectivity(), 0.7) << "order " << order;
+    EXPECT_LT(m->shell_effectivity(), 1.3) << "order " << order;
+    EXPECT_GT(m->total_effectivity(), 0.75) << "order " << order;
+    EXPECT_LT(m->total_effectivity(), 1.3) << "order " << order;
   }
   const double rate = -std::log(std::sqrt(b.estimated2 / a.estimated2)) /
                       std::log(static_cast<double>(b.unknowns) / a.unknowns) * 3;
@@ -162,6 +199,9 @@ TEST(ErrorEstimate3D, SphereInPermeableShellOrder2) {
   // error energy (mu |e_H|^2 = |e_B|^2 / mu), which is also why it matters little.
   EXPECT_GT(m.effectivity(), 0.75);
   EXPECT_LT(m.effectivity(), 1.3);
+  // The open-boundary shell's own: measured 1.04 (the identity for its metric: 0.32).
+  EXPECT_GT(m.shell_effectivity(), 0.7);
+  EXPECT_LT(m.shell_effectivity(), 1.3);
 }
 
 } // namespace

@@ -102,6 +102,73 @@ class AgainstCommandLine(unittest.TestCase):
         self.assertEqual(result.columns, ["position_mm", "Fz_N"])
 
 
+    def test_3d_translation(self):
+        # The 3D translate sweep (two dipole spheres pulled apart along z), analytic and FE:
+        # the same library call as `magfem sweep --move`, so the same bytes.
+        path = example("3d/two_spheres.yaml")
+        files = cli("sweep", path, "--move", "arm", "--axis", "z", "--positions", "0:2:4",
+                    "--analytic", "--quiet")
+        result = magfem.sweep(magfem.Case.load(path), translate="arm", axis="z",
+                              positions=[0, 2, 4], analytic=True)
+        self.check_same(result, files)
+        self.assertEqual(result.columns[0], "position_mm")
+        self.assertEqual(result.summary["motion"], "translate")
+        # Moved apart along z the attraction weakens: the positions were not ignored.
+        self.assertGreater(abs(result["Fz"][0]), abs(result["Fz"][2]))
+        files = cli("sweep", path, "--move", "arm", "--axis", "x", "--positions", "3",
+                    "--mesh-scale", "3", "--order", "1", "--jobs", "1", "--quiet")
+        fe = magfem.sweep(magfem.Case.load(path), translate="arm", axis="x", positions=[3],
+                          mesh_scale=3.0, order=1, jobs=1)
+        self.check_same(fe, files)
+
+
+class Study(unittest.TestCase):
+    PATH = example("3d/compensator_study.yaml")
+    GRID = dict(params={"R_out": [40, 50, 60], "R_in": [30, 35]},
+                objectives=["peak_torque", "torque_at:90"], rotate="outer", axis="y",
+                angles=np.arange(0, 181, 30))
+
+    def test_against_the_command_line(self):
+        # The analytic compensator study (harmonic form, milliseconds a design): the same
+        # library call as `magfem study`, so study.csv byte for byte and the same summary.
+        files = cli("study", self.PATH, "--param", "R_out=40:10:60", "--param", "R_in=30,35",
+                    "--objective", "peak_torque", "--objective", "torque_at:90",
+                    "--rotate", "outer", "--axis", "y", "--angles", "0:30:180", "--quiet")
+        seen = []
+        result = magfem.study(magfem.Case.load(self.PATH),
+                              progress=lambda done, total: seen.append((done, total)),
+                              **self.GRID)
+        self.assertEqual(result.csv(), files["study.csv"])
+        self.assertEqual(result.columns, ["R_out", "R_in", "peak_torque_Nm", "torque_at_90deg_Nm"])
+        cli_summary = json.loads(files["summary.json"])
+        for key in ("magfem_version", "commit", "build", "seconds"):
+            cli_summary.pop(key, None)
+            result.summary.pop(key, None)
+        self.assertEqual(result.summary, cli_summary)
+        self.assertEqual(seen, [(i, 6) for i in range(1, 7)])
+        # The thesis's elbow: the peak torque grows with R_out at fixed R_in (the values reach
+        # the designs; the last parameter varies fastest).
+        peak = result["peak_torque_Nm"][result["R_in"] == 35]
+        self.assertTrue(np.all(np.diff(peak) > 0), peak)
+
+    def test_the_case_parameters_stay_under_the_grid(self):
+        # A Case loaded with gap=3 keeps it in every design: a wider gap, a weaker torque.
+        base = magfem.study(magfem.Case.load(self.PATH), **self.GRID)
+        wide = magfem.study(magfem.Case.load(self.PATH, params={"gap": 3}), **self.GRID)
+        self.assertTrue(np.all(np.abs(wide["peak_torque_Nm"]) < np.abs(base["peak_torque_Nm"])))
+
+    def test_bad_arguments_name_the_field(self):
+        case = magfem.Case.load(self.PATH)
+        for kwargs, field in [(dict(self.GRID, params={}), "params"),
+                              (dict(self.GRID, objectives=[]), "objectives"),
+                              (dict(self.GRID, angles=None), "angles"),
+                              (dict(self.GRID, objectives="peak"), "--objective"),
+                              (dict(self.GRID, params={"nobody": [1]}), "--param")]:
+            with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
+                magfem.study(case, **kwargs)
+            self.assertEqual(err.exception.field, field)
+
+
 class Arguments(unittest.TestCase):
     COMPENSATOR = example("3d/compensator_table42.yaml")
 
@@ -131,6 +198,16 @@ class Arguments(unittest.TestCase):
             with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
                 magfem.sweep(case, **kwargs)
             self.assertEqual(err.exception.field, field)
+        for kwargs, field in [(dict(translate="outer", positions=[0], analytic=True), "axis"),
+                              (dict(translate="outer", axis="z", positions=[0], point=[0, 0, 1],
+                                    analytic=True), "point")]:
+            with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
+                magfem.sweep(case, **kwargs)
+            self.assertEqual(err.exception.field, field)
+        planar = magfem.Case.load(example("2d/re25_motor_torque.yaml"))
+        with self.assertRaises(magfem.InputError) as err:
+            magfem.sweep(planar, translate="rotor", axis="x", positions=[0])
+        self.assertEqual(err.exception.field, "translate")
         axi = magfem.Case.load(example("axi/voice_coil_magnet.yaml"))
         with self.assertRaises(magfem.InputError) as err:
             magfem.sweep(axi, translate="coil", positions=[0], analytic=True)

@@ -5,7 +5,8 @@ usage: check_case_schema.py SCHEMA SOURCE_DIR
 
 - the schema itself must be a valid JSON Schema (draft-07);
 - its bundled-material names must match materials/library.yaml (names, aliases, kinds);
-- every examples/**/*.yaml and validation/cases/*.yaml must validate;
+- every examples/**/*.yaml and validation/cases/*.yaml must parse as plain YAML (expressions
+  quoted, "${..}") and validate;
 - a few built-in snippets must validate (the axisymmetric mode, which has no example yet);
 - every tests/schema/broken/*.yaml must fail validation, with a message containing the text of
   its `# expect-error: ...` line (so each file fails for the reason it was written for).
@@ -55,32 +56,6 @@ def construct_mapping(loader, node, deep=False):
 
 
 CaseLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, construct_mapping)
-
-
-def quote_line(line):
-    """casefile/case_parameters.cpp quote_expressions(), one line: a `${..}` standing alone as
-    a value is put in double quotes (its braces are flow indicators in `[..]` and `{..}`)."""
-    out, quote, i = "", None, 0
-    while i < len(line):
-        c = line[i]
-        if quote:
-            quote = None if c == quote else quote
-            out, i = out + c, i + 1
-        elif c in "\"'":
-            quote, out, i = c, out + c, i + 1
-        elif c == "#" and (i == 0 or line[i - 1] in " \t"):
-            return out + line[i:]
-        elif line.startswith("${", i):
-            close = line.find("}", i)
-            before = out.rstrip(" \t")[-1:]
-            rest = line[close + 1:].lstrip(" \t") if close >= 0 else ""
-            if close >= 0 and before in ("", ":", ",", "[", "{", "-") and rest[:1] in ("", ",", "]", "}", "#"):
-                out, i = out + '"' + line[i:close + 1] + '"', close + 1
-            else:
-                out, i = out + c, i + 1
-        else:
-            out, i = out + c, i + 1
-    return out
 
 
 def evaluate(text, lookup):
@@ -135,9 +110,11 @@ def substitute_parameters(data):
 
 
 def load_yaml(path):
+    """Plain YAML, as an editor's YAML 1.2 parser reads it: no preprocessing (magfem quotes a
+    bare `${..}` for itself, docs/case_format.md "Parameters"; the files checked here must not
+    need that, so that every YAML tool reads them)."""
     with open(path, encoding="utf-8") as f:
-        text = "\n".join(quote_line(line) for line in f.read().split("\n"))
-    return substitute_parameters(yaml.load(text, Loader=CaseLoader))
+        return substitute_parameters(yaml.load(f.read(), Loader=CaseLoader))
 
 
 def where(error):

@@ -1,0 +1,956 @@
+#include "solver/petsc_ksp_solver.hpp"
+
+#include <petscksp.h>
+
+#include <Eigen/CholmodSupport>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <memory>
+#include <mutex>
+#include <numeric>
+#include <sstream>
+#include <type_traits>
+#include <vector>
+
+#include "core/input_error.hpp"
+#include "core/progress.hpp"
+#include "solver/galerkin_product.hpp"
+#include "solver/simultaneous_pcg.hpp"
+
+namespace magfem::petsc_module {
+namespace {
+
+// PETSc's own words for its last error ("Unable to find requested PC type nonsense"), which
+// its error code alone does not carry. Written and read under petsc_mutex().
+std::string& last_petsc_message() {
+  static std::string message;
+  return message;
+}
+
+PetscErrorCode record_error(MPI_Comm, int, const char*, const char*, PetscErrorCode code,
+                            PetscErrorType type, const char* message, void*) {
+  if (type == PETSC_ERROR_INITIAL)
+    last_petsc_message() = message ? message : "";
+  return code;
+}
+
+void check(PetscErrorCode code, const char* what) {
+  if (code == 0)
+    return;
+  std::string text = last_petsc_message();
+  if (text.empty()) {
+    const char* generic = nullptr;
+    PetscErrorMessage(code, &generic, nullptr);
+    text = generic ? generic : "";
+  }
+  last_petsc_message().clear();
+  throw SolveError(std::string("PETSc: ") + what + " failed" + (text.empty() ? "" : ": " + text));
+}
+
+// PETSc and MPI for the life of the process, started on first use so that runs that never
+// need AMG (2D, small 3D) never pay MPI's start-up.
+class PetscSession {
+public:
+  PetscSession() {
+    PetscBool already = PETSC_FALSE;
+    PetscInitialized(&already);
+    if (already)
+      return;
+    // A process started without mpirun is an MPI singleton. Open MPI then probes for a
+    // runtime daemon and every network transport: 1.7 s measured here, against 0.45 s when
+    // told it is alone (one process needs only the self transport). Set only if unset, and
+    // never under mpirun, which exports OMPI_COMM_WORLD_SIZE.
+    if (!std::getenv("OMPI_COMM_WORLD_SIZE")) {
+      setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+      setenv("OMPI_MCA_pml", "ob1", 0);
+      setenv("OMPI_MCA_btl", "self,vader", 0);
+    }
+    // Our own crash is ours to report; PETSc's handler would print its own trace instead.
+    PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
+    check(PetscInitializeNoArguments(), "PetscInitialize");
+    owned_ = true;
+    // Errors come back as codes and become SolveError here, without PETSc's stderr trace.
+    PetscPushErrorHandler(record_error, nullptr);
+  }
+  ~PetscSession() {
+    if (owned_)
+      PetscFinalize();
+  }
+  PetscSession(const PetscSession&) = delete;
+  PetscSession& operator=(const PetscSession&) = delete;
+
+private:
+  bool owned_ = false;
+};
+
+void ensure_petsc() {
+  static PetscSession session;
+}
+
+// PETSc (as Debian builds it) is not thread-safe, and a sweep solves positions on several
+// threads: one PETSc call sequence at a time per process.
+std::mutex& petsc_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// Our defaults per preconditioner, before the user's options. BoomerAMG: HMIS coarsening with
+// extended+i interpolation (at most 4 weights per row) and a strength threshold of 0.5, the
+// settings hypre recommends for 3D operators: the classical 0.25 with Falgout coarsening keeps
+// too many points on P2 tetrahedra and the hierarchy becomes expensive.
+std::string boomeramg_options(const std::string& prefix) {
+  return "-" + prefix + "pc_hypre_boomeramg_coarsen_type HMIS -" + prefix +
+         "pc_hypre_boomeramg_interp_type ext+i -" + prefix + "pc_hypre_boomeramg_P_max 4 -" +
+         prefix + "pc_hypre_boomeramg_strong_threshold 0.5";
+}
+
+std::string default_options(const std::string& preconditioner) {
+  if (preconditioner == "boomeramg")
+    return boomeramg_options("");
+  // p-multigrid: BoomerAMG on the coarse (P1) level, where it fits (a nodal Laplacian-like
+  // operator).
+  if (preconditioner == "pmg")
+    return boomeramg_options("mg_coarse_");
+  return "";
+}
+
+// PETSc's objects read the options database they were given; the sub-solvers PCMG creates
+// would otherwise read the global one and miss petsc_options.
+void use_options(KSP ksp, PetscOptions db) {
+  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(ksp), db), "options");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(pc), db), "options");
+}
+
+// A multigrid level smoother: one Richardson step of its preconditioner (set by the caller).
+PC one_sweep_smoother(KSP smoother, PetscOptions db) {
+  use_options(smoother, db);
+  check(KSPSetType(smoother, KSPRICHARDSON), "KSPSetType(richardson)");
+  check(KSPSetTolerances(smoother, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 1),
+        "KSPSetTolerances (smoother)");
+  PC pc = nullptr;
+  check(KSPGetPC(smoother, &pc), "KSPGetPC");
+  return pc;
+}
+
+} // namespace
+
+void start_petsc(bool any_thread_calls_mpi) {
+  const std::lock_guard lock(petsc_mutex());
+  // PETSc asks MPI for MPI_THREAD_FUNNELED unless told otherwise; the thread level is fixed
+  // when MPI starts, so it is chosen here, before the first PETSc call.
+  if (any_thread_calls_mpi)
+    PETSC_MPI_THREAD_REQUIRED = MPI_THREAD_MULTIPLE;
+  ensure_petsc();
+}
+
+namespace {
+
+// The fine-level smoother of pmg when some equations form a block (the open-boundary shell):
+// block Gauss-Seidel with that block solved exactly (CHOLMOD) and point Gauss-Seidel on every
+// other equation. Down (before the coarse correction): the block, then a forward sweep over
+// the others; up (after it): a backward sweep, then the block. Up is the transpose of down,
+// so the V-cycle stays symmetric, as CG needs. Why a block: in the shell the metric's
+// tangential coefficient exceeds the radial one by (r / (R2 - r))^2, which reaches
+// (R2 / h)^2 in the outermost layer of elements: anisotropy that grows under refinement and
+// that no point smoother (Gauss-Seidel, Jacobi, Chebyshev over either) removes.
+//
+// The block's factorization outlives the smoother (BlockFactorCache): Newton sets the
+// preconditioner up again at every step, but the shell holds air only, so its block is the
+// same matrix every time, and its Cholesky factor (most of the set-up: 99 M entries, 9 s at
+// 2 M unknowns) is reused as long as the block's entries are bit for bit the ones it was
+// computed from. Any change (iron next to the shell, a new mesh) factorizes again.
+using BlockFactor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
+struct BlockFactorCache {
+  std::vector<int> outer, inner;       // the block's lower triangle, CSC
+  std::vector<double> values;          // ... and its entries
+  std::shared_ptr<BlockFactor> factor; // computed from exactly these
+  int factorizations = 0;              // how many were computed (not reused)
+};
+
+// s -= (row i of the CSR matrix) x, for every column of x at once. Plain loops over a row's
+// columns (contiguous in the row-major block) rather than an Eigen expression per entry: this
+// is the inner loop of the block solve's smoother and product, and the expression's set-up
+// per matrix entry cost as much as the arithmetic.
+void subtract_row_products(const PetscInt* row_start, const PetscInt* column,
+                           const PetscScalar* value, PetscInt i, const ColumnBlock& x, double* s) {
+  const Eigen::Index m = x.cols();
+  const double* xd = x.data();
+  for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
+    const double a = value[k];
+    const double* xk = xd + static_cast<Eigen::Index>(column[k]) * m;
+    for (Eigen::Index c = 0; c < m; ++c)
+      s[c] -= a * xk[c];
+  }
+}
+
+class BlockSmoother {
+public:
+  // `row_start`, `column`, `value`: the whole symmetric matrix in CSR (sorted columns); they
+  // must outlive the smoother. `block`: sorted equations. `cache`: the last factorization.
+  BlockSmoother(const std::vector<PetscInt>& row_start, const std::vector<PetscInt>& column,
+                const std::vector<PetscScalar>& value, const std::vector<int>& block,
+                BlockFactorCache& cache)
+      : row_start_(row_start), column_(column), value_(value) {
+    const auto n = static_cast<PetscInt>(row_start.size()) - 1;
+    std::vector<PetscInt> local(n, -1);
+    for (int e : block) {
+      if (e < 0 || e >= n)
+        throw SolveError("internal: a smoother block equation is out of range");
+      local[e] = 0;
+    }
+    inv_diag_.assign(n, 0.0);
+    for (PetscInt i = 0; i < n; ++i) {
+      if (local[i] >= 0) {
+        local[i] = static_cast<PetscInt>(block_.size());
+        block_.push_back(i);
+      } else {
+        rest_.push_back(i);
+      }
+      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k)
+        if (column[k] == i && value[k] > 0)
+          inv_diag_[i] = 1 / value[k];
+      if (local[i] < 0 && inv_diag_[i] == 0)
+        throw SolveError("internal: a diagonal entry is not positive");
+    }
+    std::vector<Eigen::Triplet<double>> entries;
+    for (std::size_t b = 0; b < block_.size(); ++b) {
+      const PetscInt i = block_[b];
+      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
+        const PetscInt j = local[column[k]];
+        if (j >= 0 && j >= static_cast<PetscInt>(b))
+          entries.emplace_back(static_cast<int>(j), static_cast<int>(b), value[k]);
+      }
+    }
+    const auto m = static_cast<Eigen::Index>(block_.size());
+    Eigen::SparseMatrix<double> lower(m, m);
+    lower.setFromTriplets(entries.begin(), entries.end());
+    lower.makeCompressed();
+    const auto same = [](const auto* data, Eigen::Index n, const auto& kept) {
+      return static_cast<std::size_t>(n) == kept.size() && std::equal(data, data + n, kept.begin());
+    };
+    if (!cache.factor || !same(lower.outerIndexPtr(), m + 1, cache.outer) ||
+        !same(lower.innerIndexPtr(), lower.nonZeros(), cache.inner) ||
+        !same(lower.valuePtr(), lower.nonZeros(), cache.values)) {
+      auto factor = std::make_shared<BlockFactor>();
+      // Nested dissection: the shell is a thick spherical layer, where METIS's ordering fills
+      // in a third of what AMD's does (11 against 35 GFlop at 53k equations).
+      factor->cholmod().nmethods = 1;
+      factor->cholmod().method[0].ordering = CHOLMOD_METIS;
+      factor->compute(lower);
+      if (factor->info() != Eigen::Success)
+        throw SolveError("the p-multigrid smoother's block is not positive definite");
+      cache.outer.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + m + 1);
+      cache.inner.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
+      cache.values.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
+      cache.factor = std::move(factor);
+      ++cache.factorizations;
+    }
+    factor_ = cache.factor;
+    r_.resize(m);
+  }
+
+  // x <- x + M^-1 (b - A x), `its` times; M = down's or up's splitting.
+  void smooth(const double* b, double* x, bool down, bool zero_guess, PetscInt its) {
+    const auto n = static_cast<PetscInt>(inv_diag_.size());
+    if (zero_guess)
+      std::fill(x, x + n, 0.0);
+    for (PetscInt it = 0; it < its; ++it) {
+      if (down) {
+        solve_block(b, x, zero_guess && it == 0);
+        for (PetscInt i : rest_)
+          relax(b, x, i);
+      } else {
+        for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
+          relax(b, x, *i);
+        solve_block(b, x, false);
+      }
+    }
+  }
+
+  // The same sweeps on a block of columns (row-major: a row's columns side by side), all
+  // columns in one pass over the matrix; the block's solves in one CHOLMOD call.
+  void smooth_many(const ColumnBlock& b, ColumnBlock& x, bool down, bool zero_guess) {
+    if (zero_guess)
+      x.setZero();
+    if (down) {
+      solve_block_many(b, x, zero_guess);
+      for (PetscInt i : rest_)
+        relax_many(b, x, i);
+    } else {
+      for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
+        relax_many(b, x, *i);
+      solve_block_many(b, x, false);
+    }
+  }
+
+private:
+  void residual_many(const ColumnBlock& b, const ColumnBlock& x, PetscInt i,
+                     Eigen::RowVectorXd& s) const {
+    s = b.row(i);
+    subtract_row_products(row_start_.data(), column_.data(), value_.data(), i, x, s.data());
+  }
+  void relax_many(const ColumnBlock& b, ColumnBlock& x, PetscInt i) {
+    residual_many(b, x, i, s_);
+    x.row(i) += inv_diag_[i] * s_;
+  }
+  void solve_block_many(const ColumnBlock& b, ColumnBlock& x, bool x_is_zero) {
+    Eigen::MatrixXd rb(static_cast<Eigen::Index>(block_.size()), b.cols());
+    for (std::size_t k = 0; k < block_.size(); ++k) {
+      if (x_is_zero)
+        s_ = b.row(block_[k]);
+      else
+        residual_many(b, x, block_[k], s_);
+      rb.row(static_cast<Eigen::Index>(k)) = s_;
+    }
+    const Eigen::MatrixXd dx = factor_->solve(rb);
+    for (std::size_t k = 0; k < block_.size(); ++k)
+      x.row(block_[k]) += dx.row(static_cast<Eigen::Index>(k));
+  }
+  double residual(const double* b, const double* x, PetscInt i) const {
+    double sum = b[i];
+    for (PetscInt k = row_start_[i]; k < row_start_[i + 1]; ++k)
+      sum -= value_[k] * x[column_[k]];
+    return sum;
+  }
+  void relax(const double* b, double* x, PetscInt i) const {
+    x[i] += residual(b, x, i) * inv_diag_[i];
+  }
+  // x_B += K_BB^-1 (b - A x)_B; with x = 0 the residual is b.
+  void solve_block(const double* b, double* x, bool x_is_zero) {
+    for (std::size_t k = 0; k < block_.size(); ++k)
+      r_[static_cast<Eigen::Index>(k)] = x_is_zero ? b[block_[k]] : residual(b, x, block_[k]);
+    const Eigen::VectorXd dx = factor_->solve(r_);
+    for (std::size_t k = 0; k < block_.size(); ++k)
+      x[block_[k]] += dx[static_cast<Eigen::Index>(k)];
+  }
+
+  const std::vector<PetscInt>& row_start_;
+  const std::vector<PetscInt>& column_;
+  const std::vector<PetscScalar>& value_;
+  std::vector<PetscInt> block_, rest_;
+  std::vector<double> inv_diag_;
+  std::shared_ptr<const BlockFactor> factor_;
+  Eigen::VectorXd r_;
+  Eigen::RowVectorXd s_;
+};
+
+// The block smoother is built when PETSc sets the smoothers up, not before: options that
+// replace it (-mg_levels_pc_type sor, the one-sweep SSOR smoother of before) then cost no
+// factorization. Down and up share it.
+struct BlockSmootherSlot {
+  const std::vector<PetscInt>* row_start = nullptr;
+  const std::vector<PetscInt>* column = nullptr;
+  const std::vector<PetscScalar>* value = nullptr;
+  const std::vector<int>* block = nullptr;
+  BlockFactorCache* cache = nullptr;
+  std::unique_ptr<BlockSmoother> smoother;
+};
+
+BlockSmoother& block_smoother_of(PC pc) {
+  void* context = nullptr;
+  PCShellGetContext(pc, &context);
+  return *static_cast<BlockSmootherSlot*>(context)->smoother;
+}
+
+PetscErrorCode set_up_block_smoother(PC pc) {
+  void* context = nullptr;
+  PetscCall(PCShellGetContext(pc, &context));
+  auto& slot = *static_cast<BlockSmootherSlot*>(context);
+  if (slot.smoother)
+    return 0;
+  try {
+    slot.smoother = std::make_unique<BlockSmoother>(*slot.row_start, *slot.column, *slot.value,
+                                                    *slot.block, *slot.cache);
+  } catch (const std::exception& e) { // no exception through PETSc's C frames
+    return PetscError(PETSC_COMM_SELF, __LINE__, "set_up_block_smoother", __FILE__, PETSC_ERR_LIB,
+                      PETSC_ERROR_INITIAL, "%s", e.what());
+  }
+  return 0;
+}
+
+template <bool Down>
+PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal, PetscReal,
+                                 PetscInt its, PetscBool zero_guess, PetscInt* done,
+                                 PCRichardsonConvergedReason* reason) {
+  const PetscScalar* vb = nullptr;
+  PetscScalar* vx = nullptr;
+  PetscCall(VecGetArrayRead(b, &vb));
+  PetscCall(VecGetArray(x, &vx));
+  block_smoother_of(pc).smooth(vb, vx, Down, zero_guess, its);
+  PetscCall(VecRestoreArray(x, &vx));
+  PetscCall(VecRestoreArrayRead(b, &vb));
+  *done = its;
+  *reason = PCRICHARDSON_CONVERGED_ITS;
+  return 0;
+}
+
+// M^-1 b from x = 0 (the smoother as a preconditioner of another Krylov method).
+template <bool Down> PetscErrorCode smooth_apply(PC pc, Vec b, Vec x) {
+  PetscInt done = 0;
+  PCRichardsonConvergedReason reason;
+  return smooth_richardson<Down>(pc, b, x, nullptr, 0, 0, 0, 1, PETSC_TRUE, &done, &reason);
+}
+
+} // namespace
+
+// galerkin_product and our CSR arrays share PETSc's index type (Debian's PETSc: 32-bit).
+static_assert(std::is_same_v<PetscInt, int>);
+
+struct PetscKspSolver::Impl {
+  PetscSolverOptions options;
+  PetscOptions db = nullptr;
+  KSP ksp = nullptr;
+  Mat a = nullptr;
+  Mat p = nullptr;      // pmg's interpolation
+  Mat coarse = nullptr; // pmg's coarse operator P^T A P
+  Vec rhs = nullptr;    // distributed mode: the assembled right-hand side
+  std::unique_ptr<BlockSmootherSlot> block_smoother; // pmg with a smoother block
+  BlockFactorCache block_factor;                     // kept across setup() calls (not release()d)
+  std::vector<PetscInt> row_start, column, p_row_start, p_column;
+  std::vector<PetscScalar> value, p_value;
+  CsrMatrix coarse_csr; // the arrays behind `coarse`
+  double rhs_norm = 1;
+
+  ~Impl() {
+    release();
+    if (db)
+      PetscOptionsDestroy(&db);
+  }
+  void release() {
+    if (ksp)
+      KSPDestroy(&ksp);
+    if (a)
+      MatDestroy(&a);
+    if (p)
+      MatDestroy(&p);
+    if (coarse)
+      MatDestroy(&coarse);
+    if (rhs)
+      VecDestroy(&rhs);
+    block_smoother.reset();
+  }
+  void to_full_csr(const Eigen::SparseMatrix<double>& lower);
+  void set_up_ksp(MPI_Comm comm);
+  KrylovOutcome outcome(double rhs_norm) const;
+  void set_up_pmg(PC pc);
+  bool runs_block_vcycle() const;
+  void multiply_many(const ColumnBlock& x, ColumnBlock& y) const;
+  void vcycle_many(const ColumnBlock& r, ColumnBlock& z);
+  static PetscErrorCode monitor(KSP, PetscInt it, PetscReal rnorm, void* self);
+};
+
+// CSR of the full symmetric matrix from the CSC lower triangle: row i holds (i, j < i) from
+// the lower entries of row i, then (i, j >= i) from column i. Columns come out sorted as PETSc
+// requires (columns are visited in order; a column's rows are sorted in a compressed Eigen
+// matrix, and any that are not get sorted below).
+void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower) {
+  const int n = static_cast<int>(lower.rows());
+  std::vector<PetscInt> n_left(n, 0), n_right(n, 0);
+  for (int j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
+      if (it.row() < j)
+        throw SolveError("internal: the matrix is not a lower triangle");
+      if (it.row() > j)
+        ++n_left[it.row()];
+      ++n_right[j];
+    }
+  row_start.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i)
+    row_start[i + 1] = row_start[i] + n_left[i] + n_right[i];
+  column.resize(row_start[n]);
+  value.resize(row_start[n]);
+  std::vector<PetscInt> left(row_start.begin(), row_start.end() - 1), right(n);
+  for (int i = 0; i < n; ++i)
+    right[i] = row_start[i] + n_left[i];
+  bool sorted = true;
+  for (int j = 0; j < n; ++j) {
+    PetscInt previous = -1;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
+      const PetscInt i = static_cast<PetscInt>(it.row());
+      if (i > j) {
+        column[left[i]] = j;
+        value[left[i]++] = it.value();
+      }
+      sorted = sorted && i > previous;
+      previous = i;
+      column[right[j]] = i;
+      value[right[j]++] = it.value();
+    }
+  }
+  if (sorted)
+    return;
+  std::vector<int> order;
+  std::vector<PetscInt> c;
+  std::vector<PetscScalar> v;
+  for (int i = 0; i < n; ++i) {
+    const PetscInt b = row_start[i], e = row_start[i + 1];
+    order.resize(e - b);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](int x, int y) { return column[b + x] < column[b + y]; });
+    c.assign(column.begin() + b, column.begin() + e);
+    v.assign(value.begin() + b, value.begin() + e);
+    for (PetscInt k = 0; k < e - b; ++k)
+      column[b + k] = c[order[k]], value[b + k] = v[order[k]];
+  }
+}
+
+// Two-level p-multigrid as PETSc's PCMG: the given interpolation, the Galerkin coarse operator
+// P^T A P (galerkin_product), one V-cycle per CG iteration, one fixed symmetric operator as CG
+// needs. Smoother, with a smoother block (the open-boundary shell): block Gauss-Seidel
+// (BlockSmoother above: the block by CHOLMOD and one Gauss-Seidel sweep over the rest, down
+// and transposed up). Without one: one symmetric Gauss-Seidel sweep (SSOR, omega 1) before
+// and after the coarse correction. Measured on the magnetized sphere (CG iterations at mesh
+// scales 2.5 / 1.4 / 1, 255k / 488k / 942k unknowns): SSOR 73 / 98 / 122; two SSOR sweeps
+// 59 / 80; Chebyshev over SSOR 44 / 61; an exact (CHOLMOD) coarse solve instead of one
+// BoomerAMG V-cycle 67 at 2.5; ICC(0) as the smoother is indefinite; the shell by one
+// BoomerAMG V-cycle instead of CHOLMOD 43 / 55; the shell by CHOLMOD 23 / 23 / 23, also
+// faster (2.0 against 4.6 s of CG at 255k). The point smoothers all grow alike: the shell's
+// anisotropy grows under refinement (BlockSmoother), which the P1 space cannot take up.
+void PetscKspSolver::Impl::set_up_pmg(PC pc) {
+  if (!options.prolongation)
+    throw SolveError("internal: p-multigrid without a coarse space");
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& q = *options.prolongation;
+  if (q.rows() != static_cast<Eigen::Index>(row_start.size()) - 1 || !q.isCompressed())
+    throw SolveError("internal: the coarse space does not fit the system");
+  p_row_start.assign(q.outerIndexPtr(), q.outerIndexPtr() + q.rows() + 1);
+  p_column.assign(q.innerIndexPtr(), q.innerIndexPtr() + q.nonZeros());
+  p_value.assign(q.valuePtr(), q.valuePtr() + q.nonZeros());
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(q.rows()),
+                                  static_cast<PetscInt>(q.cols()), p_row_start.data(),
+                                  p_column.data(), p_value.data(), &p),
+        "MatCreateSeqAIJWithArrays (interpolation)");
+  check(PCSetType(pc, PCMG), "PCSetType(mg)");
+  check(PCMGSetLevels(pc, 2, nullptr), "PCMGSetLevels");
+  check(PCMGSetType(pc, PC_MG_MULTIPLICATIVE), "PCMGSetType");
+  check(PCMGSetCycleType(pc, PC_MG_CYCLE_V), "PCMGSetCycleType");
+  check(PCMGSetInterpolation(pc, 1, p), "PCMGSetInterpolation");
+  // The Galerkin operator by our row-wise product (galerkin_product.hpp), not PETSc's general
+  // one: the same matrix, a fifth of the time.
+  coarse_csr = galerkin_product(row_start.data(), column.data(), value.data(), q);
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, coarse_csr.rows, coarse_csr.cols,
+                                  coarse_csr.row_start.data(), coarse_csr.column.data(),
+                                  coarse_csr.value.data(), &coarse),
+        "MatCreateSeqAIJWithArrays (coarse operator)");
+  check(PCMGSetGalerkin(pc, PC_MG_GALERKIN_NONE), "PCMGSetGalerkin");
+  KSP coarse_ksp = nullptr;
+  if (options.smoother_block && !options.smoother_block->empty()) {
+    block_smoother = std::make_unique<BlockSmootherSlot>(BlockSmootherSlot{
+        &row_start, &column, &value, options.smoother_block, &block_factor, nullptr});
+    KSP down = nullptr, up = nullptr;
+    check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
+    check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
+    for (KSP smoother : {down, up}) {
+      PC shell = one_sweep_smoother(smoother, db);
+      check(KSPSetNormType(smoother, KSP_NORM_NONE), "KSPSetNormType (smoother)");
+      check(PCSetType(shell, PCSHELL), "PCSetType(shell)");
+      check(PCShellSetContext(shell, block_smoother.get()), "PCShellSetContext");
+      check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
+      check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
+      const bool is_down = smoother == down;
+      check(PCShellSetApplyRichardson(shell,
+                                      is_down ? smooth_richardson<true> : smooth_richardson<false>),
+            "PCShellSetApplyRichardson");
+      check(PCShellSetApply(shell, is_down ? smooth_apply<true> : smooth_apply<false>),
+            "PCShellSetApply");
+    }
+  } else {
+    KSP smoother = nullptr;
+    check(PCMGGetSmoother(pc, 1, &smoother), "PCMGGetSmoother");
+    PC smoother_pc = one_sweep_smoother(smoother, db);
+    check(PCSetType(smoother_pc, PCSOR), "PCSetType(sor)");
+    check(PCSORSetSymmetric(smoother_pc, SOR_LOCAL_SYMMETRIC_SWEEP), "PCSORSetSymmetric");
+  }
+  check(PCMGGetCoarseSolve(pc, &coarse_ksp), "PCMGGetCoarseSolve");
+  use_options(coarse_ksp, db);
+  check(KSPSetOperators(coarse_ksp, coarse, coarse), "KSPSetOperators (coarse)");
+  check(KSPSetType(coarse_ksp, KSPPREONLY), "KSPSetType(preonly)");
+  PC coarse_pc = nullptr;
+  check(KSPGetPC(coarse_ksp, &coarse_pc), "KSPGetPC");
+  check(PCSetType(coarse_pc, PCHYPRE), "PCSetType(hypre)");
+  check(PCHYPRESetType(coarse_pc, "boomeramg"), "PCHYPRESetType");
+}
+
+PetscErrorCode PetscKspSolver::Impl::monitor(KSP, PetscInt it, PetscReal rnorm, void* self) {
+  auto* impl = static_cast<Impl*>(self);
+  if (impl->options.progress)
+    impl->options.progress->iteration(("CG+" + impl->options.preconditioner).c_str(),
+                                      static_cast<int>(it), rnorm / impl->rhs_norm);
+  return 0;
+}
+
+PetscKspSolver::PetscKspSolver(PetscSolverOptions options) : impl_(std::make_unique<Impl>()) {
+  const std::lock_guard lock(petsc_mutex());
+  ensure_petsc();
+  impl_->options = std::move(options);
+  check(PetscOptionsCreate(&impl_->db), "PetscOptionsCreate");
+  const std::string all =
+      default_options(impl_->options.preconditioner) + " " + impl_->options.petsc_options;
+  check(PetscOptionsInsertString(impl_->db, all.c_str()), "reading the PETSc options");
+}
+
+PetscKspSolver::~PetscKspSolver() {
+  const std::lock_guard lock(petsc_mutex());
+  impl_.reset();
+}
+
+// CG with our tolerance and the preconditioner on `a`, then the user's options.
+void PetscKspSolver::Impl::set_up_ksp(MPI_Comm comm) {
+  check(KSPCreate(comm, &ksp), "KSPCreate");
+  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(ksp), db), "options");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(pc), db), "options");
+  check(KSPSetOperators(ksp, a, a), "KSPSetOperators");
+  check(KSPSetType(ksp, KSPCG), "KSPSetType");
+  // The unpreconditioned residual: the same test as the incomplete-Cholesky CG, so the
+  // tolerance means the same whichever preconditioner ran.
+  check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  check(
+      KSPSetTolerances(ksp, options.relative_tolerance, 0.0, PETSC_DEFAULT, options.max_iterations),
+      "KSPSetTolerances");
+  if (options.preconditioner == "pmg") {
+    set_up_pmg(pc);
+  } else if (options.preconditioner == "gamg") {
+    check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
+  } else {
+    check(PCSetType(pc, PCHYPRE), "PCSetType(hypre)");
+    check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  }
+  check(KSPSetFromOptions(ksp), "applying petsc_options");
+  check(KSPMonitorSet(ksp, &Impl::monitor, this, nullptr), "KSPMonitorSet");
+  check(KSPSetUp(ksp), "preconditioner set-up");
+}
+
+void PetscKspSolver::setup(const Eigen::SparseMatrix<double>& lower) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  m.release();
+  m.to_full_csr(lower);
+  const auto n = static_cast<PetscInt>(lower.rows());
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, m.row_start.data(), m.column.data(),
+                                  m.value.data(), &m.a),
+        "MatCreateSeqAIJWithArrays");
+  m.set_up_ksp(PETSC_COMM_SELF);
+}
+
+KrylovOutcome PetscKspSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  Impl& m = *impl_;
+  KrylovOutcome out;
+  const auto n = static_cast<PetscInt>(rhs.size());
+  x = Eigen::VectorXd::Zero(rhs.size());
+  m.rhs_norm = rhs.norm();
+  if (m.rhs_norm == 0) {
+    out.converged = true;
+    out.reason = "zero right-hand side";
+    return out;
+  }
+  Eigen::VectorXd b = rhs;
+  const std::lock_guard lock(petsc_mutex());
+  Vec vb = nullptr, vx = nullptr;
+  check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, b.data(), &vb), "VecCreateSeqWithArray");
+  check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &vx), "VecCreateSeqWithArray");
+  const PetscErrorCode code = KSPSolve(m.ksp, vb, vx);
+  VecDestroy(&vb);
+  VecDestroy(&vx);
+  check(code, "KSPSolve");
+  return m.outcome(m.rhs_norm);
+}
+
+// Our V-cycle is PCMG's (set_up_pmg) only while no petsc_options could have changed PCMG's
+// smoothers, cycle or coarse solve.
+bool PetscKspSolver::Impl::runs_block_vcycle() const {
+  return options.preconditioner == "pmg" && options.petsc_options.empty() && block_smoother &&
+         block_smoother->smoother;
+}
+
+void PetscKspSolver::Impl::multiply_many(const ColumnBlock& x, ColumnBlock& y) const {
+  const auto n = static_cast<PetscInt>(row_start.size()) - 1;
+  y.setZero(x.rows(), x.cols());
+  for (PetscInt i = 0; i < n; ++i)
+    subtract_row_products(row_start.data(), column.data(), value.data(), i, x,
+                          y.data() + static_cast<Eigen::Index>(i) * x.cols());
+  y = -y;
+}
+
+// One V-cycle of pmg (PCMG multiplicative, as set_up_pmg builds it) on every column of r:
+// the block smoother down from z = 0, the coarse correction of the residual (BoomerAMG, one
+// column at a time: the P1 level is small), the block smoother up.
+void PetscKspSolver::Impl::vcycle_many(const ColumnBlock& r, ColumnBlock& z) {
+  BlockSmoother& smoother = *block_smoother->smoother;
+  z.resize(r.rows(), r.cols());
+  smoother.smooth_many(r, z, true, true);
+  ColumnBlock residual;
+  multiply_many(z, residual);
+  residual = r - residual;
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> q(
+      static_cast<Eigen::Index>(p_row_start.size()) - 1, coarse_csr.rows,
+      static_cast<Eigen::Index>(p_value.size()), p_row_start.data(), p_column.data(),
+      p_value.data());
+  const Eigen::MatrixXd rc = q.transpose() * residual;
+  Eigen::MatrixXd ec(rc.rows(), rc.cols());
+  PC pc = nullptr;
+  KSP coarse_ksp = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCMGGetCoarseSolve(pc, &coarse_ksp), "PCMGGetCoarseSolve");
+  const auto nc = static_cast<PetscInt>(rc.rows());
+  for (Eigen::Index j = 0; j < rc.cols(); ++j) {
+    Vec vb = nullptr, vx = nullptr;
+    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nc, rc.col(j).data(), &vb),
+          "VecCreateSeqWithArray");
+    check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nc, ec.col(j).data(), &vx),
+          "VecCreateSeqWithArray");
+    const PetscErrorCode code = KSPSolve(coarse_ksp, vb, vx);
+    VecDestroy(&vb);
+    VecDestroy(&vx);
+    check(code, "KSPSolve (coarse)");
+  }
+  z.noalias() += q * ec;
+  smoother.smooth_many(r, z, false, false);
+}
+
+std::vector<KrylovOutcome> PetscKspSolver::solve_many(const Eigen::MatrixXd& rhs,
+                                                      Eigen::MatrixXd& x) {
+  Impl& m = *impl_;
+  x.resize(rhs.rows(), rhs.cols());
+  std::vector<KrylovOutcome> out;
+  bool block = false;
+  {
+    const std::lock_guard lock(petsc_mutex());
+    block = m.runs_block_vcycle();
+  }
+  if (!block) {
+    for (Eigen::Index j = 0; j < rhs.cols(); ++j) {
+      Eigen::VectorXd xj;
+      out.push_back(solve(rhs.col(j), xj));
+      x.col(j) = xj;
+    }
+    return out;
+  }
+  const std::lock_guard lock(petsc_mutex());
+  ColumnBlock xb;
+  const std::string name = "CG+pmg x" + std::to_string(rhs.cols());
+  out = simultaneous_pcg([&](const ColumnBlock& in, ColumnBlock& y) { m.multiply_many(in, y); },
+                         [&](const ColumnBlock& in, ColumnBlock& y) { m.vcycle_many(in, y); }, rhs,
+                         xb, m.options.relative_tolerance, m.options.max_iterations,
+                         m.options.progress, name.c_str());
+  x = xb;
+  return out;
+}
+
+// How the last KSPSolve ended.
+KrylovOutcome PetscKspSolver::Impl::outcome(double b_norm) const {
+  KrylovOutcome out;
+  KSPConvergedReason reason;
+  PetscInt iterations = 0;
+  PetscReal rnorm = 0;
+  KSPGetConvergedReason(ksp, &reason);
+  KSPGetIterationNumber(ksp, &iterations);
+  KSPGetResidualNorm(ksp, &rnorm);
+  out.iterations = static_cast<int>(iterations);
+  out.relative_residual = rnorm / b_norm;
+  out.reason = KSPConvergedReasons[reason];
+  KSPType type = nullptr;
+  KSPGetType(ksp, &type);
+  const bool preonly = type && std::string(type) == KSPPREONLY;
+  // Only a stop on the tolerance is a solution (a direct solve through -ksp_type preonly
+  // stops on its one iteration; the caller's residual check judges it).
+  out.converged = reason == KSP_CONVERGED_RTOL || reason == KSP_CONVERGED_ATOL ||
+                  reason == KSP_CONVERGED_RTOL_NORMAL || reason == KSP_CONVERGED_ATOL_NORMAL ||
+                  reason == KSP_CONVERGED_HAPPY_BREAKDOWN ||
+                  (preonly && reason == KSP_CONVERGED_ITS);
+  return out;
+}
+
+void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  if (m.options.preconditioner == "pmg")
+    throw SolveError("internal: p-multigrid is not available distributed");
+  m.release();
+  PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
+  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
+  MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  const PetscInt begin = end - local;
+  // Exact preallocation: per owned row, its columns inside the owned block (the "diagonal"
+  // part) and outside it. Without it every MatSetValues that opens a new entry reallocates.
+  std::vector<PetscInt> in_block(local, 0), off_block(local, 0);
+  auto count = [&](PetscInt row, PetscInt col) {
+    if (row >= begin && row < end)
+      ++(col >= begin && col < end ? in_block : off_block)[row - begin];
+  };
+  for (PetscInt j = 0; j < n; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
+      const auto i = static_cast<PetscInt>(it.row());
+      count(i, j);
+      if (i != j)
+        count(j, i);
+    }
+  check(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, in_block.data(), 0, off_block.data(),
+                     &m.a),
+        "MatCreateAIJ");
+  check(VecCreateMPI(PETSC_COMM_WORLD, local, n, &m.rhs), "VecCreateMPI");
+  check(VecSetOption(m.rhs, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE), "VecSetOption");
+  check(VecSet(m.rhs, 0.0), "VecSet");
+}
+
+void PetscKspSolver::add_element(int n, const int* eq, const double* ke, const double* fe) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  std::vector<PetscInt> rows(eq, eq + n); // negative (constrained): skipped by PETSc
+  check(MatSetValues(m.a, n, rows.data(), n, rows.data(), ke, ADD_VALUES), "MatSetValues");
+  check(VecSetValues(m.rhs, n, rows.data(), fe, ADD_VALUES), "VecSetValues");
+}
+
+void PetscKspSolver::setup_distributed() {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  check(MatAssemblyBegin(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(VecAssemblyBegin(m.rhs), "VecAssemblyBegin");
+  check(VecAssemblyEnd(m.rhs), "VecAssemblyEnd");
+  m.set_up_ksp(PETSC_COMM_WORLD);
+}
+
+KrylovOutcome PetscKspSolver::solve_distributed(Eigen::VectorXd& x) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  PetscReal b_norm = 0;
+  check(VecNorm(m.rhs, NORM_2, &b_norm), "VecNorm");
+  m.rhs_norm = b_norm;
+  Vec vx = nullptr, r = nullptr, root = nullptr;
+  VecScatter to_root = nullptr;
+  auto destroy = [&] {
+    VecDestroy(&vx);
+    VecDestroy(&r);
+    VecDestroy(&root);
+    VecScatterDestroy(&to_root);
+  };
+  try {
+    check(VecDuplicate(m.rhs, &vx), "VecDuplicate");
+    check(VecSet(vx, 0.0), "VecSet");
+    KrylovOutcome out;
+    if (b_norm == 0) {
+      out.converged = true;
+      out.reason = "zero right-hand side";
+      out.true_relative_residual = 0;
+    } else {
+      check(KSPSolve(m.ksp, m.rhs, vx), "KSPSolve");
+      out = m.outcome(b_norm);
+      // r = b - A x, by PETSc over the distributed matrix.
+      check(VecDuplicate(m.rhs, &r), "VecDuplicate");
+      check(MatMult(m.a, vx, r), "MatMult");
+      check(VecAYPX(r, -1.0, m.rhs), "VecAYPX");
+      PetscReal r_norm = 0;
+      check(VecNorm(r, NORM_2, &r_norm), "VecNorm");
+      out.true_relative_residual = r_norm / b_norm;
+    }
+    check(VecScatterCreateToZero(vx, &to_root, &root), "VecScatterCreateToZero");
+    check(VecScatterBegin(to_root, vx, root, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(to_root, vx, root, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    PetscInt n_root = 0;
+    check(VecGetLocalSize(root, &n_root), "VecGetLocalSize");
+    const PetscScalar* values = nullptr;
+    check(VecGetArrayRead(root, &values), "VecGetArrayRead");
+    x = Eigen::Map<const Eigen::VectorXd>(values, n_root); // n on rank 0, 0 elsewhere
+    VecRestoreArrayRead(root, &values);
+    destroy();
+    return out;
+  } catch (...) {
+    destroy();
+    throw;
+  }
+}
+
+void PetscKspSolver::set_relative_tolerance(double tol) {
+  const std::lock_guard lock(petsc_mutex());
+  impl_->options.relative_tolerance = tol;
+  if (impl_->ksp)
+    check(KSPSetTolerances(impl_->ksp, tol, 0.0, PETSC_DEFAULT, impl_->options.max_iterations),
+          "KSPSetTolerances");
+}
+
+int PetscKspSolver::block_factorizations() const {
+  return impl_->block_factor.factorizations;
+}
+
+std::string PetscKspSolver::preconditioner_name() const {
+  const std::lock_guard lock(petsc_mutex());
+  if (!impl_->ksp)
+    return impl_->options.preconditioner;
+  PC pc = nullptr;
+  KSPGetPC(impl_->ksp, &pc);
+  PCType type = nullptr;
+  PCGetType(pc, &type);
+  if (!type)
+    return impl_->options.preconditioner;
+  if (std::string(type) == PCMG && impl_->options.preconditioner == "pmg")
+    return "pmg";
+  if (std::string(type) == PCHYPRE) {
+    const char* hypre = nullptr;
+    PCHYPREGetType(pc, &hypre);
+    return hypre ? hypre : "hypre";
+  }
+  return type;
+}
+
+namespace {
+// PETSc reads "-name value" pairs and quietly ignores a word that is neither, so that
+// "pc_type gamg" would change nothing without a word. A name begins with '-' and a letter; a
+// value (a number may be negative) follows a name, one per name.
+std::string options_syntax_problem(const std::string& options) {
+  std::istringstream words(options);
+  std::string word;
+  bool after_name = false;
+  while (words >> word) {
+    const bool name = word.size() > 1 && word[0] == '-' &&
+                      (std::isalpha(static_cast<unsigned char>(word[1])) || word[1] == '_');
+    if (!name && !after_name)
+      return "'" + word +
+             "' is neither a PETSc option (they begin with '-', e.g. -pc_type) nor the value "
+             "of the option before it";
+    after_name = name;
+  }
+  return "";
+}
+} // namespace
+
+std::string petsc_options_problem(const PetscSolverOptions& options) {
+  if (std::string why = options_syntax_problem(options.petsc_options); !why.empty())
+    return why;
+  // A 1D Laplacian with a fixed end (symmetric positive definite) and, for pmg, linear
+  // interpolation from every other node.
+  constexpr int n = 6;
+  std::vector<Eigen::Triplet<double>> a, q;
+  for (int i = 0; i < n; ++i) {
+    a.emplace_back(i, i, 2.0);
+    if (i + 1 < n)
+      a.emplace_back(i + 1, i, -1.0);
+    if (i % 2 == 0)
+      q.emplace_back(i, i / 2, 1.0);
+    else
+      for (int c : {i / 2, i / 2 + 1})
+        if (c < n / 2)
+          q.emplace_back(i, c, 0.5);
+  }
+  Eigen::SparseMatrix<double> lower(n, n);
+  lower.setFromTriplets(a.begin(), a.end());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> prolongation(n, n / 2);
+  prolongation.setFromTriplets(q.begin(), q.end());
+  PetscSolverOptions trial = options;
+  trial.progress = nullptr;
+  trial.prolongation = &prolongation;
+  try {
+    PetscKspSolver solver(trial);
+    solver.setup(lower);
+  } catch (const SolveError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+} // namespace magfem::petsc_module
