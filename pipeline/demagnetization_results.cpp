@@ -18,7 +18,7 @@ DemagnetizationResult with_warnings(DemagnetizationResult result, const CaseSpec
                                     std::vector<std::string>& warnings) {
   for (const auto& c : result.magnets)
     if (c.at_risk)
-      warnings.push_back(c.warning(spec.length_unit, spec.unit_name));
+      warnings.push_back(c.warning(spec.length_unit, spec.unit_name, spec.dimension));
   return result;
 }
 

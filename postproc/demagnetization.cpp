@@ -6,15 +6,21 @@
 
 namespace magfem {
 
-std::string DemagnetizationCheck::warning(double length_unit, const std::string& unit_name) const {
+std::string DemagnetizationCheck::warning(double length_unit, const std::string& unit_name,
+                                          int dimension) const {
   const Eigen::Vector3d p = at_m / length_unit;
+  char where[120];
+  if (dimension == 3)
+    std::snprintf(where, sizeof where, "(%g, %g, %g)", p.x(), p.y(), p.z());
+  else
+    std::snprintf(where, sizeof where, "(%g, %g)", p.x(), p.y());
   char buf[400];
   std::snprintf(buf, sizeof buf,
                 "magnet '%s' (%s at %g C) is past its knee: B along M reaches %.3f T at "
-                "(%g, %g, %g) %s, below the knee %.3f T by %.3f T (irreversible "
+                "%s %s, below the knee %.3f T by %.3f T (irreversible "
                 "demagnetization there)",
-                region.c_str(), material.c_str(), temperature_C, min_B_along_M_T, p.x(), p.y(),
-                p.z(), unit_name.c_str(), knee_T.value_or(0.0), -margin_T.value_or(0.0));
+                region.c_str(), material.c_str(), temperature_C, min_B_along_M_T, where,
+                unit_name.c_str(), knee_T.value_or(0.0), -margin_T.value_or(0.0));
   return buf;
 }
 

@@ -37,8 +37,9 @@ struct DemagnetizationCheck {
   std::optional<double> margin_T; // min - knee (negative: past the knee)
   bool at_risk = false;           // margin < 0
 
-  // The console warning for a region at risk ("magnet 'x' ... below its knee ...").
-  std::string warning(double length_unit, const std::string& unit_name) const;
+  // The console warning for a region at risk ("magnet 'x' ... below its knee ..."), the
+  // place in the case's unit: (x, y) planar, (r, z) axisymmetric (dimension 2), (x, y, z).
+  std::string warning(double length_unit, const std::string& unit_name, int dimension) const;
 };
 
 struct DemagnetizationResult {
