@@ -57,6 +57,18 @@ struct MagnetRegion {
   Magnetization magnetization;
 };
 
+// The regions of a problem's parts (RegionPhysics2D or 3D: material and magnetization), named
+// by names[i]; non-magnets get no material.
+template <class Physics>
+std::vector<MagnetRegion> magnet_regions(const std::vector<Physics>& parts,
+                                         const std::vector<std::string>& names) {
+  std::vector<MagnetRegion> regions;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    regions.push_back({names.at(i), parts[i].material->is_magnet() ? parts[i].material : nullptr,
+                       parts[i].magnetization});
+  return regions;
+}
+
 // B and its position at vertex k of element t (metres, T; 2D with z = 0).
 using VertexField =
     std::function<void(std::size_t t, int k, Eigen::Vector3d& x, Eigen::Vector3d& b)>;
