@@ -15,7 +15,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+
+#include <nlohmann/json.hpp>
 
 #include "casefile/case_spec.hpp"
 #include "core/constants.hpp"
@@ -182,6 +186,22 @@ solver: {order: 2}
   EXPECT_FALSE(c.knee_T);                        // no H_cJ given: no guess
   EXPECT_FALSE(c.margin_T);
   EXPECT_FALSE(c.at_risk);
+  // The outputs: summary.json's block (at_mm as [r, z] in mm, null knee) and the VTU field.
+  const auto dir = std::filesystem::temp_directory_path() / "magfem_tests" / "demag_cylinder";
+  std::filesystem::remove_all(dir);
+  write_outputs_2d(*run, dir);
+  std::ifstream summary_file(dir / "summary.json");
+  const auto summary = nlohmann::json::parse(summary_file);
+  const auto& block = summary.at("demagnetization").at(0);
+  EXPECT_EQ(block.at("region"), "cyl");
+  EXPECT_NEAR(block.at("min_B_along_M_T").get<double>(), c.min_B_along_M_T, 1e-15);
+  EXPECT_EQ(block.at("at_mm").size(), 2u);
+  EXPECT_NEAR(std::abs(block.at("at_mm").at(1).get<double>()), 5.0, 1e-6);
+  EXPECT_TRUE(block.at("knee_T").is_null());
+  EXPECT_FALSE(block.at("at_risk").get<bool>());
+  std::ifstream vtu(dir / "solution.vtu");
+  const std::string text((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("Name=\"B_along_M\""), std::string::npos);
 }
 
 // Planar disk (a long cylinder magnetized across), mu_r 1.05: B = B_r / (mu_r + 1); the
