@@ -14,6 +14,7 @@
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/result_tables.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -228,6 +229,7 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
   check_finite(run->energy.total_J_per_m, "magnetic energy");
   check_forces_finite(run->forces);
   run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
+  run->demagnetization = check_demagnetization(*run->field, run->spec, run->warnings);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -276,6 +278,7 @@ nlohmann::ordered_json summary_json_2d(const Run2D& run) {
     j["coils"] = coils_json_2d(run.coils);
   if (run.adapt)
     j["adapt"] = adapt_json(*run.adapt);
+  add_demagnetization(j, run.demagnetization, 2);
   j["warnings"] = run.warnings;
   return j;
 }
@@ -291,6 +294,7 @@ std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesyste
     const auto& material_of_part = materials.of_region;
     VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
     add_error_indicator(grid, run);
+    add_B_along_M(grid, run.demagnetization, [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
     if (run.spec.write_revolved_vtu)
       write_vtu(stage.path_for("solution_revolved.vtu").string(),

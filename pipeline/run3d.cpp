@@ -17,6 +17,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_fingerprint3d.hpp"
 #include "mesh/mesher3d.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
@@ -313,6 +314,7 @@ std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
   run->warnings = run->mesh.warnings;
   for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
     run->warnings.push_back(std::move(w));
+  run->demagnetization = check_demagnetization(*run->field, run->spec, run->warnings);
   run->timings.postprocess = since(t0);
   run->timings.total = since(t_start);
   return run;
@@ -390,6 +392,7 @@ nlohmann::ordered_json summary_json_3d(const Run3D& run) {
   }
   if (run.adapt)
     j["adapt"] = adapt_json(*run.adapt);
+  add_demagnetization(j, run.demagnetization, 3);
   j["warnings"] = run.warnings;
   return j;
 }
@@ -410,6 +413,7 @@ std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesyste
       if (!run.problem.is_shell(t))
         indicator.values.push_back(run.error_estimate.eta2_J[t]);
     grid.cell_data.push_back(std::move(indicator));
+    add_B_along_M(grid, run.demagnetization, [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
   }
   stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
