@@ -48,19 +48,29 @@ ForceTorque stress_circle(const FieldSampler2D& sampler, bool axi, const Eigen::
 // often cannot separate from their neighbours).
 ForceTorque stress_contour_axi(const FieldSampler2D& sampler, const Mesh2D& mesh, int part,
                                double margin, const std::vector<std::vector<int>>& mirrors) {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
-  Eigen::Vector2d hi = -lo;
-  for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
-    if (mesh.triangle_part[t] == part)
-      for (const int v : mesh.triangles[t]) {
-        lo = lo.cwiseMin(mesh.nodes[v]);
-        hi = hi.cwiseMax(mesh.nodes[v]);
-      }
-  // A part the plane z = 0 cuts (its own mirror image) reaches as far below it as above; its
-  // share ends on the plane.
-  for (std::size_t k = 0; k < mesh.symmetry.size(); ++k)
-    if (mirrors[k][std::size_t(part)] == part)
-      lo[mesh.symmetry[k].axis] = -hi[mesh.symmetry[k].axis];
+  const auto box_of = [&mesh](int q, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+    lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
+    hi = -lo;
+    for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+      if (mesh.triangle_part[t] == q)
+        for (const int v : mesh.triangles[t]) {
+          lo = lo.cwiseMin(mesh.nodes[v]);
+          hi = hi.cwiseMax(mesh.nodes[v]);
+        }
+    return lo.x() <= hi.x();
+  };
+  Eigen::Vector2d lo, hi;
+  const bool meshed = box_of(part, lo, hi);
+  for (std::size_t k = 0; k < mesh.symmetry.size(); ++k) {
+    const int axis = mesh.symmetry[k].axis, image = mirrors[k][std::size_t(part)];
+    if (image == part) // cut by the plane: it reaches as far beyond it as on the model's side
+      lo[axis] = -hi[axis];
+    else if (!meshed && image >= 0 && box_of(image, lo, hi)) { // beyond: its image's, mirrored
+      const double a = lo[axis];
+      lo[axis] = -hi[axis];
+      hi[axis] = -a;
+    }
+  }
   const double r_min = lo.x() - margin > 0 ? lo.x() - margin : 0.0;
   const auto contour = box_contour(r_min, hi.x() + margin, lo.y() - margin, hi.y() + margin);
   ForceTorque ft;
