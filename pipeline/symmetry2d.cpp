@@ -139,13 +139,7 @@ SectionFlux integrate_section_whole_2d(const Field2D& field, const SectionSpec& 
     }
     add_piece(out, parts, integrate_section_2d(field, piece, depth), sign, mirrors, g);
   }
-  for (const auto& [region, p] : parts) {
-    out.parts.push_back(p);
-    out.total.area_m2 += p.area_m2;
-    out.total.flux_Wb += p.flux_Wb;
-    out.total.abs_B_Tm2 += p.abs_B_Tm2;
-  }
-  out.outside_area_m2 = std::max(0.0, out.nominal_area_m2 - out.total.area_m2);
+  finish_section_2d(out, parts);
   return out;
 }
 
