@@ -299,6 +299,5 @@ boundary: {type: open, radius: 20, symmetry: [{plane: z, field: normal}]}
 mesh: {size: 2}
 )";
   // Planar cases have the planes x and y (test_symmetry2d.cpp).
-  EXPECT_NE(error_of(planar).find("its planes are x and y"), std::string::npos)
-      << error_of(planar);
+  EXPECT_NE(error_of(planar).find("its planes are x and y"), std::string::npos) << error_of(planar);
 }
