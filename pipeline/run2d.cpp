@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "casefile/symmetry_check2d.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
@@ -18,6 +19,7 @@
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
+#include "pipeline/symmetry2d.hpp"
 #include "pipeline/vtu_materials.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
@@ -36,24 +38,12 @@ double since(Clock::time_point t0) {
 }
 
 Mesh2D mesh_case(const CaseSpec& spec, const SizeField2D* refine_sizes) {
+  check_symmetry_2d(spec); // before meshing: the share would stand for a different device
   try {
     return build_mesh_2d(spec.geometry2d, refine_sizes);
   } catch (const MeshError& e) {
     throw_mesh_error_2d(spec, e);
   }
-}
-
-std::vector<double> part_areas(const Mesh2D& mesh, std::size_t n_parts) {
-  std::vector<double> area(n_parts, 0.0);
-  for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
-    const int p = mesh.triangle_part[t];
-    if (p < 0)
-      continue;
-    const auto& tri = mesh.triangles[t];
-    area[p] +=
-        TriangleGeometry::of(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]).area;
-  }
-  return area;
 }
 
 Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
@@ -63,7 +53,7 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
   p.boundary = spec.geometry2d.outer.kind;
   p.symmetry = spec.geometry2d.symmetry;
   p.air.material = MaterialLibrary::bundled().find("air");
-  const auto areas = part_areas(mesh, spec.regions.size());
+  const auto areas = whole_part_areas(spec, mesh);
   for (std::size_t i = 0; i < spec.regions.size(); ++i) {
     const auto& r = spec.regions[i];
     RegionPhysics2D phys{r.material, r.magnetization, r.current_density};
@@ -93,7 +83,7 @@ std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& asse
   std::vector<CoilResult2D> out;
   if (!run.spec.axisymmetric())
     return out;
-  const auto areas = part_areas(run.mesh, run.spec.regions.size());
+  const auto areas = whole_part_areas(run.spec, run.mesh);
   std::vector<CurrentPerAmpere2D> per_ampere;
   for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
     const RegionSpec& r = run.spec.regions[i];
@@ -222,10 +212,11 @@ std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
     run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
   const double depth = run->spec.stack_length > 0 ? run->spec.stack_length : 1.0;
   for (const auto& section : run->spec.sections)
-    run->sections.push_back(integrate_section_2d(*run->field, section, depth));
+    run->sections.push_back(integrate_section_whole_2d(*run->field, section, depth, run->spec));
   check_sections_inside(run->sections, run->spec);
   run->forces = compute_forces_2d(*run);
   run->coils = coil_results(*run, assembler, u);
+  scale_to_whole_device_2d(*run);
   check_finite(run->energy.total_J_per_m, "magnetic energy");
   check_forces_finite(run->forces);
   run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
@@ -251,6 +242,7 @@ nlohmann::ordered_json summary_json_2d(const Run2D& run) {
                           : run.spec.stack_length > 0 ? "stack"
                                                       : "metre of length";
   add_energy(j, run.energy.total_J_per_m * length, per);
+  add_symmetry_json_2d(j, run.spec);
   add_error_estimate(j,
                      {run.error.energy_error_pct, run.error.energy_norm_error_pct,
                       run.error.indicator, run.error.total_eta2 * length},
