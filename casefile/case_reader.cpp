@@ -20,12 +20,12 @@ namespace magfem {
 namespace {
 
 // Outer boundary, common to both dimensions: a circle (2D) or sphere (3D) about the origin.
-// `symmetry: [{plane: z, field: normal}, ...]` (mesh/symmetry_plane3d.hpp).
+// `symmetry: [{plane: z, field: normal}, ...]` (mesh/symmetry_plane3d.hpp; 2D and
+// axisymmetric: mesh/symmetry_plane2d.hpp).
 void read_symmetry(const YamlNode& list, CaseSpec& c) {
-  if (c.dimension != 3)
-    list.fail("symmetry planes are implemented for 3D cases only (dimension: 3)");
   if (!list.is_sequence())
     list.fail("expected a list of planes, e.g. [{plane: z, field: normal}]");
+  std::vector<SymmetryPlane3D> planes;
   for (const YamlNode& item : list.items()) {
     item.allow_keys({"plane", "field"});
     const std::string plane = item.at("plane").as_string();
@@ -35,16 +35,28 @@ void read_symmetry(const YamlNode& list, CaseSpec& c) {
       item.at("plane").fail("unknown symmetry plane '" + plane +
                             "' (x, y or z: the plane where that coordinate is 0)");
     p.axis = plane[0] - 'x';
+    if (c.axisymmetric() && plane != "z")
+      item.at("plane").fail("an axisymmetric case has one symmetry plane, z (z = 0); it is "
+                            "symmetric about every plane through the axis already");
+    if (c.dimension == 2 && !c.axisymmetric() && plane == "z")
+      item.at("plane").fail("a planar case is its own image about z = 0 already; its planes "
+                            "are x and y");
     if (field != "normal" && field != "parallel")
       item.at("field").fail("unknown field condition '" + field +
                             "' (normal: n x H = 0, field lines cross the plane; parallel: "
                             "B . n = 0, field lines run along it)");
     p.field = field == "normal" ? SymmetryField::normal : SymmetryField::parallel;
-    for (const SymmetryPlane3D& q : c.geometry3d.symmetry)
+    for (const SymmetryPlane3D& q : planes)
       if (q.axis == p.axis)
         item.at("plane").fail("plane " + plane + " is listed twice");
-    c.geometry3d.symmetry.push_back(p);
+    planes.push_back(p);
   }
+  if (c.dimension == 3) {
+    c.geometry3d.symmetry = planes;
+    return;
+  }
+  for (const SymmetryPlane3D& p : planes) // axisymmetric: z = 0 is the r-z plane's y = 0
+    c.geometry2d.planes.push_back({c.axisymmetric() ? 1 : p.axis, p.field});
 }
 
 void read_boundary(const YamlNode& b, double s, CaseSpec& c) {

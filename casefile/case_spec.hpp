@@ -2,6 +2,7 @@
 // Everything a case file says, validated and converted to SI units (metres, radians, tesla,
 // A/m^2). Built by read_case(); consumed by the mesh, solver and postprocessing stages.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ namespace magfem {
 struct RegionSpec {
   std::string name;
   const Material* material = nullptr; // resolved: case materials or the bundled library
+  // A magnet region at its own `temperature_C` or with its own `HcJ_kApm`: its material
+  // (B_r and knee at that temperature); `material` then points here.
+  std::shared_ptr<const Material> own_material;
   Magnetization magnetization;
   double current_density = 0;    // A/m^2 along +z (planar) or +phi (axisymmetric)
   double ampere_turns = 0;       // if non-zero, J = ampere_turns / meshed area of the region

@@ -97,6 +97,40 @@ void read_region_material(const YamlNode& r, const CaseSpec& c, const MaterialLi
   if (!spec.material->is_magnet() && (r.has("magnetization") || r.has("pattern")))
     (r.has("magnetization") ? r.at("magnetization") : r.at("pattern"))
         .fail("material '" + mat + "' is not a permanent magnet");
+  read_magnet_temperature(r, spec);
+}
+
+void read_magnet_temperature(const YamlNode& r, RegionSpec& spec) {
+  const auto temperature = r.find("temperature_C");
+  const auto hcj = r.find("HcJ_kApm");
+  if (!temperature && !hcj)
+    return;
+  if (!spec.material->is_magnet())
+    (temperature ? *temperature : *hcj)
+        .fail("applies to magnet regions only (material '" + spec.material->name +
+              "' is not a permanent magnet)");
+  Material m = *spec.material;
+  if (hcj)
+    m.knee.HcJ_Apm = hcj->as_positive() * 1e3;
+  if (temperature) {
+    const double t = temperature->as_double();
+    if (t <= -273.15)
+      temperature->fail("a temperature in degrees C must be above -273.15");
+    if (t != MagnetKnee::reference_C && !m.knee.alpha_pct_per_K)
+      temperature->fail("material '" + m.name +
+                        "' has no temperature coefficient of B_r (alpha_Br_pct_per_K): give it "
+                        "in the case's materials, or leave temperature_C at 20");
+    m = m.at_temperature(t);
+    // The linear model run past its range (B_r or H_cJ through zero) describes no magnet.
+    const auto hcj_t = m.coercivity_Apm();
+    if (m.B_r <= 0 || (hcj_t && *hcj_t <= 0))
+      temperature->fail("at " + temperature->as_string() + " C the temperature coefficients of '" +
+                        m.name + "' give B_r " + std::to_string(m.B_r) + " T and H_cJ " +
+                        (hcj_t ? std::to_string(*hcj_t / 1e3) : std::string("?")) +
+                        " kA/m: outside the range they hold for");
+  }
+  spec.own_material = std::make_shared<const Material>(std::move(m));
+  spec.material = spec.own_material.get();
 }
 
 } // namespace magfem

@@ -36,6 +36,11 @@ std::pair<double, double> read_angle_range(const YamlNode& node, double lo, doub
 void read_region_material(const YamlNode& region, const CaseSpec& c, const MaterialLibrary& lib,
                           RegionSpec& spec);
 
+// A magnet region's `temperature_C` (default 20) and `HcJ_kApm` (overrides the grade's H_cJ
+// at 20 C): spec.material becomes the grade at that temperature (spec.own_material). Called
+// by read_region_material; InputError naming the field when they do not apply.
+void read_magnet_temperature(const YamlNode& region, RegionSpec& spec);
+
 // Region readers for each dimension: append parts and region specs to the case.
 void read_regions_2d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary& lib);
 void read_regions_3d(const YamlNode& regions, CaseSpec& c, const MaterialLibrary& lib);

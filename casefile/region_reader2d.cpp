@@ -16,8 +16,8 @@ using Vec2 = Eigen::Vector2d;
 
 // Shape keys allowed per primitive, besides the common region keys.
 const std::vector<std::string> region_common = {
-    "name",  "material", "shape",     "magnetization", "current_density",
-    "turns", "current",  "mesh_size", "group",         "overlap"};
+    "name",    "material",  "shape", "magnetization", "current_density", "turns",
+    "current", "mesh_size", "group", "overlap",       "temperature_C",   "HcJ_kApm"};
 
 std::vector<std::string> with_common(std::initializer_list<const char*> extra) {
   std::vector<std::string> keys = region_common;

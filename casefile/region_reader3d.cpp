@@ -18,8 +18,9 @@
 namespace magfem {
 namespace {
 
-const std::vector<std::string> common_keys = {"name",      "shape", "material", "magnetization",
-                                              "placement", "group", "mesh_size"};
+const std::vector<std::string> common_keys = {"name",          "shape",         "material",
+                                              "magnetization", "placement",     "group",
+                                              "mesh_size",     "temperature_C", "HcJ_kApm"};
 
 std::vector<std::string> keys_with(std::initializer_list<const char*> extra) {
   std::vector<std::string> k = common_keys;

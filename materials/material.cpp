@@ -35,6 +35,36 @@ double Material::start_permeability() const {
   return curve->peak_permeability();
 }
 
+Material Material::at_temperature(double T_C) const {
+  if (kind != MaterialKind::magnet || temperature_C != MagnetKnee::reference_C)
+    throw std::logic_error("at_temperature needs a magnet at 20 C ('" + name + "')");
+  if (T_C == temperature_C)
+    return *this;
+  if (!knee.alpha_pct_per_K)
+    throw std::logic_error("magnet '" + name + "' has no temperature coefficient of B_r");
+  Material m = *this;
+  m.B_r = MagnetKnee::at_temperature(B_r, *knee.alpha_pct_per_K, T_C);
+  m.temperature_C = T_C;
+  return m;
+}
+
+std::optional<double> Material::coercivity_Apm() const {
+  if (kind != MaterialKind::magnet || !knee.HcJ_Apm)
+    return std::nullopt;
+  if (temperature_C == MagnetKnee::reference_C)
+    return knee.HcJ_Apm;
+  if (!knee.beta_pct_per_K)
+    return std::nullopt; // H_cJ off 20 C unknown: no guess
+  return MagnetKnee::at_temperature(*knee.HcJ_Apm, *knee.beta_pct_per_K, temperature_C);
+}
+
+std::optional<double> Material::knee_T() const {
+  const auto hcj = coercivity_Apm();
+  if (!hcj)
+    return std::nullopt;
+  return knee_flux_density(B_r, mu_r, *hcj);
+}
+
 Material Material::make_linear(std::string name, double mu_r, std::string source) {
   Material m;
   m.name = std::move(name);

@@ -10,9 +10,11 @@
 // (H-formulations, 3D scalar potential). Newton tangents follow from the derivative with
 // respect to the squared magnitude: dH/dB = nu I + 2 nu' B B^T.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "materials/bh_curve.hpp"
+#include "materials/magnet_knee.hpp"
 
 namespace magfem {
 
@@ -25,7 +27,9 @@ struct Material {
                      // materials the initial one, dB/dH(0) / mu0, for information only)
   double B_r = 0.0;  // remanence in T (magnets only)
   std::shared_ptr<const BhCurve> curve; // soft materials only
-  std::string source;                   // where the data comes from (for reports)
+  MagnetKnee knee;                      // magnets: H_cJ and temperature coefficients (20 C)
+  double temperature_C = MagnetKnee::reference_C; // magnets: B_r above holds at this temperature
+  std::string source;                             // where the data comes from (for reports)
 
   bool is_nonlinear() const { return kind == MaterialKind::soft; }
   bool is_magnet() const { return kind == MaterialKind::magnet; }
@@ -44,6 +48,14 @@ struct Material {
   // mu_r). Measured on TEAM 20 at 3000 AT (order 1, mesh scale 4): from the peak 8 Newton
   // iterations, from the initial slope 11, from a quarter of the peak 12.
   double start_permeability() const;
+
+  // Magnets: this grade (at 20 C) at temperature T, B_r scaled by knee.alpha_pct_per_K.
+  // Off 20 C the caller checks that knee.alpha_pct_per_K is known (logic_error otherwise).
+  Material at_temperature(double T_C) const;
+  // Magnets: H_cJ at temperature_C in A/m, and the knee B_r - mu0 mu_r H_cJ there in T; none
+  // when H_cJ is unknown, or (off 20 C) its temperature coefficient beta is.
+  std::optional<double> coercivity_Apm() const;
+  std::optional<double> knee_T() const;
 
   // Constructors that fill the fields consistently for each kind.
   static Material make_linear(std::string name, double mu_r, std::string source);

@@ -15,11 +15,22 @@ std::vector<std::string> law_keys(MaterialKind kind) {
   case MaterialKind::linear:
     return {"mu_r"};
   case MaterialKind::magnet:
-    return {"B_r", "mu_r"};
+    return {"B_r", "mu_r", "HcJ_kApm", "alpha_Br_pct_per_K", "beta_HcJ_pct_per_K"};
   case MaterialKind::soft:
     return {"bh", "bh_file"};
   }
   return {};
+}
+
+// The knee data of a magnet (magnet_knee.hpp), each optional: H_cJ in kA/m (> 0) and the
+// temperature coefficients in %/K (any sign: ferrite's H_cJ rises with temperature).
+void read_knee_keys(MagnetKnee& knee, const YamlNode& entry) {
+  if (const auto n = entry.find("HcJ_kApm"))
+    knee.HcJ_Apm = n->as_positive() * 1e3;
+  if (const auto n = entry.find("alpha_Br_pct_per_K"))
+    knee.alpha_pct_per_K = n->as_double();
+  if (const auto n = entry.find("beta_HcJ_pct_per_K"))
+    knee.beta_pct_per_K = n->as_double();
 }
 
 std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -76,6 +87,8 @@ std::string apply_overrides(Material& m, const YamlNode& entry) {
     if (key == "B_r")
       m.B_r = node->as_positive();
   }
+  if (m.kind == MaterialKind::magnet)
+    read_knee_keys(m.knee, entry);
   if (m.kind == MaterialKind::soft && (entry.has("bh") || entry.has("bh_file")))
     m = Material::make_soft(m.name, parse_soft_curve(entry), m.source);
   return changed;
@@ -141,9 +154,12 @@ Material parse_material_entry(const std::string& name, const YamlNode& entry,
   switch (kind) {
   case MaterialKind::linear:
     return Material::make_linear(name, entry.at("mu_r").as_positive(), source);
-  case MaterialKind::magnet:
-    return Material::make_magnet(name, entry.at("B_r").as_positive(),
-                                 entry.at("mu_r").as_positive(), source);
+  case MaterialKind::magnet: {
+    Material m = Material::make_magnet(name, entry.at("B_r").as_positive(),
+                                       entry.at("mu_r").as_positive(), source);
+    read_knee_keys(m.knee, entry);
+    return m;
+  }
   case MaterialKind::soft:
     return Material::make_soft(name, parse_soft_curve(entry), source);
   }
@@ -157,7 +173,8 @@ std::map<std::string, Material> parse_materials(const YamlNode& materials_map,
   for (const auto& name : materials_map.keys()) {
     const YamlNode entry = materials_map.at(name);
     // Check the spelling of every key first, so a typo is named as such.
-    entry.allow_keys({"kind", "library", "mu_r", "B_r", "bh", "bh_file", "source"});
+    entry.allow_keys({"kind", "library", "mu_r", "B_r", "HcJ_kApm", "alpha_Br_pct_per_K",
+                      "beta_HcJ_pct_per_K", "bh", "bh_file", "source"});
     if (entry.has("library") && entry.has("kind"))
       entry.at("kind").fail("give either 'kind' or 'library', not both");
     if (entry.has("library")) {

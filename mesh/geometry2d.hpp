@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "mesh/symmetry_plane2d.hpp"
+
 namespace magfem {
 
 using Vec2 = Eigen::Vector2d;
@@ -75,6 +77,9 @@ enum class Symmetry2D { planar, axisymmetric };
 
 struct Geometry2D {
   Symmetry2D symmetry = Symmetry2D::planar;
+  // Symmetry planes (mesh/symmetry_plane2d.hpp): only the side where each plane's coordinate
+  // is >= 0 is meshed (parts are cut there); the cut is a boundary of the mesh.
+  std::vector<SymmetryPlane2D> planes;
   std::vector<Part2D> parts;
   OuterBoundary2D outer;
   MeshOptions2D options;

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "mesh/symmetry_plane2d.hpp"
+
 namespace magfem {
 
 inline constexpr int region_background = -1; // air not covered by any part
@@ -24,6 +26,10 @@ struct Mesh2D {
   std::vector<int> triangle_part;               // Geometry2D::parts index or region_*
   std::vector<std::array<int, 2>> outer_edges;  // edges on the outermost boundary
   std::vector<std::array<int, 2>> axis_edges;   // axisymmetric: edges on the axis r = 0
+  // Symmetry planes the mesh was cut at (Geometry2D::planes) and, per plane, the boundary
+  // edges on it (the solver's A = 0 of a `parallel` plane sits there).
+  std::vector<SymmetryPlane2D> symmetry;
+  std::vector<std::vector<std::array<int, 2>>> symmetry_edges;
   double shell_inner_radius = 0;                // set when the boundary is open
   double shell_outer_radius = 0;
   MeshQuality2D quality;

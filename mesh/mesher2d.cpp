@@ -122,7 +122,9 @@ double merge_distance(const Geometry2D& g) {
   return 0.01 * std::min(1.0, o.size_scale) * o.chord_tolerance / o.gap_layers;
 }
 
-void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge, bool axi) {
+void insert_outlines(CDT& cdt, const RegionMap2D& map, const Geometry2D& g) {
+  const double merge = merge_distance(g);
+  const bool axi = g.symmetry == Symmetry2D::axisymmetric;
   // A square frame around the outermost circle keeps that circle off the convex hull: a point
   // CGAL puts on a hull edge by rounding lands just outside it and leaves a flat triangle.
   const Outline2D& outer = map.shell() ? *map.shell() : map.domain();
@@ -133,16 +135,22 @@ void insert_outlines(CDT& cdt, const RegionMap2D& map, double merge, bool axi) {
   std::vector<std::vector<Vec2>> loops = map.domain().loops();
   if (map.shell())
     loops.push_back(map.shell()->loops().front());
+  // Parts are cut at the symmetry planes: nothing beyond them is inserted (their faces would
+  // be outside the domain, but refined all the same).
   for (std::size_t i = 0; i < map.n_parts(); ++i)
     for (const auto& loop : map.part(i).loops())
-      loops.push_back(loop);
+      if (auto cut = clip_to_share(loop, g.planes); !cut.empty())
+        loops.push_back(std::move(cut));
   ConstraintSet2D set = build_constraint_set(loops, merge);
-  // Arc ends on the axis come out of cos(pi/2) a hair off it; exactly on it, CGAL splits the
-  // axis side there instead of leaving a sliver beside it.
-  if (axi)
-    for (Vec2& p : set.points)
-      if (std::abs(p.x()) < merge)
-        p.x() = 0;
+  // Arc ends on the axis (or a symmetry plane) come out of cos(pi/2) a hair off it; exactly on
+  // it, CGAL splits the axis side there instead of leaving a sliver beside it.
+  for (Vec2& p : set.points) {
+    if (axi && std::abs(p.x()) < merge)
+      p.x() = 0;
+    for (const SymmetryPlane2D& plane : g.planes)
+      if (std::abs(p[plane.axis]) < merge)
+        p[plane.axis] = 0;
+  }
   std::vector<VertexHandle> vs;
   FaceHandle hint;
   for (const Vec2& p : set.points) {
@@ -226,7 +234,7 @@ void collect_interfaces(const CDT& cdt, const RegionMap2D& map, std::vector<Size
 // Pass 1: the size field from interfaces and gaps of the outlines at their own sizes.
 SizeField2D build_size_field(const Geometry2D& g, const RegionMap2D& coarse) {
   CDT cdt;
-  insert_outlines(cdt, coarse, merge_distance(g), g.symmetry == Symmetry2D::axisymmetric);
+  insert_outlines(cdt, coarse, g);
   classify(cdt, coarse);
   std::vector<SizeSource2D> sources;
   std::vector<AirBoundary2D> air;
@@ -300,6 +308,22 @@ void split_off_axis(Mesh2D& mesh) {
   mesh.outer_edges = std::move(outer);
 }
 
+// The boundary edges on a symmetry plane (both ends exactly on it, see insert_outlines) move
+// from outer_edges to symmetry_edges.
+void split_off_planes(Mesh2D& mesh, const Geometry2D& g) {
+  mesh.symmetry = g.planes;
+  mesh.symmetry_edges.assign(g.planes.size(), {});
+  std::vector<std::array<int, 2>> outer;
+  for (const auto& e : mesh.outer_edges) {
+    std::size_t k = 0;
+    while (k < g.planes.size() &&
+           !(mesh.nodes[e[0]][g.planes[k].axis] == 0 && mesh.nodes[e[1]][g.planes[k].axis] == 0))
+      ++k;
+    (k < g.planes.size() ? mesh.symmetry_edges[k] : outer).push_back(e);
+  }
+  mesh.outer_edges = std::move(outer);
+}
+
 Mesh2D export_mesh(CDT& cdt, const Geometry2D& g, const RegionMap2D& map) {
   Mesh2D mesh;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
@@ -334,6 +358,7 @@ Mesh2D export_mesh(CDT& cdt, const Geometry2D& g, const RegionMap2D& map) {
   mesh.outer_edges = boundary_edges(mesh, nb);
   if (g.symmetry == Symmetry2D::axisymmetric)
     split_off_axis(mesh);
+  split_off_planes(mesh, g);
   const double r1 = g.outer.radius;
   if (g.outer.kind == OuterKind::open) {
     mesh.shell_inner_radius = r1;
@@ -348,15 +373,19 @@ Mesh2D export_mesh(CDT& cdt, const Geometry2D& g, const RegionMap2D& map) {
   return mesh;
 }
 
-void check_mesh(const Mesh2D& mesh, const Geometry2D& g) {
+void check_mesh(const Mesh2D& mesh, const Geometry2D& g, const RegionMap2D& map) {
   if (mesh.triangles.empty() || !(mesh.quality.min_area > 0))
     throw MeshError("", "", "CGAL produced a degenerate or inverted triangle");
   std::vector<char> used(g.parts.size(), 0);
   for (int r : mesh.triangle_part)
     if (r >= 0)
       used[std::size_t(r)] = 1;
+  // A part wholly beyond a symmetry plane is the mirror image of a meshed one.
+  const auto beyond_planes = [&](std::size_t i) {
+    return !g.planes.empty() && clip_to_share(map.part(i).loops().front(), g.planes).empty();
+  };
   for (std::size_t i = 0; i < used.size(); ++i)
-    if (!used[i])
+    if (!used[i] && !beyond_planes(i))
       // Either later parts cover it, or it is thinner than the chord tolerance lets the
       // mesher see (a 10 nm ring at 10 um: its two circles become one outline).
       throw MeshError(g.parts[i].name, "",
@@ -383,13 +412,13 @@ Mesh2D build_mesh_2d(const Geometry2D& g, const SizeField2D* refine_sizes) {
       coarse.shell_size());
   try {
     CDT cdt;
-    insert_outlines(cdt, map, merge_distance(g), g.symmetry == Symmetry2D::axisymmetric);
+    insert_outlines(cdt, map, g);
     classify(cdt, map);
     drop_hidden_constraints(cdt);
     refine(cdt, g, refine_sizes ? *refine_sizes : field);
     classify(cdt, map);
     Mesh2D mesh = export_mesh(cdt, g, map);
-    check_mesh(mesh, g);
+    check_mesh(mesh, g, map);
     return mesh;
   } catch (const MeshError&) {
     throw;

@@ -36,6 +36,10 @@
 //   halves of the disk and ring; their sides on the axis are split by CGAL only (at the
 //   refinement's needs and at part vertices on the axis, which are put exactly on x = 0), and
 //   the boundary edges on the axis are axis_edges instead of outer_edges.
+// - Symmetry planes (Geometry2D::planes): the domain and the shell are the quarter or half
+//   disk and ring on the kept side (coordinate >= 0), the parts are cut at the planes (the
+//   crossing points exactly on them), a part wholly beyond a plane has no element (its mirror
+//   image stands for it), and the boundary edges on each plane are Mesh2D::symmetry_edges.
 // - Triangles are counter-clockwise; quality holds the min/max angle, the min area and the max
 //   sagitta. Nothing is printed.
 // Throws MeshError naming the part (and field) for invalid input, a part reaching beyond the

@@ -27,10 +27,28 @@ bool positive(double v) {
 // The domain (r_inner = 0) or the shell: the disk of r_outer about the origin (region_of()
 // tests the domain first), or the x >= 0 half of the ring, so that the straight sides of the
 // shell and of the domain do not overlap.
+// With symmetry planes, the quarter or half of the disk on their kept side (mesh/
+// symmetry_plane2d.hpp); the axisymmetric half plane keeps x >= 0 anyway.
 Shape2D outer_shape(const Geometry2D& g, double r_inner, double r_outer) {
-  if (g.symmetry == Symmetry2D::axisymmetric)
+  bool keep_x = g.symmetry == Symmetry2D::axisymmetric, keep_y = false;
+  for (const SymmetryPlane2D& p : g.planes)
+    (p.axis == 0 ? keep_x : keep_y) = true;
+  if (keep_x && keep_y)
+    return AnnularSector{Vec2::Zero(), r_inner, r_outer, 0.0, 0.5 * pi};
+  if (keep_x)
     return AnnularSector{Vec2::Zero(), r_inner, r_outer, -0.5 * pi, 0.5 * pi};
+  if (keep_y)
+    return AnnularSector{Vec2::Zero(), r_inner, r_outer, 0.0, pi};
   return Disk{Vec2::Zero(), r_outer};
+}
+
+// A point on the cut side of a symmetry plane (the sector's radial edges: their far ends come
+// out of cos(pi/2) a hair off the plane).
+bool on_plane(const Geometry2D& g, const Vec2& x) {
+  for (const SymmetryPlane2D& p : g.planes)
+    if (std::abs(x[p.axis]) <= 1e-12 * g.outer.radius)
+      return true;
+  return false;
 }
 
 } // namespace
@@ -47,13 +65,14 @@ RegionMap2D::RegionMap2D(const Geometry2D& g, const Limit& limit, double shell_s
     return [&limit, region](const Vec2& x) { return limit(region, x); };
   };
   // Scaled with size_scale like every size, so that refinement studies stay uniform. The axis
-  // sides of a half disk are not split here: CGAL splits them where the refinement needs it
-  // and at the vertices parts put on the axis, which a fixed split would miss by a hair.
+  // sides of a half disk, and the cut sides of symmetry planes, are not split here: CGAL splits
+  // them where the refinement needs it and at the vertices parts put on the axis, which a fixed
+  // split would miss by a hair.
   const bool axi = g.symmetry == Symmetry2D::axisymmetric;
-  const auto outer_limit = [&limit, &o, axi](int region, double r) {
+  const auto outer_limit = [&limit, &o, &g, axi](int region, double r) {
     const double longest = 2.0 * pi * r / min_outer_chords * std::min(1.0, o.size_scale);
-    return [&limit, region, longest, axi](const Vec2& x) {
-      if (axi && x.x() == 0)
+    return [&limit, &g, region, longest, axi](const Vec2& x) {
+      if ((axi && x.x() == 0) || on_plane(g, x))
         return std::numeric_limits<double>::infinity();
       return std::min(longest, limit(region, x));
     };
@@ -110,10 +129,18 @@ void RegionMap2D::check_inside_domain(const Geometry2D& g) const {
   // On the axis of a half disk they are pushed off it by as much.
   constexpr double inward = 1.0 - 1e-9;
   const double off_axis = g.symmetry == Symmetry2D::axisymmetric ? 1e-9 * g.outer.radius : 0.0;
+  // A part crossing a symmetry plane is cut there: its vertices beyond are tested at their
+  // mirror images, off the plane by as much.
+  const auto folded = [&](const Vec2& v) {
+    Vec2 w = inward * v + Vec2(off_axis, 0);
+    for (const SymmetryPlane2D& p : g.planes)
+      w[p.axis] = std::abs(w[p.axis]) + 1e-9 * g.outer.radius;
+    return w;
+  };
   for (std::size_t i = 0; i < parts_.size(); ++i)
     for (const auto& loop : parts_[i].loops())
       for (const Vec2& v : loop)
-        if (!domain_->contains(inward * v + Vec2(off_axis, 0)))
+        if (!domain_->contains(folded(v)))
           throw MeshError(g.parts[i].name, "",
                           "the part reaches beyond the domain boundary (radius " +
                               std::to_string(g.outer.radius) + " m" +

@@ -4,8 +4,10 @@
 #include <limits>
 #include <stdexcept>
 
-#include "pipeline/run2d.hpp"
+#include "casefile/symmetry_check2d.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/run2d.hpp"
+#include "pipeline/symmetry2d.hpp"
 #include "postproc/lorentz2d.hpp"
 #include "postproc/maxwell_stress2d.hpp"
 #include "postproc/maxwell_stress_axi.hpp"
@@ -45,15 +47,30 @@ ForceTorque stress_circle(const FieldSampler2D& sampler, bool axi, const Eigen::
 // of its mesh nodes (a box hugs cylinders, rings and coils, which a sphere about the axis
 // often cannot separate from their neighbours).
 ForceTorque stress_contour_axi(const FieldSampler2D& sampler, const Mesh2D& mesh, int part,
-                               double margin) {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
-  Eigen::Vector2d hi = -lo;
-  for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
-    if (mesh.triangle_part[t] == part)
-      for (const int v : mesh.triangles[t]) {
-        lo = lo.cwiseMin(mesh.nodes[v]);
-        hi = hi.cwiseMax(mesh.nodes[v]);
-      }
+                               double margin, const std::vector<std::vector<int>>& mirrors) {
+  const auto box_of = [&mesh](int q, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+    lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
+    hi = -lo;
+    for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+      if (mesh.triangle_part[t] == q)
+        for (const int v : mesh.triangles[t]) {
+          lo = lo.cwiseMin(mesh.nodes[v]);
+          hi = hi.cwiseMax(mesh.nodes[v]);
+        }
+    return lo.x() <= hi.x();
+  };
+  Eigen::Vector2d lo, hi;
+  const bool meshed = box_of(part, lo, hi);
+  for (std::size_t k = 0; k < mesh.symmetry.size(); ++k) {
+    const int axis = mesh.symmetry[k].axis, image = mirrors[k][std::size_t(part)];
+    if (image == part) // cut by the plane: it reaches as far beyond it as on the model's side
+      lo[axis] = -hi[axis];
+    else if (!meshed && image >= 0 && box_of(image, lo, hi)) { // beyond: its image's, mirrored
+      const double a = lo[axis];
+      lo[axis] = -hi[axis];
+      hi[axis] = -a;
+    }
+  }
   const double r_min = lo.x() - margin > 0 ? lo.x() - margin : 0.0;
   const auto contour = box_contour(r_min, hi.x() + margin, lo.y() - margin, hi.y() + margin);
   ForceTorque ft;
@@ -113,14 +130,14 @@ std::vector<ForceResult> compute_forces_2d(const Run2D& run) {
           for (std::size_t i = 0; i < run.spec.regions.size(); ++i)
             if (run.spec.regions[i].name == name)
               parts.push_back(static_cast<int>(i));
-        r = from(lorentz_force_2d(*run.field, parts, p), length);
+        r = from(lorentz_force_whole_2d(*run.field, parts, p, run.spec), length);
         r.method = "lorentz";
         break;
       }
       case ForceSpec::Kind::contour:
-        r = from(
-            stress_contour_axi(sampler, run.mesh, part_index(run, f.regions.front()), f.margin),
-            length);
+        r = from(stress_contour_axi(sampler, run.mesh, part_index(run, f.regions.front()), f.margin,
+                                    mirror_parts_2d(run.spec)),
+                 length);
         r.method = "stress_contour";
         break;
       case ForceSpec::Kind::sphere:

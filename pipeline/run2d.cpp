@@ -5,10 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "casefile/symmetry_check2d.hpp"
 #include "core/output_stage.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesher2d.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_case.hpp"
@@ -16,6 +18,7 @@
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
+#include "pipeline/symmetry2d.hpp"
 #include "pipeline/vtu_materials.hpp"
 #include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
@@ -30,24 +33,12 @@ namespace magfem {
 namespace {
 
 Mesh2D mesh_case(const CaseSpec& spec, const SizeField2D* refine_sizes) {
+  check_symmetry_2d(spec); // before meshing: the share would stand for a different device
   try {
     return build_mesh_2d(spec.geometry2d, refine_sizes);
   } catch (const MeshError& e) {
     throw_mesh_error_2d(spec, e);
   }
-}
-
-std::vector<double> part_areas(const Mesh2D& mesh, std::size_t n_parts) {
-  std::vector<double> area(n_parts, 0.0);
-  for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
-    const int p = mesh.triangle_part[t];
-    if (p < 0)
-      continue;
-    const auto& tri = mesh.triangles[t];
-    area[p] +=
-        TriangleGeometry::of(mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]).area;
-  }
-  return area;
 }
 
 Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
@@ -57,7 +48,7 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
   p.boundary = spec.geometry2d.outer.kind;
   p.symmetry = spec.geometry2d.symmetry;
   p.air.material = MaterialLibrary::bundled().find("air");
-  const auto areas = part_areas(mesh, spec.regions.size());
+  const auto areas = whole_part_areas(spec, mesh);
   for (std::size_t i = 0; i < spec.regions.size(); ++i) {
     const auto& r = spec.regions[i];
     RegionPhysics2D phys{r.material, r.magnetization, r.current_density};
@@ -87,7 +78,7 @@ std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& asse
   std::vector<CoilResult2D> out;
   if (!run.spec.axisymmetric())
     return out;
-  const auto areas = part_areas(run.mesh, run.spec.regions.size());
+  const auto areas = whole_part_areas(run.spec, run.mesh);
   std::vector<CurrentPerAmpere2D> per_ampere;
   for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
     const RegionSpec& r = run.spec.regions[i];
@@ -200,7 +191,7 @@ public:
   }
   SectionFlux integrate_section(const SectionSpec& section) const {
     const double depth = run_.spec.stack_length > 0 ? run_.spec.stack_length : 1.0;
-    return integrate_section_2d(*run_.field, section, depth);
+    return integrate_section_whole_2d(*run_.field, section, depth, run_.spec);
   }
   std::vector<ForceResult> forces() const { return compute_forces_2d(run_); }
   void coil_results(const Assembler2D& assembler, const Eigen::VectorXd& u) const {
@@ -210,10 +201,11 @@ public:
     run_.error = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
   }
   void check_finite_fields() const {}
-  void scale_to_whole_device() const {}
+  void scale_to_whole_device() const { scale_to_whole_device_2d(run_); }
   std::vector<std::string> mesh_warnings() const { return {}; }
 
   // What the report writes (run_report.hpp).
+  static constexpr int dimension = 2;
   static nlohmann::ordered_json dimension_json(const Run2D& run) {
     return run.spec.axisymmetric() ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2);
   }
@@ -234,7 +226,9 @@ public:
            : run.spec.stack_length > 0 ? "stack"
                                        : "metre of length";
   }
-  static void add_symmetry(nlohmann::ordered_json&, const Run2D&) {}
+  static void add_symmetry(nlohmann::ordered_json& j, const Run2D& run) {
+    add_symmetry_json_2d(j, run.spec);
+  }
   static ErrorEstimateRecord error_record(const Run2D& run) {
     return {run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator,
             run.error.total_eta2 * length(run)};
@@ -266,6 +260,8 @@ public:
     VtuGrid grid = make_vtu_2d(*run.field, materials.of_region, 0, materials.names);
     // eta_K^2 per cell (J/m planar, J axisymmetric).
     grid.cell_data.push_back(error_indicator_cells(run.problem, run.error.eta2));
+    add_B_along_M(grid, run.demagnetization,
+                  [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
     if (run.spec.write_revolved_vtu)
       write_vtu(stage.path_for("solution_revolved.vtu").string(),

@@ -17,6 +17,7 @@
 #include "pipeline/adapt_loop.hpp"
 #include "pipeline/force_results.hpp"
 #include "pipeline/timings.hpp"
+#include "postproc/demagnetization.hpp"
 #include "postproc/energy2d.hpp"
 #include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
@@ -74,6 +75,7 @@ struct Run2D {
   std::vector<SectionFlux> sections; // parallel to spec.sections (per energy_per)
   std::vector<CoilResult2D> coils;   // axisymmetric only
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;
   std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)
 };

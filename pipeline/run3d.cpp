@@ -15,6 +15,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_fingerprint3d.hpp"
 #include "mesh/mesher3d.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
@@ -316,6 +317,7 @@ public:
   std::vector<std::string> mesh_warnings() const { return run_.mesh.warnings; }
 
   // What the report writes (run_report.hpp).
+  static constexpr int dimension = 3;
   static nlohmann::ordered_json dimension_json(const Run3D&) { return 3; }
   static void add_mesh_quality(nlohmann::ordered_json& j, const Run3D& run) {
     j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
@@ -380,6 +382,8 @@ public:
                                materials.names);
     // eta_K^2 (J) per cell.
     grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2_J));
+    add_B_along_M(grid, run.demagnetization,
+                  [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
   }
   static std::string describe_head(const Run3D& run) {

@@ -14,6 +14,7 @@
 #include "pipeline/adapt_loop.hpp"
 #include "pipeline/coil_run3d.hpp"
 #include "pipeline/run2d.hpp"
+#include "postproc/demagnetization.hpp"
 #include "postproc/energy3d.hpp"
 #include "postproc/error_estimate3d.hpp"
 #include "postproc/field3d.hpp"
@@ -43,6 +44,7 @@ struct Run3D {
   CoilResults coil_results;
   ErrorEstimate3D error_estimate;    // energy-norm indicator per tet and in all
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;
   int threads = 1;                   // element-loop threads of the assembly
   int ranks = 1;                     // processes that solved it (MPI_COMM_WORLD under mpirun)

@@ -15,7 +15,7 @@
 //   after     summarize_energy(names); recover() (3D: nodal B); sample_probe(locator, probe);
 //             integrate_section(section); forces(); coil_results(assembler, u);
 //             estimate_error() (seconds are timed here); check_finite_fields();
-//             scale_to_whole_device() (3D symmetry planes); mesh_warnings()
+//             scale_to_whole_device() (symmetry planes); mesh_warnings()
 // The stages report to the console (RunOverrides::progress) as "meshing", "assembly: N
 // <elements>, order k" and "post-processing"; D may announce stages of its own in between.
 #include <chrono>
@@ -27,6 +27,7 @@
 
 #include "casefile/case_spec.hpp"
 #include "core/progress.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/section_results.hpp"
@@ -108,6 +109,8 @@ std::unique_ptr<typename D::Run> run_case(CaseSpec spec, const RunOverrides& ov)
   run->warnings = d.mesh_warnings();
   for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
     run->warnings.push_back(std::move(w));
+  // Every magnet against its grade's knee (a warning for each at risk).
+  run->demagnetization = check_demagnetization(*run->field, run->spec, run->warnings);
   run->timings.postprocess = seconds_since(t0);
   run->timings.total = seconds_since(t_start);
   return run;

@@ -4,7 +4,8 @@
 // console summary, each written once over the discretisation D of run_case.hpp.
 //
 // What D provides for them (static, on a const run):
-//   summary   dimension_json(run) (2, "axi", 3); add_mesh_quality(j, run); energy_J(run) and
+//   summary   dimension (2 or 3); dimension_json(run) (2, "axi", 3); add_mesh_quality(j, run);
+//   energy_J(run) and
 //             energy_per(run) (what the energy is the whole of); add_symmetry(j, run);
 //             error_record(run); threads(run), ranks(run); add_solver_extras(j, run);
 //             region_json(run, i) (null: left out); add_results(j, run) (forces, sections,
@@ -21,6 +22,7 @@
 
 #include "core/output_stage.hpp"
 #include "pipeline/adapt_loop.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force_results.hpp"
 #include "pipeline/result_tables.hpp"
 #include "pipeline/run_summary.hpp"
@@ -48,6 +50,7 @@ template <class D> nlohmann::ordered_json summary_json(const typename D::Run& ru
   D::add_results(j, run);
   if (run.adapt)
     j["adapt"] = adapt_json(*run.adapt);
+  add_demagnetization(j, run.demagnetization, D::dimension);
   j["warnings"] = run.warnings;
   return j;
 }

@@ -72,14 +72,14 @@ Eigen::Vector2d FieldSampler2D::B(const Eigen::Vector2d& x) const {
     throw std::invalid_argument("Maxwell stress: point " + where(x) +
                                 " is not in air (the surface must lie in air)");
   if (sampling_ == FieldSampling::element)
-    return field_.B(loc->triangle, loc->bary);
+    return loc->b_map * field_.B(loc->triangle, loc->bary);
   std::array<double, 6> n{};
   const int count = triangle_values(field_.dofs().order(), loc->bary, n.data());
   const int* dof = field_.dofs().element_dofs(loc->triangle);
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
   for (int i = 0; i < count; ++i)
     b += n[i] * recovered_[dof[i]];
-  return b;
+  return loc->b_map * b;
 }
 
 ForceTorque maxwell_stress_circle_2d(const FieldSampler2D& B, const Eigen::Vector2d& center,

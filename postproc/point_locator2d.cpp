@@ -40,7 +40,9 @@ std::array<int, 2> PointLocator2D::cell_of(const Eigen::Vector2d& x) const {
   return {std::clamp(i, 0, nx_ - 1), std::clamp(j, 0, ny_ - 1)};
 }
 
-std::optional<PointLocation2D> PointLocator2D::locate(const Eigen::Vector2d& x) const {
+std::optional<PointLocation2D> PointLocator2D::locate(const Eigen::Vector2d& x_asked) const {
+  const FoldedPoint2D folded = fold_point_2d(mesh_.symmetry, x_asked);
+  const Eigen::Vector2d& x = folded.point;
   const auto c = cell_of(x);
   std::optional<PointLocation2D> best;
   // Points a hair outside the polygonal boundary (a probe on the exact circle) are taken by
@@ -56,7 +58,8 @@ std::optional<PointLocation2D> PointLocator2D::locate(const Eigen::Vector2d& x) 
     const double m = std::min({l0, l1, l2});
     if (m >= best_min) {
       best_min = m;
-      best = PointLocation2D{static_cast<std::size_t>(t), {l0, l1, l2}};
+      best =
+          PointLocation2D{static_cast<std::size_t>(t), {l0, l1, l2}, folded.b_map, folded.a_sign};
     }
   }
   return best;

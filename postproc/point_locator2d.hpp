@@ -1,6 +1,7 @@
 #pragma once
-// Finds the triangle containing a point (uniform bucket grid over the bounding box).
-// Shell triangles are skipped: probes sample the physical domain only.
+// Finds the triangle containing a point (uniform bucket grid over the bounding box); points
+// beyond a symmetry plane of the mesh are found at their mirror image (b_map, a_sign). Shell
+// triangles are skipped: probes sample the physical domain only.
 #include <array>
 #include <optional>
 #include <vector>
@@ -14,6 +15,11 @@ namespace magfem {
 struct PointLocation2D {
   std::size_t triangle;
   std::array<double, 3> bary;
+  // A mesh cut at symmetry planes (Mesh2D::symmetry) locates the point's mirror image on the
+  // model's side; B (and H) at the asked point is b_map times the field found there, A is
+  // a_sign times the potential there (mesh/symmetry_plane2d.hpp).
+  Eigen::Matrix2d b_map = Eigen::Matrix2d::Identity();
+  double a_sign = 1;
 };
 
 class PointLocator2D {

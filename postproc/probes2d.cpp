@@ -14,7 +14,7 @@ ProbeTable sample_probe_2d(const Field2D& field, const PointLocator2D& locator,
     const auto loc = locator.locate(x);
     if (!loc)
       throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
-    b.push_back(field.B(loc->triangle, loc->bary));
+    b.push_back(loc->b_map * field.B(loc->triangle, loc->bary));
   }
   return tabulate_probe_2d(probe, points, b, length_unit, field.problem().axisymmetric());
 }

@@ -96,6 +96,11 @@ SectionFlux integrate_section_2d(const Field2D& field, const SectionSpec& sectio
       part.abs_B_Tm2 += w * bq.norm();
     }
   }
+  finish_section_2d(out, parts);
+  return out;
+}
+
+void finish_section_2d(SectionFlux& out, const std::map<int, SectionPart>& parts) {
   for (const auto& [region, p] : parts) {
     out.parts.push_back(p);
     out.total.area_m2 += p.area_m2;
@@ -103,7 +108,6 @@ SectionFlux integrate_section_2d(const Field2D& field, const SectionSpec& sectio
     out.total.abs_B_Tm2 += p.abs_B_Tm2;
   }
   out.outside_area_m2 = std::max(0.0, out.nominal_area_m2 - out.total.area_m2);
-  return out;
 }
 
 } // namespace magfem

@@ -13,6 +13,8 @@
 //
 // Planar results are for `depth` metres of depth (1, or the case's stack length), as energy
 // and forces; axisymmetric ones for the whole surface of revolution (area 2 pi r ds).
+#include <map>
+
 #include "postproc/field2d.hpp"
 #include "postproc/section_flux3d.hpp"
 #include "postproc/section_spec.hpp"
@@ -20,5 +22,9 @@
 namespace magfem {
 
 SectionFlux integrate_section_2d(const Field2D& field, const SectionSpec& section, double depth);
+
+// Fills out.parts (ascending region) and out.total from per-region sums, and
+// out.outside_area_m2 from out.nominal_area_m2 (also for sections read in pieces).
+void finish_section_2d(SectionFlux& out, const std::map<int, SectionPart>& parts);
 
 } // namespace magfem

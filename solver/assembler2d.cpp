@@ -12,9 +12,19 @@ namespace {
 
 std::vector<int> constrained_dofs(const Problem2D& problem, const DofMap2D& dofs) {
   std::vector<int> fixed;
+  const Mesh2D& mesh = *problem.mesh;
   // A_phi vanishes on the axis (and gauges the Neumann problem there).
   if (problem.axisymmetric())
-    fixed = dofs.dofs_on_edges(problem.mesh->axis_edges);
+    fixed = dofs.dofs_on_edges(mesh.axis_edges);
+  // A symmetry plane with `field: parallel` (B . n = 0) holds A = 0: B . n is the derivative
+  // of A (planar) or r A_phi (axisymmetric) along the plane, and A is odd about it (the image
+  // carries the opposite sources), so the constant is 0. `field: normal` (n x H = 0) is the
+  // natural condition of the weak form: nothing to impose (mesh/symmetry_plane2d.hpp).
+  for (std::size_t p = 0; p < mesh.symmetry.size(); ++p)
+    if (mesh.symmetry[p].field == SymmetryField::parallel) {
+      const auto on_plane = dofs.dofs_on_edges(mesh.symmetry_edges[p]);
+      fixed.insert(fixed.end(), on_plane.begin(), on_plane.end());
+    }
   if (problem.boundary != OuterKind::neumann) {
     const auto outer = dofs.dofs_on_edges(problem.mesh->outer_edges);
     fixed.insert(fixed.end(), outer.begin(), outer.end());

@@ -2,10 +2,10 @@
 
 #include <chrono>
 
+#include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_analytic.hpp"
-#include "core/input_error.hpp"
 
 namespace magfem {
 
@@ -85,12 +85,14 @@ std::shared_ptr<const FeProbes> fe_probes(ComputeCache& cache, const CaseSpec& s
     if (spec.dimension == 3) {
       const auto run = run_case_3d(std::move(copy), ov);
       out.probes = run->probes;
+      out.demagnetization = run->demagnetization.magnets;
       out.elements = static_cast<long>(run->mesh.n_tets());
       out.unknowns = static_cast<long>(run->dofs->n_dofs());
       out.iterations = run->report.iterations;
     } else {
       const auto run = run_case_2d(std::move(copy), ov);
       out.probes = run->probes;
+      out.demagnetization = run->demagnetization.magnets;
       out.elements = static_cast<long>(run->mesh.n_triangles());
       out.unknowns = static_cast<long>(run->dofs->n_dofs());
       out.iterations = run->report.iterations;
@@ -133,6 +135,7 @@ const std::map<std::string, Evaluator>& evaluator_registry() {
     register_harwin(r);
     register_voicecoil(r);
     register_dmp(r);
+    register_demagnetization(r);
     return r;
   }();
   return registry;

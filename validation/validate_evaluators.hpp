@@ -18,10 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "casefile/case_spec.hpp"
+#include "postproc/demagnetization.hpp"
+#include "postproc/probe_table.hpp"
 #include "validation/validate_cache.hpp"
 #include "validation/validate_catalogue.hpp"
-#include "casefile/case_spec.hpp"
-#include "postproc/probe_table.hpp"
 
 namespace magfem {
 
@@ -72,6 +73,7 @@ bool set_fe_values(EvalResult& r, const std::vector<double>& scales,
 // An FE run reduced to what the evaluators read: the probe tables and the run's size.
 struct FeProbes {
   std::vector<ProbeTable> probes;
+  std::vector<DemagnetizationCheck> demagnetization; // per magnet region (summary.json's)
   double mesh_scale = 0;
   long elements = 0, unknowns = 0;
   int iterations = 0;
@@ -102,5 +104,6 @@ void register_thesis_ch6(std::map<std::string, Evaluator>& r);
 void register_harwin(std::map<std::string, Evaluator>& r);
 void register_voicecoil(std::map<std::string, Evaluator>& r);
 void register_dmp(std::map<std::string, Evaluator>& r);
+void register_demagnetization(std::map<std::string, Evaluator>& r);
 
 } // namespace magfem
