@@ -241,6 +241,24 @@ nlohmann::ordered_json coil_results_json(const CoilResults& results) {
   return coils;
 }
 
+void add_coil_results_json(nlohmann::ordered_json& j, const CoilResults& results) {
+  j["coils"] = coil_results_json(results);
+  if (results.inductance_H.size() > 0) {
+    std::vector<std::string> names;
+    for (const auto& c : results.coils)
+      names.push_back(c.name);
+    nlohmann::ordered_json l = nlohmann::ordered_json::array();
+    for (Eigen::Index i = 0; i < results.inductance_H.rows(); ++i) {
+      std::vector<double> row;
+      for (Eigen::Index k = 0; k < results.inductance_H.cols(); ++k)
+        row.push_back(results.inductance_H(i, k));
+      l.push_back(row);
+    }
+    j["inductance_H"] = {{"names", names}, {"matrix", l}};
+  }
+  j["coil_warnings"] = results.warnings;
+}
+
 std::string describe_coils(const CoilResults& results) {
   std::string s;
   char buf[320];

@@ -80,6 +80,9 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
 // Lorentz force specs of the case (sums over the named coils) as force results.
 std::vector<ForceResult> coil_lorentz_forces(const Run3D& run);
 nlohmann::ordered_json coil_results_json(const CoilResults& results);
+// summary.json's coils (coil_results_json), inductance_H {names, matrix} when computed, and
+// coil_warnings.
+void add_coil_results_json(nlohmann::ordered_json& j, const CoilResults& results);
 std::string describe_coils(const CoilResults& results);
 
 } // namespace magfem

@@ -1,9 +1,7 @@
 #include "pipeline/run2d.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -12,10 +10,11 @@
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesher2d.hpp"
+#include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force2d.hpp"
 #include "pipeline/result_checks.hpp"
-#include "pipeline/result_tables.hpp"
-#include "pipeline/demagnetization_results.hpp"
+#include "pipeline/run_case.hpp"
+#include "pipeline/run_report.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -32,10 +31,6 @@
 
 namespace magfem {
 namespace {
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 Mesh2D mesh_case(const CaseSpec& spec, const SizeField2D* refine_sizes) {
   check_symmetry_2d(spec); // before meshing: the share would stand for a different device
@@ -104,16 +99,6 @@ std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& asse
   return out;
 }
 
-// The per-element indicator eta_K^2 (J/m planar, J axisymmetric) as cell data, in the order
-// of make_vtu_2d's cells (the shell is not written).
-void add_error_indicator(VtuGrid& grid, const Run2D& run) {
-  VtuArray a{"error_indicator", 1, {}};
-  for (std::size_t t = 0; t < run.mesh.n_triangles(); ++t)
-    if (!run.problem.is_shell(t))
-      a.values.push_back(run.error.eta2[t]);
-  grid.cell_data.push_back(std::move(a));
-}
-
 } // namespace
 
 nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils) {
@@ -159,194 +144,205 @@ Mesh2D mesh_case_2d(CaseSpec& spec, const RunOverrides& overrides) {
   return mesh_case(spec, overrides.refine_sizes);
 }
 
-std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& ov) {
-  const auto t_start = Clock::now();
-  auto run = std::make_unique<Run2D>();
-  apply_overrides(spec, ov);
-  run->spec = std::move(spec);
-  run->spec.newton.linear.progress = ov.progress;
+namespace {
+
+// The planar and axisymmetric stages of run_case (run_case.hpp): Lagrange triangles of order
+// 1 or 2 for the vector potential A_z (planar) or r A_phi (axisymmetric, the weight r in the
+// element), one process, Newton with CHOLMOD or CG.
+class Discretisation2D {
+public:
+  using Run = Run2D;
+  using DofMap = DofMap2D;
+  using Field = Field2D;
+  using Locator = PointLocator2D;
+  using Assembler = Assembler2D;
+  static constexpr const char* element_name = "triangles";
+
+  Discretisation2D(Run2D& run, const RunOverrides& ov) : run_(run), ov_(ov) {}
+
+  static void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
+    magfem::apply_overrides(spec, ov);
+  }
+  static std::size_t n_elements(const Mesh2D& mesh) { return mesh.n_triangles(); }
+  static double total_energy(const Run2D& run) { return run.energy.total_J_per_m; }
+
   // A planar or axisymmetric factor stays affordable up to the direct limit (nested
   // dissection fill grows like n log n in 2D), so the cost prediction, a second AMD ordering
   // of the whole matrix, is not run (it was a tenth of a 100k-unknown axisymmetric solve).
-  run->spec.newton.linear.direct_max_gflop = 0;
-  auto stage = [&](const std::string& what) {
-    if (ov.progress)
-      ov.progress->stage(what);
-  };
+  void tune_linear_solver(LinearSolverOptions& options) const { options.direct_max_gflop = 0; }
+  void check_before_mesh() const {}
+  Mesh2D mesh() const { return mesh_case(run_.spec, ov_.refine_sizes); }
+  void check_mesh() const { check_stress_surfaces_2d(run_.spec, run_.mesh); }
+  Problem2D build_problem() const { return magfem::build_problem(run_.spec, run_.mesh); }
+  void prepare_dofs() const {}
+  Assembler2D make_assembler() const { return Assembler2D(run_.problem, *run_.dofs); }
+  void prepare_solver(const Assembler2D&) const {}
+  NewtonReport solve(Assembler2D& assembler, Eigen::VectorXd& u) const {
+    return solve_nonlinear(assembler, u, run_.spec.newton);
+  }
+  bool post_processes() const { return true; }
 
-  auto t0 = Clock::now();
-  stage("meshing");
-  run->mesh = mesh_case(run->spec, ov.refine_sizes);
-  run->timings.mesh = since(t0);
-  check_stress_surfaces_2d(run->spec, run->mesh); // before the solve: fail fast
+  EnergySummary2D summarize_energy(const std::vector<std::string>& names) const {
+    return summarize_energy_2d(*run_.field, names);
+  }
+  void recover() const {}
+  ProbeTable sample_probe(const PointLocator2D& locator, const ProbeSpec& probe) const {
+    return sample_probe_2d(*run_.field, locator, probe, run_.spec.length_unit);
+  }
+  SectionFlux integrate_section(const SectionSpec& section) const {
+    const double depth = run_.spec.stack_length > 0 ? run_.spec.stack_length : 1.0;
+    return integrate_section_whole_2d(*run_.field, section, depth, run_.spec);
+  }
+  std::vector<ForceResult> forces() const { return compute_forces_2d(run_); }
+  void coil_results(const Assembler2D& assembler, const Eigen::VectorXd& u) const {
+    run_.coils = magfem::coil_results(run_, assembler, u);
+  }
+  void estimate_error() const {
+    run_.error = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
+  }
+  void check_finite_fields() const {}
+  void scale_to_whole_device() const { scale_to_whole_device_2d(run_); }
+  std::vector<std::string> mesh_warnings() const { return {}; }
 
-  run->problem = build_problem(run->spec, run->mesh);
-  t0 = Clock::now();
-  stage("assembly: " + std::to_string(run->mesh.n_triangles()) + " triangles, order " +
-        std::to_string(run->spec.order));
-  run->dofs = std::make_unique<DofMap2D>(run->mesh, run->spec.order);
-  Assembler2D assembler(run->problem, *run->dofs);
-  const double setup = since(t0);
-
-  Eigen::VectorXd u;
-  run->report = solve_nonlinear(assembler, u, run->spec.newton);
-  run->timings.assemble = setup + run->report.assemble_s;
-  run->timings.solve = run->report.solve_s;
-  if (!run->report.converged)
-    throw SolveError("the solver did not converge: " + run->report.message);
-
-  check_finite(u, "solution");
-
-  t0 = Clock::now();
-  stage("post-processing");
-  run->field = std::make_unique<Field2D>(run->problem, *run->dofs, assembler.expand(u));
-  std::vector<std::string> names;
-  for (const auto& r : run->spec.regions)
-    names.push_back(r.name);
-  run->energy = summarize_energy_2d(*run->field, names);
-  const auto t_estimate = Clock::now();
-  run->error = estimate_error_2d(*run->field, run->energy.total_J_per_m);
-  run->timings.error_estimate = since(t_estimate);
-  const PointLocator2D locator(run->mesh);
-  for (const auto& probe : run->spec.probes)
-    run->probes.push_back(sample_probe_2d(*run->field, locator, probe, run->spec.length_unit));
-  const double depth = run->spec.stack_length > 0 ? run->spec.stack_length : 1.0;
-  for (const auto& section : run->spec.sections)
-    run->sections.push_back(integrate_section_whole_2d(*run->field, section, depth, run->spec));
-  check_sections_inside(run->sections, run->spec);
-  run->forces = compute_forces_2d(*run);
-  run->coils = coil_results(*run, assembler, u);
-  scale_to_whole_device_2d(*run);
-  check_finite(run->energy.total_J_per_m, "magnetic energy");
-  check_forces_finite(run->forces);
-  run->warnings = bh_extrapolation_warnings(run->spec.regions, run->energy.regions);
-  run->demagnetization = check_demagnetization(*run->field, run->spec, run->warnings);
-  run->timings.postprocess = since(t0);
-  run->timings.total = since(t_start);
-  return run;
-}
-
-nlohmann::ordered_json summary_json_2d(const Run2D& run) {
-  nlohmann::ordered_json j;
-  const bool axi = run.spec.axisymmetric();
-  add_run_header(j, {run.spec.file, axi ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2),
-                     run.spec.order, run.mesh.n_triangles(), run.mesh.n_nodes(),
-                     static_cast<std::size_t>(run.dofs->n_dofs())});
-  // Top-level min/max_angle_deg predate mesh_quality and stay for the scripts that read them.
-  j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
-  j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
-  j["mesh_quality"] = {{"min_angle_deg", run.mesh.quality.min_angle_deg},
-                       {"max_angle_deg", run.mesh.quality.max_angle_deg}};
-  const double length = run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
-  const std::string per = axi                         ? "body of revolution"
-                          : run.spec.stack_length > 0 ? "stack"
-                                                      : "metre of length";
-  add_energy(j, run.energy.total_J_per_m * length, per);
-  add_symmetry_json_2d(j, run.spec);
-  add_error_estimate(j,
-                     {run.error.energy_error_pct, run.error.energy_norm_error_pct,
-                      run.error.indicator, run.error.total_eta2 * length},
-                     run.timings.error_estimate);
-  add_solve_record(j, run.report, run.timings, 1, 1);
-  auto& regions = j["regions"];
-  for (const auto& r : run.energy.regions) {
+  // What the report writes (run_report.hpp).
+  static constexpr int dimension = 2;
+  static nlohmann::ordered_json dimension_json(const Run2D& run) {
+    return run.spec.axisymmetric() ? nlohmann::ordered_json("axi") : nlohmann::ordered_json(2);
+  }
+  static void add_mesh_quality(nlohmann::ordered_json& j, const Run2D& run) {
+    // Top-level min/max_angle_deg predate mesh_quality and stay for the scripts that read them.
+    j["min_angle_deg"] = run.mesh.quality.min_angle_deg;
+    j["max_angle_deg"] = run.mesh.quality.max_angle_deg;
+    j["mesh_quality"] = {{"min_angle_deg", run.mesh.quality.min_angle_deg},
+                         {"max_angle_deg", run.mesh.quality.max_angle_deg}};
+  }
+  // Planar energies and forces are per metre, times the stack length when the case has one.
+  static double length(const Run2D& run) {
+    return run.spec.stack_length > 0 ? run.spec.stack_length : 1.0;
+  }
+  static double energy_J(const Run2D& run) { return run.energy.total_J_per_m * length(run); }
+  static std::string energy_per(const Run2D& run) {
+    return run.spec.axisymmetric()     ? "body of revolution"
+           : run.spec.stack_length > 0 ? "stack"
+                                       : "metre of length";
+  }
+  static void add_symmetry(nlohmann::ordered_json& j, const Run2D& run) {
+    add_symmetry_json_2d(j, run.spec);
+  }
+  static ErrorEstimateRecord error_record(const Run2D& run) {
+    return {run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator,
+            run.error.total_eta2 * length(run)};
+  }
+  static int threads(const Run2D&) { return 1; }
+  static int ranks(const Run2D&) { return 1; }
+  static void add_solver_extras(nlohmann::ordered_json&, const Run2D&) {}
+  static nlohmann::ordered_json region_json(const Run2D& run, std::size_t i) {
+    const auto& r = run.energy.regions[i];
     if (r.area_m2 == 0)
-      continue;
-    regions.push_back({{"name", r.name},
-                       {"area_m2", r.area_m2},
-                       {"energy_J", r.energy_J_per_m * length},
-                       {"peak_B_T", r.peak_B_T},
-                       {"nonlinear", r.nonlinear}});
+      return nullptr;
+    return {{"name", r.name},
+            {"area_m2", r.area_m2},
+            {"energy_J", r.energy_J_per_m * length(run)},
+            {"peak_B_T", r.peak_B_T},
+            {"nonlinear", r.nonlinear}};
   }
-  for (const auto& p : run.probes)
-    j["probes"].push_back(p.name + ".csv");
-  if (!run.forces.empty()) {
-    j["forces_per"] = per;
-    j["forces"] = forces_json(run.forces);
+  static void add_results(nlohmann::ordered_json& j, const Run2D& run) {
+    if (!run.forces.empty()) {
+      j["forces_per"] = energy_per(run);
+      j["forces"] = forces_json(run.forces);
+    }
+    if (!run.sections.empty())
+      j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
+    if (!run.coils.empty())
+      j["coils"] = coils_json_2d(run.coils);
   }
-  if (!run.sections.empty())
-    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-  if (!run.coils.empty())
-    j["coils"] = coils_json_2d(run.coils);
-  if (run.adapt)
-    j["adapt"] = adapt_json(*run.adapt);
-  add_demagnetization(j, run.demagnetization, 2);
-  j["warnings"] = run.warnings;
-  return j;
-}
-
-std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  stage_probe_tables(stage, run.probes);
-
-  if (run.spec.write_vtu) {
-    const VtuMaterials materials = vtu_materials(run.spec.regions);
-    const auto& material_names = materials.names;
-    const auto& material_of_part = materials.of_region;
-    VtuGrid grid = make_vtu_2d(*run.field, material_of_part, 0, material_names);
-    add_error_indicator(grid, run);
-    add_B_along_M(grid, run.demagnetization, [&](std::size_t t) { return run.problem.is_shell(t); });
+  static void stage_vtu(OutputStage& stage, const Run2D& run, const VtuMaterials& materials) {
+    VtuGrid grid = make_vtu_2d(*run.field, materials.of_region, 0, materials.names);
+    // eta_K^2 per cell (J/m planar, J axisymmetric).
+    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error.eta2));
+    add_B_along_M(grid, run.demagnetization,
+                  [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
     if (run.spec.write_revolved_vtu)
       write_vtu(stage.path_for("solution_revolved.vtu").string(),
-                make_vtu_revolved(*run.field, material_of_part, 0, material_names));
+                make_vtu_revolved(*run.field, materials.of_region, 0, materials.names));
+  }
+  static std::string describe_head(const Run2D& run) {
+    char buf[512];
+    std::string s;
+    std::snprintf(buf, sizeof buf,
+                  "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
+                  "solve    order %d, %d unknowns, %s, residual %.2e\n",
+                  run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
+                  run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
+                  run.report.residual_history.back());
+    s += buf;
+    std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
+                  run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
+    s += buf;
+    std::snprintf(
+        buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
+        run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
+    s += buf;
+    if (run.adapt)
+      s += describe_adapt_result(*run.adapt);
+    for (const auto& r : run.energy.regions)
+      if (r.nonlinear && r.area_m2 > 0) {
+        std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                      r.peak_B_T);
+        s += buf;
+      }
+    return s;
+  }
+  static bool forces_per_metre(const Run2D& run) {
+    return run.spec.stack_length <= 0 && !run.spec.axisymmetric();
+  }
+  static const char* flux_unit(const Run2D& run) {
+    return run.spec.stack_length > 0 || run.spec.axisymmetric() ? "Wb" : "Wb/m";
+  }
+  static std::string describe_coils(const Run2D& run) {
+    std::string s;
+    char buf[512];
+    for (const auto& c : run.coils) {
+      std::snprintf(buf, sizeof buf,
+                    "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
+                    "linkage / I = %.6g H (apparent)\n",
+                    c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
+      s += buf;
+    }
+    return s;
+  }
+  static std::string describe_time(const Run2D& run) {
+    char buf[512];
+    std::snprintf(
+        buf, sizeof buf,
+        "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
+        run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
+        run.timings.total);
+    return buf;
   }
 
-  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
-  stage.write_text("summary.json", summary_json_2d(run).dump(2) + "\n");
-  stage.commit();
-  return stage.written();
+private:
+  Run2D& run_;
+  const RunOverrides& ov_;
+};
+
+} // namespace
+
+std::unique_ptr<Run2D> run_case_2d(CaseSpec spec, const RunOverrides& overrides) {
+  return run_case<Discretisation2D>(std::move(spec), overrides);
+}
+
+nlohmann::ordered_json summary_json_2d(const Run2D& run) {
+  return summary_json<Discretisation2D>(run);
+}
+
+std::vector<std::string> write_outputs_2d(const Run2D& run, const std::filesystem::path& out_dir) {
+  return write_outputs<Discretisation2D>(run, out_dir);
 }
 
 std::string describe_run_2d(const Run2D& run) {
-  char buf[512];
-  std::string s;
-  std::snprintf(buf, sizeof buf,
-                "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
-                "solve    order %d, %d unknowns, %s, residual %.2e\n",
-                run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
-                run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
-                run.report.residual_history.back());
-  s += buf;
-  std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
-                run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
-  s += buf;
-  std::snprintf(
-      buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
-      run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
-  s += buf;
-  if (run.adapt)
-    s += describe_adapt_result(*run.adapt);
-  for (const auto& r : run.energy.regions)
-    if (r.nonlinear && r.area_m2 > 0) {
-      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
-                    r.peak_B_T);
-      s += buf;
-    }
-  s += describe_forces(run.forces, run.spec.stack_length <= 0 && !run.spec.axisymmetric());
-  for (const auto& f : run.sections) {
-    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g %s, mean Bn %.6g T, mean |B| %.6g T\n",
-                  f.name.c_str(), f.total.flux_Wb,
-                  run.spec.stack_length > 0 || run.spec.axisymmetric() ? "Wb" : "Wb/m",
-                  f.total.Bn_avg_T(), f.total.B_avg_T());
-    s += buf;
-  }
-  for (const auto& c : run.coils) {
-    std::snprintf(buf, sizeof buf,
-                  "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
-                  "linkage / I = %.6g H (apparent)\n",
-                  c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
-    s += buf;
-  }
-  std::snprintf(buf, sizeof buf,
-                "time     mesh %.3f s, assemble %.3f s, solve %.3f s, post %.3f s, total %.3f s\n",
-                run.timings.mesh, run.timings.assemble, run.timings.solve, run.timings.postprocess,
-                run.timings.total);
-  s += buf;
-  for (const auto& w : run.warnings)
-    s += "warning  " + w + "\n";
-  return s;
+  return describe_run<Discretisation2D>(run);
 }
 
 } // namespace magfem

@@ -1,11 +1,9 @@
 #include "pipeline/run3d.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -22,7 +20,8 @@
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
-#include "pipeline/result_tables.hpp"
+#include "pipeline/run_case.hpp"
+#include "pipeline/run_report.hpp"
 #include "pipeline/run_summary.hpp"
 #include "pipeline/section_results.hpp"
 #include "pipeline/solver_summary.hpp"
@@ -38,10 +37,6 @@
 
 namespace magfem {
 namespace {
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // Sphere probes tell the mesher where to refine (MeshOptions3D::probe_size).
 std::vector<ProbeSurface> probe_surfaces(const CaseSpec& spec) {
@@ -190,286 +185,278 @@ double estimated_memory_mb_3d(CaseSpec spec, const RunOverrides& ov) {
                                   static_cast<int>(spec.geometry3d.coils.size()));
 }
 
-std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& ov) {
-  const auto t_start = Clock::now();
-  auto run = std::make_unique<Run3D>();
-  apply_overrides(spec, ov);
-  run->spec = std::move(spec);
-  run->spec.newton.linear.progress = ov.progress;
+namespace {
+
+// The 3D stages of run_case (run_case.hpp): Lagrange tetrahedra of order 1 or 2 for the
+// reduced scalar potential (coils as a Biot-Savart source field), Newton with CHOLMOD, CG with
+// AMG or p-multigrid, or under mpirun a distributed linear solve; symmetry planes mesh a share
+// of the device, scaled back to the whole after post-processing.
+class Discretisation3D {
+public:
+  using Run = Run3D;
+  using DofMap = DofMap3D;
+  using Field = Field3D;
+  using Locator = PointLocator3D;
+  using Assembler = Assembler3D;
+  static constexpr const char* element_name = "tetrahedra";
+
+  Discretisation3D(Run3D& run, const RunOverrides& ov) : run_(run), ov_(ov), world_(ov.world) {
+    run_.ranks = world_.size;
+  }
+
+  static void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
+    magfem::apply_overrides(spec, ov);
+  }
+  static std::size_t n_elements(const Mesh3D& mesh) { return mesh.n_tets(); }
+  static double total_energy(const Run3D& run) { return run.energy.total_J; }
+
   // 3D systems fill in so much that CHOLMOD's predicted cost passes direct_max_gflop far
   // below this size (a 97k-unknown P2 sphere already goes to CG; 237k P2 unknowns predict
   // 870 GFlop), while the AMD analysis behind the prediction takes seconds at a million
   // unknowns (2 s of the 32-magnet benchmark at 630k): systems this large skip it.
-  auto& limit = run->spec.newton.linear.direct_limit;
-  limit = std::min(limit, 200'000);
-  auto stage = [&](const std::string& what) {
-    if (ov.progress)
-      ov.progress->stage(what);
-  };
-  const MpiWorld& world = ov.world;
-  run->ranks = world.size;
-  if (world.distributed())
-    if (const std::string why = distributed_refusal(run->spec); !why.empty())
-      throw InputError(run->spec.file, 0, "",
-                       why + " (" + std::to_string(world.size) + " processes asked for)");
-
-  if (!run->spec.geometry3d.coils.empty()) {
-    run->coils = std::make_unique<CaseCoils>(run->spec.geometry3d.coils, fe_source_options());
-    check_coils_in_air(run->spec, *run->coils); // before the mesh: fail fast
+  void tune_linear_solver(LinearSolverOptions& options) const {
+    options.direct_limit = std::min(options.direct_limit, 200'000);
   }
-  auto t0 = Clock::now();
-  stage("meshing");
-  run->mesh = mesh_case(run->spec, ov, run->mesh_estimate);
-  run->timings.mesh = since(t0);
-  // Said now (a solve can take minutes) and again in the summary.
-  if (world.is_root())
-    for (const auto& w : run->mesh.warnings)
-      std::cerr << "magfem: warning: " + w + "\n" << std::flush;
-  if (world.distributed())
-    check_same_mesh_everywhere(run->mesh);
-  check_stress_surfaces_3d(run->spec, run->mesh); // before the solve: fail fast
-
-  run->problem = build_problem(run->spec, run->mesh);
-  t0 = Clock::now();
-  stage("assembly: " + std::to_string(run->mesh.n_tets()) + " tetrahedra, order " +
-        std::to_string(run->spec.order));
-  run->dofs = std::make_unique<DofMap3D>(run->mesh, run->spec.order);
-  // P2 edge nodes on spherical interfaces go onto the sphere: flat facets would otherwise
-  // limit the field error near curved magnet faces to O(h^2) in the geometry.
-  if (run->spec.order == 2)
-    run->dofs->curve_to_spheres(run->mesh, sphere_surfaces(run->spec.geometry3d, run->mesh));
-  if (run->coils) {
-    stage("coil source field: " + std::to_string(run->coils->n_coils()) + " coils at " +
-          std::to_string(run->mesh.n_tets() * tet_rule(SourceFieldTable3D::rule_degree).size()) +
-          " quadrature points");
-    run->coil_source = make_coil_source_3d(run->problem, *run->dofs, *run->coils);
-    stage("assembly");
-    run->problem.source = &run->coil_source;
+  void check_before_mesh() const {
+    if (world_.distributed())
+      if (const std::string why = distributed_refusal(run_.spec); !why.empty())
+        throw InputError(run_.spec.file, 0, "",
+                         why + " (" + std::to_string(world_.size) + " processes asked for)");
+    if (!run_.spec.geometry3d.coils.empty()) {
+      run_.coils = std::make_unique<CaseCoils>(run_.spec.geometry3d.coils, fe_source_options());
+      check_coils_in_air(run_.spec, *run_.coils);
+    }
+  }
+  Mesh3D mesh() const { return mesh_case(run_.spec, ov_, run_.mesh_estimate); }
+  void check_mesh() const {
+    // Said now (a solve can take minutes) and again in the summary.
+    if (world_.is_root())
+      for (const auto& w : run_.mesh.warnings)
+        std::cerr << "magfem: warning: " + w + "\n" << std::flush;
+    if (world_.distributed())
+      check_same_mesh_everywhere(run_.mesh);
+    check_stress_surfaces_3d(run_.spec, run_.mesh);
+  }
+  Problem3D build_problem() const { return magfem::build_problem(run_.spec, run_.mesh); }
+  void prepare_dofs() const {
+    // P2 edge nodes on spherical interfaces go onto the sphere: flat facets would otherwise
+    // limit the field error near curved magnet faces to O(h^2) in the geometry.
+    if (run_.spec.order == 2)
+      run_.dofs->curve_to_spheres(run_.mesh, sphere_surfaces(run_.spec.geometry3d, run_.mesh));
+    if (run_.coils) {
+      announce_stage(ov_.progress,
+                     "coil source field: " + std::to_string(run_.coils->n_coils()) + " coils at " +
+                         std::to_string(run_.mesh.n_tets() *
+                                        tet_rule(SourceFieldTable3D::rule_degree).size()) +
+                         " quadrature points");
+      run_.coil_source = make_coil_source_3d(run_.problem, *run_.dofs, *run_.coils);
+      announce_stage(ov_.progress, "assembly");
+      run_.problem.source = &run_.coil_source;
+    }
   }
   // Distributed: one thread per process (the processes share the cores).
-  Assembler3D assembler(run->problem, *run->dofs, AssemblyOptions3D{world.distributed() ? 1 : 0});
-  run->threads = assembler.threads();
-  // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
-  // preconditioner (O(unknowns) to build, unused by the other solvers and not distributed).
-  if (run->spec.order == 2 && !world.distributed())
-    run->spec.newton.linear.coarse_prolongation =
-        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-            p1_prolongation(*run->dofs, assembler.dof_to_equation()));
-  if (run->spec.order == 2 && !world.distributed() && run->problem.boundary == OuterKind3D::open)
-    run->spec.newton.linear.smoother_block = std::make_shared<const std::vector<int>>(
-        element_equations(*run->dofs, assembler.dof_to_equation(), run->mesh.n_tets(),
-                          [&](std::size_t t) { return run->problem.is_shell(t); }));
-  const double setup = since(t0);
-
-  Eigen::VectorXd u;
-  if (world.distributed())
-    run->report = solve_linear_distributed(assembler, *run->dofs, run->mesh.n_tets(), world.rank,
-                                           world.size, run->spec.newton.linear, u);
-  else
-    run->report = solve_nonlinear(assembler, u, run->spec.newton);
-  run->timings.assemble = setup + run->report.assemble_s;
-  run->timings.solve = run->report.solve_s;
-  if (!run->report.converged)
-    throw SolveError("the solver did not converge: " + run->report.message);
-  if (!world.is_root()) { // rank 0 holds the solution and alone post-processes
-    run->timings.total = since(t_start);
-    return run;
+  Assembler3D make_assembler() const {
+    return Assembler3D(run_.problem, *run_.dofs, AssemblyOptions3D{world_.distributed() ? 1 : 0});
   }
+  void prepare_solver(const Assembler3D& assembler) const {
+    run_.threads = assembler.threads();
+    if (run_.spec.order != 2 || world_.distributed())
+      return;
+    auto& linear = run_.spec.newton.linear;
+    // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
+    // preconditioner (O(unknowns) to build, unused by the other solvers and not distributed).
+    linear.coarse_prolongation =
+        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+            p1_prolongation(*run_.dofs, assembler.dof_to_equation()));
+    if (run_.problem.boundary == OuterKind3D::open)
+      linear.smoother_block = std::make_shared<const std::vector<int>>(
+          element_equations(*run_.dofs, assembler.dof_to_equation(), run_.mesh.n_tets(),
+                            [&](std::size_t t) { return run_.problem.is_shell(t); }));
+  }
+  NewtonReport solve(Assembler3D& assembler, Eigen::VectorXd& u) const {
+    if (world_.distributed())
+      return solve_linear_distributed(assembler, *run_.dofs, run_.mesh.n_tets(), world_.rank,
+                                      world_.size, run_.spec.newton.linear, u);
+    return solve_nonlinear(assembler, u, run_.spec.newton);
+  }
+  // Rank 0 holds the solution and alone post-processes.
+  bool post_processes() const { return world_.is_root(); }
 
-  check_finite(u, "solution");
-
-  t0 = Clock::now();
-  stage("post-processing");
-  run->field = std::make_unique<Field3D>(run->problem, *run->dofs, assembler.expand(u));
-  std::vector<std::string> names;
-  for (const auto& r : run->spec.regions)
-    names.push_back(r.name);
-  run->energy = summarize_energy_3d(*run->field, names);
-  const PointLocator3D locator(run->mesh);
-  run->recovered_B = RecoveredB3D(*run->field);
-  for (const auto& probe : run->spec.probes)
-    run->probes.push_back(
-        sample_probe_3d(*run->field, locator, probe, run->spec.length_unit, &run->recovered_B));
+  EnergySummary3D summarize_energy(const std::vector<std::string>& names) const {
+    return summarize_energy_3d(*run_.field, names);
+  }
+  // Nodal B per region, once for the probes and the VTU.
+  void recover() const { run_.recovered_B = RecoveredB3D(*run_.field); }
+  ProbeTable sample_probe(const PointLocator3D& locator, const ProbeSpec& probe) const {
+    return sample_probe_3d(*run_.field, locator, probe, run_.spec.length_unit, &run_.recovered_B);
+  }
   // Sections integrate the element field itself: a flux is an integral, which the recovered
   // (smoothed) B would only approximate, and the element B is exact in B.n per element.
-  for (const auto& section : run->spec.sections)
-    run->sections.push_back(integrate_section_3d(*run->field, section));
-  check_sections_inside(run->sections, run->spec);
-  run->forces = compute_forces_3d(*run);
-  for (auto& f : coil_lorentz_forces(*run))
-    run->forces.push_back(f);
-  run->coil_results = compute_coil_results(*run, assembler, u);
-  // Every solve says how accurate it is (issue 29): the energy-norm estimate and one for
-  // each stress-tensor force, from one patch recovery.
-  const auto t_estimate = Clock::now();
-  const PatchRecovery3D recovery(*run->field);
-  run->error_estimate = estimate_error_3d(recovery, run->energy.total_J);
-  estimate_force_errors_3d(*run, recovery, run->forces);
-  run->error_estimate_s = since(t_estimate);
-  run->timings.error_estimate = run->error_estimate_s;
-  check_finite(run->recovered_B.values(), "recovered flux density");
-  check_finite(run->energy.total_J, "magnetic energy");
-  check_forces_finite(run->forces);
-  scale_to_whole_device(*run);
-  run->warnings = run->mesh.warnings;
-  for (auto& w : bh_extrapolation_warnings(run->spec.regions, run->energy.regions))
-    run->warnings.push_back(std::move(w));
-  run->demagnetization = check_demagnetization(*run->field, run->spec, run->warnings);
-  run->timings.postprocess = since(t0);
-  run->timings.total = since(t_start);
-  return run;
-}
+  SectionFlux integrate_section(const SectionSpec& section) const {
+    return integrate_section_3d(*run_.field, section);
+  }
+  std::vector<ForceResult> forces() const {
+    auto forces = compute_forces_3d(run_);
+    for (auto& f : coil_lorentz_forces(run_))
+      forces.push_back(f);
+    return forces;
+  }
+  void coil_results(const Assembler3D& assembler, const Eigen::VectorXd& u) const {
+    run_.coil_results = compute_coil_results(run_, assembler, u);
+  }
+  // The energy-norm estimate and one for each stress-tensor force, from one patch recovery.
+  void estimate_error() const {
+    const PatchRecovery3D recovery(*run_.field);
+    run_.error_estimate = estimate_error_3d(recovery, run_.energy.total_J);
+    estimate_force_errors_3d(run_, recovery, run_.forces);
+  }
+  void check_finite_fields() const {
+    check_finite(run_.recovered_B.values(), "recovered flux density");
+  }
+  void scale_to_whole_device() const { magfem::scale_to_whole_device(run_); }
+  std::vector<std::string> mesh_warnings() const { return run_.mesh.warnings; }
 
-nlohmann::ordered_json summary_json_3d(const Run3D& run) {
-  nlohmann::ordered_json j;
-  add_run_header(j, {run.spec.file, 3, run.spec.order, run.mesh.n_tets(), run.mesh.n_nodes(),
-                     static_cast<std::size_t>(run.dofs->n_dofs())});
-  j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
-                       {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
-                       {"max_radius_edge", run.mesh.quality.max_radius_edge},
-                       {"curved_tets", run.dofs->n_curved()},
-                       {"straightened_edge_nodes", run.dofs->n_straightened()}};
-  add_energy(j, run.energy.total_J, "device");
-  if (const auto& planes = run.spec.geometry3d.symmetry; !planes.empty()) {
-    // What was meshed, and that energies, linkages and inductances are the whole device's.
+  // What the report writes (run_report.hpp).
+  static constexpr int dimension = 3;
+  static nlohmann::ordered_json dimension_json(const Run3D&) { return 3; }
+  static void add_mesh_quality(nlohmann::ordered_json& j, const Run3D& run) {
+    j["mesh_quality"] = {{"min_dihedral_deg", run.mesh.quality.min_dihedral_deg},
+                         {"max_dihedral_deg", run.mesh.quality.max_dihedral_deg},
+                         {"max_radius_edge", run.mesh.quality.max_radius_edge},
+                         {"curved_tets", run.dofs->n_curved()},
+                         {"straightened_edge_nodes", run.dofs->n_straightened()}};
+  }
+  static double energy_J(const Run3D& run) { return run.energy.total_J; }
+  static std::string energy_per(const Run3D&) { return "device"; }
+  // What was meshed, and that energies, linkages and inductances are the whole device's.
+  static void add_symmetry(nlohmann::ordered_json& j, const Run3D& run) {
+    const auto& planes = run.spec.geometry3d.symmetry;
+    if (planes.empty())
+      return;
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const auto& p : planes)
       list.push_back({{"plane", axis_name(p.axis)}, {"field", field_name(p.field)}});
     j["symmetry"] = list;
     j["symmetry_factor"] = symmetry_factor(planes);
   }
-  add_error_estimate(j,
-                     {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
-                      run.error_estimate.indicator, run.error_estimate.error_norm2_J},
-                     run.error_estimate_s);
-  add_solve_record(j, run.report, run.timings, run.threads, run.ranks);
-  // The coils' inductance matrix (part of postprocess), 3D only.
-  j["timings_s"]["inductance"] = run.coil_results.inductance_s;
-  j["memory_guard"] = {
-      {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
-      {"estimated_peak_memory_MB",
-       estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order,
-                                static_cast<int>(run.spec.geometry3d.coils.size()))}};
-  auto& regions = j["regions"];
-  for (std::size_t i = 0; i < run.energy.regions.size(); ++i) {
+  static ErrorEstimateRecord error_record(const Run3D& run) {
+    const auto& e = run.error_estimate;
+    return {e.energy_error_pct, e.energy_norm_error_pct, e.indicator, e.error_norm2_J};
+  }
+  static int threads(const Run3D& run) { return run.threads; }
+  static int ranks(const Run3D& run) { return run.ranks; }
+  static void add_solver_extras(nlohmann::ordered_json& j, const Run3D& run) {
+    // The coils' inductance matrix (part of postprocess), 3D only.
+    j["timings_s"]["inductance"] = run.coil_results.inductance_s;
+    j["memory_guard"] = {
+        {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
+        {"estimated_peak_memory_MB",
+         estimated_peak_memory_mb(run.mesh_estimate.tetrahedra, run.spec.order,
+                                  static_cast<int>(run.spec.geometry3d.coils.size()))}};
+  }
+  static nlohmann::ordered_json region_json(const Run3D& run, std::size_t i) {
     const auto& r = run.energy.regions[i];
     if (r.volume_m3 == 0)
-      continue;
-    nlohmann::ordered_json reg = {{"name", r.name},
+      return nullptr;
+    nlohmann::ordered_json row = {{"name", r.name},
                                   {"volume_m3", r.volume_m3},
                                   {"energy_J", r.energy_J},
                                   {"peak_B_T", r.peak_B_T},
                                   {"nonlinear", r.nonlinear}};
     if (i < run.mesh.part_volumes.size())
-      reg["meshed_volume_m3"] = run.mesh.part_volumes[i];
-    regions.push_back(reg);
+      row["meshed_volume_m3"] = run.mesh.part_volumes[i];
+    return row;
   }
-  for (const auto& p : run.probes)
-    j["probes"].push_back(p.name + ".csv");
-  if (!run.sections.empty()) {
-    j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-  }
-  if (run.coils) {
-    j["coils"] = coil_results_json(run.coil_results);
-    if (run.coil_results.inductance_H.size() > 0) {
-      std::vector<std::string> names;
-      for (const auto& c : run.coil_results.coils)
-        names.push_back(c.name);
-      nlohmann::ordered_json l = nlohmann::ordered_json::array();
-      for (Eigen::Index i = 0; i < run.coil_results.inductance_H.rows(); ++i) {
-        std::vector<double> row;
-        for (Eigen::Index k = 0; k < run.coil_results.inductance_H.cols(); ++k)
-          row.push_back(run.coil_results.inductance_H(i, k));
-        l.push_back(row);
-      }
-      j["inductance_H"] = {{"names", names}, {"matrix", l}};
+  static void add_results(nlohmann::ordered_json& j, const Run3D& run) {
+    if (!run.sections.empty())
+      j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
+    if (run.coils)
+      add_coil_results_json(j, run.coil_results);
+    if (!run.forces.empty()) {
+      j["forces_per"] = "device";
+      j["forces"] = forces_json(run.forces);
     }
-    j["coil_warnings"] = run.coil_results.warnings;
   }
-  if (!run.forces.empty()) {
-    j["forces_per"] = "device";
-    j["forces"] = forces_json(run.forces);
+  static void stage_vtu(OutputStage& stage, const Run3D& run, const VtuMaterials& materials) {
+    VtuGrid grid = make_vtu_3d(*run.field, run.recovered_B.dof_average(), materials.of_region, 0,
+                               materials.names);
+    // eta_K^2 (J) per cell.
+    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2_J));
+    add_B_along_M(grid, run.demagnetization,
+                  [&](std::size_t t) { return run.problem.is_shell(t); });
+    write_vtu(stage.path_for("solution.vtu").string(), grid);
   }
-  if (run.adapt)
-    j["adapt"] = adapt_json(*run.adapt);
-  add_demagnetization(j, run.demagnetization, 3);
-  j["warnings"] = run.warnings;
-  return j;
+  static std::string describe_head(const Run3D& run) {
+    char buf[640];
+    std::snprintf(
+        buf, sizeof buf,
+        "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
+        "solve    order %d, %d unknowns, %s, residual %.2e\n"
+        "energy   %.6g J%s\n",
+        run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+        run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
+        describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
+        run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
+    std::string s = buf;
+    if (run.dofs->n_straightened() > 0)
+      s += "note     " + std::to_string(run.dofs->n_straightened()) +
+           " edge nodes on spheres kept straight: curving them would fold their tets (a finer "
+           "mesh there curves them)\n";
+    for (const auto& note : run.report.notes)
+      s += "note     " + note + "\n";
+    for (const auto& r : run.energy.regions)
+      if (r.nonlinear && r.volume_m3 > 0) {
+        std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
+                      r.peak_B_T);
+        s += buf;
+      }
+    std::snprintf(buf, sizeof buf,
+                  "error    estimated energy error %.3g %% (energy norm %.3g %%, %s, %.2f s)\n",
+                  run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                  run.error_estimate.indicator.c_str(), run.timings.error_estimate);
+    s += buf;
+    if (run.adapt)
+      s += describe_adapt_result(*run.adapt);
+    return s;
+  }
+  static bool forces_per_metre(const Run3D&) { return false; }
+  static const char* flux_unit(const Run3D&) { return "Wb"; }
+  static std::string describe_coils(const Run3D& run) {
+    return magfem::describe_coils(run.coil_results);
+  }
+  static std::string describe_time(const Run3D& run) {
+    char buf[640];
+    std::snprintf(buf, sizeof buf,
+                  "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post "
+                  "%.2f s, total %.2f s, peak %.0f MB\n",
+                  run.timings.mesh, run.timings.assemble, run.timings.solve,
+                  run.report.linear_setup_s, run.timings.postprocess, run.timings.total,
+                  peak_memory_mb());
+    return buf;
+  }
+
+private:
+  Run3D& run_;
+  const RunOverrides& ov_;
+  const MpiWorld& world_;
+};
+
+} // namespace
+
+std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides) {
+  return run_case<Discretisation3D>(std::move(spec), overrides);
+}
+
+nlohmann::ordered_json summary_json_3d(const Run3D& run) {
+  return summary_json<Discretisation3D>(run);
 }
 
 std::vector<std::string> write_outputs_3d(const Run3D& run, const std::filesystem::path& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  OutputStage stage(out_dir);
-  stage_probe_tables(stage, run.probes);
-  if (run.spec.write_vtu) {
-    const VtuMaterials materials = vtu_materials(run.spec.regions);
-    const auto& material_names = materials.names;
-    const auto& material_of_part = materials.of_region;
-    VtuGrid grid =
-        make_vtu_3d(*run.field, run.recovered_B.dof_average(), material_of_part, 0, material_names);
-    // eta_K^2 (J) per cell, in the cells' order (the shell is left out of the grid).
-    VtuArray indicator{"error_indicator", 1, {}};
-    for (std::size_t t = 0; t < run.mesh.n_tets(); ++t)
-      if (!run.problem.is_shell(t))
-        indicator.values.push_back(run.error_estimate.eta2_J[t]);
-    grid.cell_data.push_back(std::move(indicator));
-    add_B_along_M(grid, run.demagnetization, [&](std::size_t t) { return run.problem.is_shell(t); });
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
-  }
-  stage_force_and_section_tables(stage, run.forces, run.sections, run.spec.regions);
-  stage.write_text("summary.json", summary_json_3d(run).dump(2) + "\n");
-  stage.commit();
-  return stage.written();
+  return write_outputs<Discretisation3D>(run, out_dir);
 }
 
 std::string describe_run_3d(const Run3D& run) {
-  char buf[640];
-  std::snprintf(
-      buf, sizeof buf,
-      "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-      "solve    order %d, %d unknowns, %s, residual %.2e\n"
-      "energy   %.6g J%s\n",
-      run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
-      run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-      describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
-      run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
-  std::string s = buf;
-  if (run.dofs->n_straightened() > 0)
-    s += "note     " + std::to_string(run.dofs->n_straightened()) +
-         " edge nodes on spheres kept straight: curving them would fold their tets (a finer "
-         "mesh there curves them)\n";
-  for (const auto& note : run.report.notes)
-    s += "note     " + note + "\n";
-  for (const auto& r : run.energy.regions)
-    if (r.nonlinear && r.volume_m3 > 0) {
-      std::snprintf(buf, sizeof buf, "iron     %-20s peak |B| %.3f T\n", r.name.c_str(),
-                    r.peak_B_T);
-      s += buf;
-    }
-  std::snprintf(buf, sizeof buf,
-                "error    estimated energy error %.3g %% (energy norm %.3g %%, %s, %.2f s)\n",
-                run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
-                run.error_estimate.indicator.c_str(), run.error_estimate_s);
-  s += buf;
-  if (run.adapt)
-    s += describe_adapt_result(*run.adapt);
-  s += describe_forces(run.forces, false);
-  for (const auto& f : run.sections) {
-    std::snprintf(buf, sizeof buf, "section  %-20s flux %.6g Wb, mean Bn %.6g T, mean |B| %.6g T\n",
-                  f.name.c_str(), f.total.flux_Wb, f.total.Bn_avg_T(), f.total.B_avg_T());
-    s += buf;
-  }
-  s += describe_coils(run.coil_results);
-  std::snprintf(buf, sizeof buf,
-                "time     mesh %.2f s, assemble %.2f s, solve %.2f s (set-up %.2f s), post %.2f s, "
-                "total %.2f s, peak %.0f MB\n",
-                run.timings.mesh, run.timings.assemble, run.timings.solve,
-                run.report.linear_setup_s, run.timings.postprocess, run.timings.total,
-                peak_memory_mb());
-  s += buf;
-  for (const auto& w : run.warnings)
-    s += "warning  " + w + "\n";
-  return s;
+  return describe_run<Discretisation3D>(run);
 }
 
 } // namespace magfem

@@ -43,7 +43,6 @@ struct Run3D {
   std::vector<ForceResult> forces;
   CoilResults coil_results;
   ErrorEstimate3D error_estimate;    // energy-norm indicator per tet and in all
-  double error_estimate_s = 0;       // recovery, indicator and force estimates, wall clock
   std::vector<std::string> warnings; // pipeline/result_checks.hpp
   DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;
