@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "casefile/symmetry_cut_factor.hpp"
 #include "core/input_error.hpp"
 
 namespace magfem {
@@ -208,18 +209,7 @@ std::vector<double> region_symmetry_factors_2d(const CaseSpec& spec) {
   const double tol = 1e-9 * g.outer.radius;
   std::vector<double> out;
   for (std::size_t i = 0; i < g.parts.size(); ++i) {
-    double factor = 1;
-    const std::vector<Vec2> xs = interior_points(g, i);
-    for (const SymmetryPlane2D& p : g.planes) {
-      bool below = false, above = false;
-      for (const Vec2& x : xs) {
-        below = below || x[p.axis] < -tol;
-        above = above || x[p.axis] > tol;
-      }
-      if (below && above)
-        factor *= 2;
-    }
-    out.push_back(factor);
+    out.push_back(symmetry_cut_factor(interior_points(g, i), g.planes, tol));
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "casefile/symmetry_cut_factor.hpp"
 #include "core/input_error.hpp"
 #include "mesh/grid_frame3d.hpp"
 #include "sources/coil_field.hpp"
@@ -136,18 +137,7 @@ std::vector<double> region_symmetry_factors(const CaseSpec& spec) {
   std::vector<double> out;
   const double tol = 1e-9 * spec.geometry3d.outer.radius;
   for (const Part3D& part : spec.geometry3d.parts) {
-    double factor = 1;
-    const std::vector<Vec3> xs = interior_points(part);
-    for (const SymmetryPlane3D& p : spec.geometry3d.symmetry) {
-      bool below = false, above = false;
-      for (const Vec3& x : xs) {
-        below = below || x[p.axis] < -tol;
-        above = above || x[p.axis] > tol;
-      }
-      if (below && above)
-        factor *= 2;
-    }
-    out.push_back(factor);
+    out.push_back(symmetry_cut_factor(interior_points(part), spec.geometry3d.symmetry, tol));
   }
   return out;
 }

@@ -23,7 +23,23 @@ def _count(name, value):
     return int(value)
 
 
-class SweepResult(dict):
+class _Table(dict):
+    """A result table: a dict of numpy columns in the command line's CSV order."""
+
+    @property
+    def columns(self):
+        """The column names, in the CSV's order."""
+        return list(self.keys())
+
+    def csv(self):
+        """The CSV as the command line writes it (ten significant digits)."""
+        lines = [",".join(self.columns)]
+        for row in zip(*self.values()):
+            lines.append(",".join("%.10g" % v for v in row))
+        return "\n".join(lines) + "\n"
+
+
+class SweepResult(_Table):
     """A sweep's table: a dict of numpy columns named as the command line's sweep.csv
     (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm, Tx,
     ..., Fz`` for 3D translate sweeps; ``position_mm, Fz_N`` for axisymmetric ones), successful
@@ -39,18 +55,6 @@ class SweepResult(dict):
         self.method = summary["method"]
         self.positions = summary["positions"]
         self.failed = summary["failed_positions"]
-
-    @property
-    def columns(self):
-        """The column names, in sweep.csv's order."""
-        return list(self.keys())
-
-    def csv(self):
-        """sweep.csv as the command line writes it (ten significant digits)."""
-        lines = [",".join(self.columns)]
-        for row in zip(*self.values()):
-            lines.append(",".join("%.10g" % v for v in row))
-        return "\n".join(lines) + "\n"
 
     def __repr__(self):
         return "<magfem.SweepResult %s: %d positions, %d failed>" % (
@@ -123,7 +127,7 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     return SweepResult(out["columns"], json.loads(out["summary"]))
 
 
-class StudyResult(dict):
+class StudyResult(_Table):
     """A study's table: a dict of numpy columns named as the command line's study.csv (one per
     parameter, in the order given, then one per objective: ``peak_torque_Nm``,
     ``torque_at_90deg_Nm``, N m), successful designs only, the last parameter varying fastest.
@@ -138,18 +142,6 @@ class StudyResult(dict):
         self.method = summary["method"]
         self.failed = summary["failed_designs"]
         self.failures = summary.get("failures", [])
-
-    @property
-    def columns(self):
-        """The column names, in study.csv's order."""
-        return list(self.keys())
-
-    def csv(self):
-        """study.csv as the command line writes it (ten significant digits)."""
-        lines = [",".join(self.columns)]
-        for row in zip(*self.values()):
-            lines.append(",".join("%.10g" % v for v in row))
-        return "\n".join(lines) + "\n"
 
     def __repr__(self):
         return "<magfem.StudyResult %s: %d designs, %d failed>" % (
