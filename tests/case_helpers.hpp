@@ -31,6 +31,22 @@ mesh: {size: 8.0, chord_tolerance: 0.002}
 solver: {order: 2}
 )";
 
+// The uniformly magnetized sphere of examples/3d/magnetized_sphere.yaml (radius 10 mm, B_r
+// 1 T, mu_r 1, magnetized along +z) with its own mesh size (mm): the case up to its
+// boundary, to which a test appends boundary, mesh, solver and what it checks. Exact: B
+// inside (2/3) B_r, outside a dipole, energy mu0 M^2 V / 6.
+inline std::string magnetized_sphere_case3d(const std::string& mesh_size) {
+  return R"(
+dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
+regions:
+  - {name: sphere, shape: spherical_segment, r_inner: 0, r_outer: 10, material: pm,
+     magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: )" +
+         mesh_size + "}\n";
+}
+
 inline std::string write_temp_case(const std::string& name, const std::string& text) {
   const auto dir = std::filesystem::temp_directory_path() / "magfem_tests";
   std::filesystem::create_directories(dir);

@@ -27,15 +27,8 @@ namespace {
 
 // examples/3d/magnetized_sphere_adaptive.yaml with the energy alone as the named quantity:
 // a = 10 mm, B_r = 1 T, mu_r 1, open boundary at 25 mm; 22k P2 unknowns on the first pass.
-const char* coarse_sphere_case = R"(
-dimension: 3
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
-regions:
-  - {name: sphere, shape: spherical_segment, r_inner: 0, r_outer: 10, material: pm,
-     magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: 4}
-boundary: {type: open, radius: 25, shell_ratio: 1.5}
+const std::string coarse_sphere_case =
+    test::magnetized_sphere_case3d("4") + R"(boundary: {type: open, radius: 25, shell_ratio: 1.5}
 mesh: {size: 8, chord_tolerance: 0.5}
 solver: {order: 2}
 adapt: {accuracy_pct: 0.05, quantities: [energy], max_passes: 4}
@@ -51,8 +44,11 @@ double true_error_pct(double energy) {
   return 100 * std::abs(energy - exact_sphere_energy()) / exact_sphere_energy();
 }
 
+// One file per test: ctest runs this file's tests at once, and a shared name let one test
+// read the file while another rewrote it ("the file is empty").
 CaseSpec sphere_spec() {
-  return read_case(test::write_temp_case("adapt3d_sphere.yaml", coarse_sphere_case));
+  const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return read_case(test::write_temp_case("adapt3d_sphere_" + name + ".yaml", coarse_sphere_case));
 }
 
 } // namespace

@@ -28,15 +28,8 @@ namespace {
 
 // examples/3d/magnetized_sphere.yaml, coarser (seconds), with points on both sides of x = 0
 // and z = 0 inside and outside the sphere.
-const char* sphere_case = R"(
-dimension: 3
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.0, mu_r: 1.0}
-regions:
-  - {name: sphere, shape: spherical_segment, r_inner: 0, r_outer: 10, material: pm,
-     magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: 3}
-boundary: {type: open, radius: 25, shell_ratio: 1.5SYMMETRY}
+const std::string sphere_case = test::magnetized_sphere_case3d("3") +
+                                R"(boundary: {type: open, radius: 25, shell_ratio: 1.5SYMMETRY}
 mesh: {size: 5, chord_tolerance: 0.1}
 solver: {order: 2}
 probes:
