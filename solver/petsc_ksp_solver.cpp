@@ -18,6 +18,7 @@
 #include "core/progress.hpp"
 #include "solver/galerkin_product.hpp"
 #include "solver/simultaneous_pcg.hpp"
+#include "solver/singleton_session_dir.hpp"
 
 namespace magfem::petsc_module {
 namespace {
@@ -82,6 +83,9 @@ public:
   PetscSession& operator=(const PetscSession&) = delete;
 
 private:
+  // Declared first: created before MPI starts, removed after PetscFinalize (members are
+  // destroyed after the destructor's body).
+  SingletonSessionDir session_dir_;
   bool owned_ = false;
 };
 
