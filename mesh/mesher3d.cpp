@@ -187,8 +187,12 @@ bool is_air_part(const Geometry3D& geo, const GridFace3D& face) {
 }
 
 // Air gaps the mesh cannot resolve: per pair of parts (lower index first), the narrowest such
-// gap (m) and the element size across it (m).
-using UnresolvedGaps = std::map<std::pair<int, int>, std::pair<double, double>>;
+// gap (m), the element size across it (m), and the middle of the gap where it is narrowest.
+struct UnresolvedGap {
+  double width = 0, across = 0;
+  Vec3 middle = Vec3::Zero();
+};
+using UnresolvedGaps = std::map<std::pair<int, int>, UnresolvedGap>;
 
 // Adds point sources for every face sample (its intrinsic size) and for narrow air gaps.
 // Gaps across which the size stays above the gap width (fewer than one element across: a
@@ -247,8 +251,8 @@ void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
         const int them = is_air(other.label_low) ? other.label_high : other.label_low;
         if (them >= 0 && them != self) {
           auto& seen = (*unresolved)[{std::min(self, them), std::max(self, them)}];
-          if (seen.first == 0 || w < seen.first)
-            seen = {w, across};
+          if (seen.width == 0 || w < seen.width)
+            seen = {w, across, x + n * (w / 2)};
         }
       }
     }
@@ -518,14 +522,16 @@ std::vector<std::string> unresolved_gap_warnings(const Geometry3D& geo, double s
   std::vector<std::string> out;
   const int layers = std::max(1, geo.options.gap_layers);
   for (const auto& [pair, gap] : unresolved) {
+    if (gap.across <= gap.width)
+      continue;
     char text[400];
     std::snprintf(text, sizeof text,
                   "the %.3g mm air gap between parts '%s' and '%s' has elements of about %.3g "
                   "mm across it, fewer than one layer (gap_layers %d at mesh scale %.3g): the "
                   "field in the gap is not resolved; use a mesh scale of at most %d or a smaller "
                   "mesh size near the gap",
-                  gap.first * 1e3, geo.parts[static_cast<std::size_t>(pair.first)].name.c_str(),
-                  geo.parts[static_cast<std::size_t>(pair.second)].name.c_str(), gap.second * 1e3,
+                  gap.width * 1e3, geo.parts[static_cast<std::size_t>(pair.first)].name.c_str(),
+                  geo.parts[static_cast<std::size_t>(pair.second)].name.c_str(), gap.across * 1e3,
                   layers, scale, layers);
     out.emplace_back(text);
   }
@@ -661,6 +667,13 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
 
   UnresolvedGaps unresolved;
   const SizeField3D field = build_size_field(dec, rules, fs, soup, refine, &unresolved);
+  // An adaptive pass's sizes (options.refine_sizes) may resolve a gap that the case's sizes
+  // at this --mesh-scale leave coarse. The field holds the gap's own sources shrunk by
+  // gap_source_factor (what TetGen delivers for them is their size): undone here to compare
+  // like with like.
+  if (geo.options.refine_sizes)
+    for (auto& [pair, gap] : unresolved)
+      gap.across = std::min(gap.across, field(gap.middle) / gap_source_factor);
   if (check)
     check(estimate_mesh_size(geo, rules, field),
           [&](double factor) { return estimate_scaled(geo, refine, factor).tetrahedra; });

@@ -632,11 +632,18 @@ TEST(Mesher3D, MeshesBuiltOnTwoThreadsAtOnceEqualTheSerialMesh) {
 // Issue 36: `--mesh-scale 2.5` with `gap_layers: 2` put elements larger than the gap across
 // it, silently. Two spheres 1 mm apart: at scale 1 the gap has its 2 layers and nothing is
 // said; at 2.5 (1.25 mm across a 1 mm gap) the mesh warns, naming the gap and both parts.
+// An adaptive pass that asks for small elements in the gap (refine_sizes) resolves it: no
+// warning then, although the case's own sizes at that scale would leave it coarse.
 TEST(Mesher3D, GapWithFewerThanOneElementAcrossIsWarnedAbout) {
-  auto warnings = [](double scale) {
+  auto warnings = [](double scale, double adaptive_h = 0) {
     Geometry3D g = domain(20 * mm, 8 * mm, 0.1 * mm);
     g.options.gap_layers = 2;
     g.options.size_scale = scale;
+    if (adaptive_h > 0) // sources along the gap's axis, from one sphere to the other
+      g.options.refine_sizes = std::make_shared<const std::vector<SizeSample3D>>(
+          std::vector<SizeSample3D>{{Vec3(6 * mm, 0, 0), adaptive_h},
+                                    {Vec3(6.5 * mm, 0, 0), adaptive_h},
+                                    {Vec3(7 * mm, 0, 0), adaptive_h}});
     g.parts.push_back(segment("ball", 0, 6 * mm, 0, pi, 0, 2 * pi));
     Part3D p = segment("other", 0, 5 * mm, 0, pi, 0, 2 * pi);
     p.placement.translation = Eigen::Vector3d(12 * mm, 0, 0); // 1 mm from "ball"
@@ -648,6 +655,8 @@ TEST(Mesher3D, GapWithFewerThanOneElementAcrossIsWarnedAbout) {
   ASSERT_EQ(coarse.size(), 1u);
   for (const char* text : {"1 mm air gap", "'ball'", "'other'", "gap_layers 2", "scale 2.5"})
     EXPECT_NE(coarse[0].find(text), std::string::npos) << text << " in: " << coarse[0];
+  EXPECT_TRUE(warnings(2.5, 0.4 * mm).empty());
+  EXPECT_EQ(warnings(2.5, 3 * mm).size(), 1u); // adaptive sizes coarser than the gap: still
 }
 
 } // namespace
