@@ -306,8 +306,15 @@ int run_sweep(const Args& args) {
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows, o.motion));
   std::string why;
+  magfem::SweepPlotLabels labels;
+  if (planar) { // about the sweep's point, per metre of length unless the case has a stack
+    const std::string per = spec.stack_length > 0 ? "" : "/m";
+    labels.torque = std::string("torque about the point") +
+                    (translate ? " moved with the group" : "") + " (N m" + per + ")";
+    labels.force = "force on the group (N" + per + ")";
+  }
   const bool plotted = magfem::plot_sweep(rows, spec.file + (o.analytic ? " (analytic)" : " (FE)"),
-                                          stage.path_for("sweep.png"), why, o.motion);
+                                          stage.path_for("sweep.png"), why, o.motion, labels);
   if (!plotted)
     std::cerr << "magfem: note: no sweep.png: " << why << "\n";
   nlohmann::ordered_json j;
