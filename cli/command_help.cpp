@@ -78,8 +78,10 @@ constexpr std::array<CommandHelp, 10> commands{{
      "                    [--max-memory GB] [--resume] [--quiet] [--out DIR]\n"
      "       magfem sweep CASE.yaml --move GROUP --axis x|y|z|ax,ay,az\n"
      "                    --positions START:STEP:END|A,B,C [--analytic] [--order 1|2]\n"
-     "                    [--mesh-scale S] [--jobs N] [--resume] [--quiet] [--out DIR]\n"
-     "                    (3D and axisymmetric cases; axisymmetric: --axis z, FE only)",
+     "                    [--point px,py,0] [--mesh-scale S] [--jobs N] [--resume]\n"
+     "                    [--quiet] [--out DIR]\n"
+     "                    (3D, planar and axisymmetric cases; planar: --axis x|y|dx,dy,\n"
+     "                    FE only; axisymmetric: --axis z, FE only)",
      "torque and force while a group of parts rotates or moves along a line",
      "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
@@ -96,6 +98,10 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  about --point (default the origin; px,py,0) and takes the torque about it (Tz)\n"
      "  and the force on the group from the Lorentz force on its coils, else the case's\n"
      "  one `band` (or `circle`) force around it: cogging torque against rotor angle.\n"
+     "  Planar 2D cases: --move GROUP --axis x|y|dx,dy translates those regions in the\n"
+     "  plane by the positions (mm), their magnetizations and the `circle` or `band`\n"
+     "  force around them with them, and writes sweep.csv with position_mm in place of\n"
+     "  angle_deg: force per metre against gap, Tz about --point moved with the group.\n"
      "  3D cases: --move translates GROUP along --axis by the positions (mm) and writes\n"
      "  sweep.csv with position_mm in place of angle_deg (force against gap); the stress\n"
      "  sphere about the origin is chosen mid-gap at each position (--analytic as above).\n"

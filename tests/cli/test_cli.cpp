@@ -140,7 +140,7 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
   const std::string c = magfem::test::example("2d/diametric_cylinder.yaml");
   const std::string o = " --out " + out.string();
   const std::string s3 = magfem::test::example("3d/two_spheres.yaml");
-  const std::array<std::pair<std::string, std::string>, 13> cases{{
+  const std::array<std::pair<std::string, std::string>, 14> cases{{
       {"solve " + c + o + " --order 3", "--order"},
       {"solve " + c + o + " --order 1.5", "--order"}, // was truncated to 1
       {"solve " + c + o + " --order 0", "--order"},   // was "as in the case", silently
@@ -150,8 +150,9 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
       {"solve " + c + o + " --frobnicate 2", "--frobnicate"},
       {"solve" + o, "wrong number of arguments"},
       {"sweep " + c + o + " --rotate arm --axis z --angles 0:10:20 --jobs 0", "--jobs"},
-      // A planar case turns; a translation is for axisymmetric and 3D cases.
+      // A planar case moves in its plane, and only groups it has.
       {"sweep " + c + o + " --move magnet --axis x --positions 0,1", "--move"},
+      {"sweep " + c + o + " --move magnet --axis z --positions 0,1", "--axis"},
       {"sweep " + s3 + o + " --move arm --rotate arm --axis z --positions 0,1", "not both"},
       {"sweep " + s3 + o + " --move arm --axis z --angles 0,1", "--angles"},
       {"transmogrify " + c, "unknown command"},
