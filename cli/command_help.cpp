@@ -60,7 +60,7 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  guard) and stops. Prints per region its elements, area (planar) or volume and the\n"
      "  shortest and longest element edge; writes into DIR (default out/<case>_mesh):\n"
      "  summary.json (elements, nodes, unknowns at the order, regions, mesh quality, the\n"
-     "  mesher's warnings), mesh.vtu (region_id per cell, for ParaView) and mesh.png (2D:\n"
+     "  mesher's warnings), mesh.vtu (region_id and region name per cell) and mesh.png (2D:\n"
      "  the mesh coloured by region; 3D: its cut by the plane through the origin normal to\n"
      "  --plane, default y, i.e. the xz plane). The open boundary's shell is left out.\n"
      "  --order 1|2       the order whose unknowns are counted\n"
