@@ -178,9 +178,14 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  turns that off.\n"
      "  --coil-pitch START:STEP:END (deg): the thesis's coil-pitch study (sec. 5.3) instead\n"
      "  of the case's coils: coil_pitch.csv (mean copper loss against pitch), coil_pitch.png.\n"},
-    {"materials", "magfem materials [--export NAME]",
-     "list the bundled materials, or write one's B-H table as CSV",
-     "  Without options: one line per bundled entry (name, kind, other names).\n"
+    {"materials", "magfem materials [NAME | --export NAME]",
+     "list the bundled materials, show one, or write one's B-H table as CSV",
+     "  Without options: one line per bundled entry (name, kind, other names; magnets their\n"
+     "  B_r and the knee data the demagnetization check uses, H_cJ and its temperature\n"
+     "  coefficient).\n"
+     "  NAME            the entry in full: B_r, mu_r, H_cJ with their temperature\n"
+     "                  coefficients and the knee B_r(T) - mu0 mu_r H_cJ(T) from 20 to\n"
+     "                  150 C (magnets), the B-H table's extent (soft), and the source.\n"
      "  --export NAME   writes the B-H table of the soft entry NAME to stdout in the format\n"
      "                  a case's `bh_file:` reads (a '#' line with its source, the header\n"
      "                  H_Apm,B_T, then H in A/m and B in T), e.g.\n"
