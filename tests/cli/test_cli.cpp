@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -134,6 +135,43 @@ TEST(Cli, SolveWritesEveryOutputAndTheVtuHoldsTheField) {
   EXPECT_NEAR(mean_hx / magnet_cells, -0.5, 5e-4);
   std::printf("magnet cells %d: max |B - B_exact| %.2e T, mean Bx %.6f T\n", magnet_cells,
               max_deviation, mean_bx / magnet_cells);
+}
+
+// The console's "wrote" line names every file the solve left in its folder, forces.csv too
+// (issue 34 item 9: it was missing), and nothing it did not write.
+TEST(Cli, WroteLineListsEveryFileInTheOutputFolder) {
+  const auto out = fresh_dir("wrote_line");
+  const fs::path case_file = out.parent_path() / "wrote_line.yaml";
+  std::ofstream(case_file) << R"(unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
+  fe: {kind: linear, mu_r: 1000}
+regions:
+  - {name: magnet, shape: disk, center: [-10, 0], radius: 3, material: pm,
+     magnetization: {type: parallel, angle: 0}}
+  - {name: iron, shape: disk, center: [0, 0], radius: 4, material: fe}
+boundary: {type: open, radius: 30}
+mesh: {size: 3}
+probes:
+  - {name: axis, type: line, start: [-20, 0], end: [20, 0], points: 11}
+forces:
+  - {name: on_iron, type: circle, radius: 5.5}
+)";
+  const auto r = run("solve " + case_file.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string prefix = "wrote    " + out.string() + "/";
+  const auto at = r.out.find(prefix);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const auto begin = at + prefix.size();
+  std::stringstream listed(r.out.substr(begin, r.out.find('\n', begin) - begin));
+  std::set<std::string> named, present;
+  for (std::string name; std::getline(listed, name, ',');)
+    named.insert(name.substr(name.find_first_not_of(' ')));
+  for (const auto& f : fs::directory_iterator(out))
+    if (f.path().filename().string()[0] != '.') // the output stage's own marker
+      present.insert(f.path().filename().string());
+  EXPECT_EQ(named, present) << r.out;
+  EXPECT_TRUE(named.count("forces.csv")) << r.out;
 }
 
 TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
