@@ -174,8 +174,8 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
-     "  FE runs show the orientation, stage and solver residual on stderr; --quiet\n"
-     "  turns that off.\n"
+     "  FE runs show the orientation, stage and solver residual on stderr, --analytic\n"
+     "  the charge model's share of points done; --quiet turns that off.\n"
      "  --coil-pitch START:STEP:END (deg): the thesis's coil-pitch study (sec. 5.3) instead\n"
      "  of the case's coils: coil_pitch.csv (mean copper loss against pitch), coil_pitch.png.\n"},
     {"materials", "magfem materials [NAME | --export NAME]",
