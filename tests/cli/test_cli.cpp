@@ -54,18 +54,9 @@ std::string read_text(const fs::path& p) {
 }
 
 // A 2D case with nonlinear iron that Newton cannot finish in one iteration.
-const char* nonlinear_case = R"(title: magnet and nonlinear iron disk
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
-regions:
-  - {name: magnet, shape: disk, center: [-6, 0], radius: 4, material: pm,
-     magnetization: {type: parallel, angle: 0}}
-  - {name: iron, shape: disk, center: [6, 0], radius: 5, material: steel_1010}
-boundary: {type: open, radius: 30}
-mesh: {size: 3}
-solver: {order: 1, max_iterations: 1, tolerance: 1e-12}
-)";
+const std::string nonlinear_case = "title: magnet and nonlinear iron disk\n" +
+                                   magfem::test::magnet_and_iron_disks_case2d("steel_1010") +
+                                   "solver: {order: 1, max_iterations: 1, tolerance: 1e-12}\n";
 
 } // namespace
 
@@ -142,20 +133,11 @@ TEST(Cli, SolveWritesEveryOutputAndTheVtuHoldsTheField) {
 TEST(Cli, WroteLineListsEveryFileInTheOutputFolder) {
   const auto out = fresh_dir("wrote_line");
   const fs::path case_file = out.parent_path() / "wrote_line.yaml";
-  std::ofstream(case_file) << R"(unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
-  fe: {kind: linear, mu_r: 1000}
-regions:
-  - {name: magnet, shape: disk, center: [-10, 0], radius: 3, material: pm,
-     magnetization: {type: parallel, angle: 0}}
-  - {name: iron, shape: disk, center: [0, 0], radius: 4, material: fe}
-boundary: {type: open, radius: 30}
-mesh: {size: 3}
-probes:
+  std::ofstream(case_file) << magfem::test::magnet_and_iron_disks_case2d("steel_1010") +
+                                  R"(probes:
   - {name: axis, type: line, start: [-20, 0], end: [20, 0], points: 11}
 forces:
-  - {name: on_iron, type: circle, radius: 5.5}
+  - {name: on_iron, type: circle, center: [6, 0], radius: 5.5}
 )";
   const auto r = run("solve " + case_file.string() + " --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.out;

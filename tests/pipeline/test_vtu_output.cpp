@@ -136,19 +136,9 @@ solver: {order: 2}
 
 // A planar case with an open boundary: the same for triangles (A_z, B per point).
 TEST(VtuOutput, PlanarOpenBoundaryHasIntIdsNamesAndNoShellNodes) {
-  const auto run = run_case_2d(read_case_text(R"(dimension: 2
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.0, mu_r: 1.05}
-regions:
-  - {name: magnet, shape: disk, center: [-6, 0], radius: 4, material: pm,
-     magnetization: {type: parallel, angle: 0}}
-  - {name: iron, shape: disk, center: [6, 0], radius: 5, material: steel_1010}
-boundary: {type: open, radius: 30}
-mesh: {size: 3}
-solver: {order: 2}
-)",
-                                              "vtu_planar.yaml"));
+  const auto run = run_case_2d(
+      read_case_text(test::magnet_and_iron_disks_case2d("steel_1010") + "solver: {order: 2}\n",
+                     "vtu_planar.yaml"));
   const auto dir = std::filesystem::temp_directory_path() / "magfem_tests" / "vtu_planar";
   std::filesystem::remove_all(dir);
   write_outputs_2d(*run, dir);
