@@ -60,7 +60,7 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  guard) and stops. Prints per region its elements, area (planar) or volume and the\n"
      "  shortest and longest element edge; writes into DIR (default out/<case>_mesh):\n"
      "  summary.json (elements, nodes, unknowns at the order, regions, mesh quality, the\n"
-     "  mesher's warnings), mesh.vtu (region_id per cell, for ParaView) and mesh.png (2D:\n"
+     "  mesher's warnings), mesh.vtu (region_id and region name per cell) and mesh.png (2D:\n"
      "  the mesh coloured by region; 3D: its cut by the plane through the origin normal to\n"
      "  --plane, default y, i.e. the xz plane). The open boundary's shell is left out.\n"
      "  --order 1|2       the order whose unknowns are counted\n"
@@ -180,13 +180,18 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
-     "  FE runs show the orientation, stage and solver residual on stderr; --quiet\n"
-     "  turns that off.\n"
+     "  FE runs show the orientation, stage and solver residual on stderr, --analytic\n"
+     "  the charge model's share of points done; --quiet turns that off.\n"
      "  --coil-pitch START:STEP:END (deg): the thesis's coil-pitch study (sec. 5.3) instead\n"
      "  of the case's coils: coil_pitch.csv (mean copper loss against pitch), coil_pitch.png.\n"},
-    {"materials", "magfem materials [--export NAME]",
-     "list the bundled materials, or write one's B-H table as CSV",
-     "  Without options: one line per bundled entry (name, kind, other names).\n"
+    {"materials", "magfem materials [NAME | --export NAME]",
+     "list the bundled materials, show one, or write one's B-H table as CSV",
+     "  Without options: one line per bundled entry (name, kind, other names; magnets their\n"
+     "  B_r and the knee data the demagnetization check uses, H_cJ and its temperature\n"
+     "  coefficient).\n"
+     "  NAME            the entry in full: B_r, mu_r, H_cJ with their temperature\n"
+     "                  coefficients and the knee B_r(T) - mu0 mu_r H_cJ(T) from 20 to\n"
+     "                  150 C (magnets), the B-H table's extent (soft), and the source.\n"
      "  --export NAME   writes the B-H table of the soft entry NAME to stdout in the format\n"
      "                  a case's `bh_file:` reads (a '#' line with its source, the header\n"
      "                  H_Apm,B_T, then H in A/m and B in T), e.g.\n"
