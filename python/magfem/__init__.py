@@ -3,7 +3,8 @@
 So far: ``__version__``, ``Case`` (load, from_dict, with_params, to_yaml: the case read and
 validated by the same reader as ``magfem solve``), ``Case.solve`` returning a ``Solution``
 (the same in-process pipeline as ``magfem solve``), ``analytic``, ``sweep`` (``magfem sweep``
-in-process, numpy columns), ``study``, ``actuator``, ``validate`` and the exception types.
+in-process, numpy columns), ``study``, ``optimize``, ``actuator``, ``validate`` and the
+exception types.
 """
 import contextlib
 import numbers
@@ -12,6 +13,7 @@ import warnings
 
 from . import _core
 from ._core import __version__
+from .optimize import OptimizeResult, optimize
 from .solution import AnalyticSolution, Mesh, Solution
 from .studies import (ActuatorResult, StudyResult, SweepResult, ValidationResult, actuator,
                       study, sweep, validate)
@@ -153,6 +155,7 @@ def analytic(case, model="charge", tolerance=1e-6, n_max=150):
     return AnalyticSolution(core)
 
 
-__all__ = ["__version__", "ActuatorResult", "AdaptWarning", "AnalyticSolution", "Case", "InputError", "Mesh", "Solution",
-           "SolveError", "StudyResult", "SweepResult", "ValidationResult", "actuator", "analytic",
-           "study", "sweep", "validate"]
+__all__ = ["__version__", "ActuatorResult", "AdaptWarning", "AnalyticSolution", "Case",
+           "InputError", "Mesh", "OptimizeResult", "Solution", "SolveError", "StudyResult",
+           "SweepResult", "ValidationResult", "actuator", "analytic", "optimize", "study",
+           "sweep", "validate"]
