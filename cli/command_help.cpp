@@ -154,7 +154,8 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  inequality (<= or >=) between expressions of the --vary names in their own units,\n"
      "  e.g. \"R_out - R_in >= 10\"; exit 3 if no point satisfies it. --verify-fe solves\n"
      "  the optimum by FE (mesh as set by --mesh-scale/--order) and reports the FE value\n"
-     "  beside the analytic one. Writes summary.json into DIR (default out/<case>_optimize).\n"},
+     "  beside the analytic one. Writes summary.json and history.csv (every evaluation:\n"
+     "  the variables and the objective) into DIR (default out/<case>_optimize).\n"},
     {"actuator",
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"

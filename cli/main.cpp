@@ -80,16 +80,8 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
 
 // The command line's --accuracy / --max-passes / --max-unknowns over the case file's adapt:.
 void apply_adapt_options(const Args& args, magfem::CaseSpec& spec) {
-  if (args.accuracy_pct)
-    spec.adapt.accuracy_pct = *args.accuracy_pct;
-  if ((args.max_passes || args.max_unknowns) && !spec.adapt.enabled())
-    throw magfem::InputError("<command line>", 0,
-                             args.max_passes ? "--max-passes" : "--max-unknowns",
-                             "applies to adaptive solves: give --accuracy or an adapt: section");
-  if (args.max_passes)
-    spec.adapt.max_passes = *args.max_passes;
-  if (args.max_unknowns)
-    spec.adapt.max_unknowns = *args.max_unknowns;
+  magfem::apply_adapt_overrides(spec.adapt, {args.accuracy_pct, args.max_unknowns, args.max_passes},
+                                {"<command line>", "--accuracy", "--max-passes", "--max-unknowns"});
 }
 
 int run_solve(const Args& args) {
