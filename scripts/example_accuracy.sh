@@ -65,9 +65,9 @@ echo "FE sweep: $((end - start)) s wall on $(nproc) cores${unknowns:+, $unknowns
   echo "## examples/3d/compensator_adaptive.yaml"
   echo
   echo "The torque on the inner magnet at 90 deg against the charge model's exact -T_y of the"
-  echo "outer one (\\`magfem sweep compensator_table42.yaml --rotate outer --axis y --angles 90"
-  echo "--analytic\\`); adaptive passes (\\`magfem solve\\`, the example as it is) and uniform"
-  echo "refinement of the same first mesh (its \\`adapt:\\` removed, \\`--mesh-scale\\` 1, 0.8, 0.65)."
+  echo 'outer one (`magfem sweep compensator_table42.yaml --rotate outer --axis y --angles 90'
+  echo '--analytic`); adaptive passes (`magfem solve`, the example as it is) and uniform'
+  echo 'refinement of the same first mesh (its `adapt:` removed, `--mesh-scale` 1, 0.8, 0.65).'
   echo
 } >> "$out/doc.md"
 case=examples/3d/compensator_adaptive.yaml
