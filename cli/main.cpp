@@ -156,30 +156,36 @@ template <class Row> double position_time(const std::vector<Row>& rows) {
   return total_s;
 }
 
-// Under mpirun a sweep's positions are dealt to the processes (studies/position_runner.hpp).
-// Each process takes its share of its machine's cores: that many positions at once unless
-// --jobs says otherwise, and that many threads in each position's element loops unless
-// MAGFEM_THREADS says otherwise (set here, before any of this process's threads reads it).
-// Said once, by rank 0.
-magfem::MpiWorld sweep_world(const Args& args) {
+// Under mpirun a sweep's positions, a study's designs and validate's entries are dealt to the
+// processes (studies/position_runner.hpp). Each process takes its share of its machine's
+// cores: that many items at once unless --jobs says otherwise, and that many threads in each
+// solve's element loops unless MAGFEM_THREADS says otherwise (set here, before any of this
+// process's threads reads it). Said once, by rank 0. `at_once`: what a process does at
+// once, with N for the number (--jobs, else the process's cores).
+magfem::MpiWorld dealt_world(const std::string& command, const std::string& items, int jobs,
+                             std::string at_once) {
   const magfem::MpiWorld world = magfem::join_mpi_world(true); // started by start_mpi_or_refuse
   if (!world.distributed())
     return world;
   const int threads = magfem::threads_per_process(world);
   setenv("MAGFEM_THREADS", std::to_string(threads).c_str(), 0);
+  at_once.replace(at_once.find('N'), 1, std::to_string(jobs > 0 ? jobs : threads));
   if (world.is_root())
     std::fprintf(stderr,
-                 "magfem: sweep on %d processes (%d on this machine), positions dealt one at a "
-                 "time: each process solves %d at once (%s) with %d element-loop threads "
-                 "(MAGFEM_THREADS)%s\n",
-                 world.size, world.size_on_node, args.jobs > 0 ? args.jobs : threads,
-                 args.jobs > 0 ? "--jobs" : "its share of the machine's cores",
+                 "magfem: %s on %d processes (%d on this machine), %s dealt one at a time: each "
+                 "process %s (%s) with %d element-loop threads (MAGFEM_THREADS)%s\n",
+                 command.c_str(), world.size, world.size_on_node, items.c_str(), at_once.c_str(),
+                 jobs > 0 ? "--jobs" : "its share of the machine's cores",
                  magfem::available_threads(),
                  world.any_thread_calls_mpi
                      ? ""
                      : "; MPI gave no MPI_THREAD_MULTIPLE: rank 0 only deals, and the others "
-                       "solve one position at a time");
+                       "solve one at a time");
   return world;
+}
+
+magfem::MpiWorld sweep_world(const Args& args) {
+  return dealt_world("sweep", "positions", args.jobs, "solves N at once");
 }
 
 // The checkpoint of a sweep: rank 0's alone under mpirun (the other processes send it their
@@ -345,6 +351,17 @@ int run_sweep(const Args& args) {
   return magfem::code_of_root(failed ? 3 : 0);
 }
 
+// Under mpirun the designs are dealt to the processes, each design's sweep on its process's
+// threads (studies/study.hpp).
+int run_study(const std::vector<std::string>& arguments) {
+  magfem::StudyOptions options = magfem::parse_study_options(arguments);
+  options.world = dealt_world("study", "designs", options.sweep.jobs,
+                              "sweeps one design at a time, its positions N at once");
+  if (!options.world.is_root())
+    options.quiet = true;
+  return magfem::run_study_command(options);
+}
+
 int run_compare(const Args& args) {
   const auto ref = magfem::read_probe_csv(args.positional[0]);
   const auto test = magfem::read_probe_csv(args.positional[1]);
@@ -412,20 +429,29 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
                            "unknown command '" + command + "'\n" + magfem::usage_overview());
 }
 
-// Under mpirun `solve` distributes one case (run_solve starts MPI) and `sweep` deals its
-// positions to the processes: MPI starts here, with any thread allowed to call it (one
-// thread of rank 0 deals while others solve), before the options are read, so that a bad
-// option ends every process alike (fail()). Any other command with several processes would
-// run once per process, each writing the same outputs.
+// Under mpirun `solve` distributes one case (run_solve starts MPI); `sweep`, `study`,
+// `validate` and `actuator --verify` deal their positions, designs, entries or orientations to
+// the processes: MPI starts here, with any thread allowed to call it (one thread of rank 0
+// deals while others solve), before the options are read, so that a bad option ends every
+// process alike (fail()). Any other command with several processes would run once per
+// process, each writing the same outputs.
 void start_mpi_or_refuse(int argc, char** argv) {
   if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
     return;
-  const bool sweep = std::strcmp(argv[1], "sweep") == 0;
-  if (magfem::join_mpi_world(sweep).distributed() && !sweep)
-    throw magfem::InputError("<command line>", 0, "",
-                             std::string("only `magfem solve` and `magfem sweep` run "
-                                         "distributed; run `magfem ") +
-                                 argv[1] + "` without mpirun");
+  const std::string command = argv[1];
+  const bool dealt = command == "sweep" || command == "study";
+  if (!magfem::join_mpi_world(dealt).distributed() || dealt)
+    return;
+  if (command == "optimize")
+    throw magfem::InputError(
+        "<command line>", 0, "",
+        "`magfem optimize` is sequential (each step is chosen from the designs before it), so "
+        "processes would have nothing to share; run it without mpirun, or evaluate a grid of "
+        "designs across processes with `mpirun -n N magfem study`");
+  throw magfem::InputError("<command line>", 0, "",
+                           "only `magfem solve`, `sweep` and `study` run distributed; run "
+                           "`magfem " +
+                               command + "` without mpirun");
 }
 
 // The error line on stderr and the exit code. Under mpirun with several processes every
@@ -465,8 +491,7 @@ int main(int argc, char** argv) {
       return magfem::run_actuator_command(
           magfem::parse_actuator_options(std::vector<std::string>(argv + 2, argv + argc)));
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
-      return magfem::run_study_command(
-          magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
+      return run_study(std::vector<std::string>(argv + 2, argv + argc));
     const Args args = magfem::parse_command_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);

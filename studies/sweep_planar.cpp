@@ -135,7 +135,7 @@ std::vector<SweepRow> run_sweep_planar(const CaseSpec& spec, const SweepOptions&
   if (jobs)
     jobs->requested = jobs->used = workers;
   return run_positions<SweepRow>(
-      o.angles_deg, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      o.angles_deg, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json, {}},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, o, angle_deg); }, progress,
       o.world, o.stop);
 }

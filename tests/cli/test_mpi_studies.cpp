@@ -1,0 +1,204 @@
+// `mpirun -n 2|3 magfem study` (designs dealt to the processes, rank 0 writing) against the
+// serial run with --jobs 1: the same study.csv byte for byte (and plot), the same summary.json
+// but for the times, the same exit code (3 when designs fail) from every process, for an
+// analytic grid (harmonic form, milliseconds a design) and a coarse FE one; --resume under
+// mpirun takes the checkpoint's designs and evaluates only the others; a bad option or group
+// ends every process with exit 2 and nothing written, never a hang; optimize is refused with
+// its reason.
+//
+// Byte comparison is right here (not a tolerance): each design is the same deterministic
+// computation whichever process runs it (a design's BLAS on one thread, the position's
+// element loops reduced in a fixed order), and its doubles travel as JSON's shortest
+// round-trip text, so any difference is a row lost, doubled, misplaced or re-rounded.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/case_helpers.hpp"
+#include "tests/cli/mpi_helpers.hpp"
+#include "tests/run_cli.hpp"
+
+namespace fs = std::filesystem;
+using magfem::test::CliOutcome;
+using magfem::test::fresh_dir;
+using magfem::test::read_json;
+using magfem::test::run_mpi;
+using magfem::test::text_of;
+
+namespace {
+
+class MpiStudies : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (magfem::test::mpirun_path().empty())
+      GTEST_SKIP() << "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
+  }
+};
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+// summary.json without what a rerun does not reproduce: the designs' summed wall-clock time.
+nlohmann::json without_times(const fs::path& summary) {
+  auto j = read_json(summary);
+  j.erase("seconds");
+  return j;
+}
+
+// The compensator's radii (examples/3d/compensator_study.yaml), 12 designs of which two
+// (R_out 44 and 48 with R_in 50) cannot be built: rows that fail on whichever process gets
+// them, so the exit code is 3 and summary.json lists them.
+std::string compensator_grid(const std::string& r_out = "44:4:56",
+                             const std::string& r_in = "30,35,50") {
+  return "study " + magfem::test::example("3d/compensator_study.yaml") + " --param R_out=" + r_out +
+         " --param R_in=" + r_in +
+         " --objective peak_torque --objective torque_at:90 --rotate outer --axis y "
+         "--angles 0:30:180 --jobs 1";
+}
+
+void expect_same_outputs(const fs::path& serial, const fs::path& dir, int n) {
+  EXPECT_EQ(text_of(dir / "study.csv"), text_of(serial / "study.csv")) << n << " processes";
+  EXPECT_EQ(without_times(dir / "summary.json"), without_times(serial / "summary.json"))
+      << n << " processes";
+  if (fs::exists(serial / "study.png")) { // gnuplot installed
+    EXPECT_EQ(text_of(dir / "study.png"), text_of(serial / "study.png")) << n << " processes";
+  }
+  EXPECT_FALSE(fs::exists(dir / ".magfem-checkpoint.jsonl"));
+}
+
+// Would fail on: designs written in arrival order (rank order leaking into study.csv), a
+// design lost or evaluated on two processes (a missing or doubled line), a failed design of
+// another process not reported (designs/failed_designs/failures, exit 0 instead of 3).
+TEST_F(MpiStudies, AnalyticStudyOnTwoAndThreeProcessesWritesTheSerialOutputs) {
+  const fs::path serial = fresh_dir("study_serial");
+  const CliOutcome s =
+      magfem::test::run_cli(compensator_grid() + " --quiet --out " + serial.string());
+  ASSERT_EQ(s.status, 3) << s.out;
+  ASSERT_EQ(read_json(serial / "summary.json")["failed_designs"], 2);
+  for (const int n : {2, 3}) {
+    const fs::path dir = fresh_dir("study_" + std::to_string(n) + "_ranks");
+    const CliOutcome m = run_mpi(n, compensator_grid() + " --out " + dir.string());
+    EXPECT_EQ(m.status, 3) << m.out;
+    expect_same_outputs(serial, dir, n);
+    EXPECT_EQ(count(m.out, "wrote    "), 1u) << m.out;
+    EXPECT_EQ(count(m.out, "2 of 12 designs failed"), 1u) << m.out;
+    EXPECT_EQ(count(m.out, "study on " + std::to_string(n) + " processes"), 1u) << m.out;
+  }
+  fs::remove_all(serial.parent_path());
+}
+
+// Two hemispherical magnets (the compensator's topology at a third of its size) meshed
+// coarsely: an FE design takes a few seconds, its torque from the Maxwell stress sphere.
+const char* small_compensator = R"(title: "small compensator, R_out ${R_out} mm"
+dimension: 3
+unit: mm
+parameters:
+  R_out: {value: 30, unit: mm, description: outer radius of the outer shell}
+materials:
+  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
+regions:
+  - {name: inner, shape: spherical_segment, r_inner: 0, r_outer: 15, theta: [0, 90],
+     material: pm, magnetization: {type: parallel, direction: [0, 0, 1]}}
+  - {name: outer, shape: spherical_segment, r_inner: 19, r_outer: "${R_out}", theta: [0, 90],
+     material: pm, magnetization: {type: radial, sign: -1}, group: outer}
+boundary: {type: open, radius: "${1.5 * R_out}", shell_ratio: 1.5}
+mesh: {size: 6}
+solver: {order: 1}
+)";
+
+// The FE path: meshing and solving inside the dealt design, unknowns and torques through the
+// design codec (a re-rounded torque changes study.csv's last digits).
+TEST_F(MpiStudies, CoarseFeStudyOnTwoProcessesWritesTheSerialOutputs) {
+  const fs::path serial = fresh_dir("fe_study_serial"), dir = fresh_dir("fe_study_2_ranks");
+  fs::create_directories(serial.parent_path());
+  const fs::path case_file = serial.parent_path() / "small_compensator.yaml";
+  std::ofstream(case_file) << small_compensator;
+  const std::string study = "study " + case_file.string() +
+                            " --param R_out=26,30 --objective torque_at:90 --rotate outer "
+                            "--axis y --fe --jobs 1 --quiet";
+  const CliOutcome s = magfem::test::run_cli(study + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.out;
+  const CliOutcome m = run_mpi(2, study + " --out " + dir.string());
+  ASSERT_EQ(m.status, 0) << m.out;
+  expect_same_outputs(serial, dir, 2);
+  EXPECT_EQ(read_json(dir / "summary.json")["method"], "maxwell_stress_sphere");
+  fs::remove_all(serial.parent_path());
+}
+
+// A checkpoint holding 4 of the 8 designs (a serial run's, cut down), one of them with a
+// planted torque 1234.5 N m, then --resume under mpirun: the planted value appears in
+// study.csv (the checkpoint was used and that design not evaluated again) and every other
+// line is the serial run's (the missing designs were evaluated, each once, in place).
+TEST_F(MpiStudies, ResumedStudyUnderMpirunEvaluatesOnlyTheMissingDesigns) {
+  const std::string grid = compensator_grid("44:4:56", "30,35");
+  const fs::path serial = fresh_dir("resume_study_serial"), dir = fresh_dir("resume_study_mpi");
+  ASSERT_EQ(magfem::test::run_cli(grid + " --quiet --out " + serial.string()).status, 0);
+  // A directory where study.csv goes: the run cannot commit its outputs and keeps its
+  // checkpoint of all eight designs.
+  fs::create_directories(dir / "study.csv" / "blocker");
+  ASSERT_EQ(magfem::test::run_cli(grid + " --quiet --out " + dir.string()).status, 1);
+  fs::remove_all(dir / "study.csv");
+  const fs::path checkpoint = dir / ".magfem-checkpoint.jsonl";
+  std::stringstream lines(text_of(checkpoint));
+  std::string line, kept;
+  std::getline(lines, line); // the identity
+  kept = line + "\n";
+  for (int i = 0; std::getline(lines, line) && i < 8; ++i) {
+    auto entry = nlohmann::json::parse(line);
+    if (entry["key"] == "44,30")
+      entry["value"]["objectives"][0] = 1234.5;
+    if (i % 2 == 0) // designs 44/30, 48/30, 52/30, 56/30 kept
+      kept += entry.dump() + "\n";
+  }
+  std::ofstream(checkpoint) << kept;
+
+  const CliOutcome m = run_mpi(2, grid + " --resume --out " + dir.string());
+  ASSERT_EQ(m.status, 0) << m.out;
+  EXPECT_NE(m.out.find("--resume: 4 finished designs"), std::string::npos) << m.out;
+  std::string expected = text_of(serial / "study.csv");
+  const auto at = expected.find("\n44,30,") + 7;
+  expected.replace(at, expected.find(',', at) - at, "1234.5");
+  EXPECT_EQ(text_of(dir / "study.csv"), expected);
+  EXPECT_FALSE(fs::exists(checkpoint));
+  fs::remove_all(serial.parent_path());
+}
+
+// Every process reads the same options, so each fails alike: exit 2 from all through
+// MPI_Abort within the timeout, nothing written. An unknown group is found only when a
+// design is evaluated, on whichever process has it: it ends the run as bad input, not as
+// twelve failed designs.
+TEST_F(MpiStudies, BadStudyInputEndsEveryProcessWithExitTwo) {
+  const fs::path dir = fresh_dir("study_bad");
+  const CliOutcome option = run_mpi(2, compensator_grid() + " --bogus --out " + dir.string());
+  EXPECT_EQ(option.status, 2) << option.out;
+  EXPECT_NE(option.out.find("--bogus"), std::string::npos) << option.out;
+  std::string grid = compensator_grid();
+  grid.replace(grid.find("--rotate outer"), 14, "--rotate nosuch");
+  const CliOutcome group = run_mpi(3, grid + " --out " + dir.string());
+  EXPECT_EQ(group.status, 2) << group.out;
+  EXPECT_NE(group.out.find("nosuch"), std::string::npos) << group.out;
+  EXPECT_FALSE(fs::exists(dir / "study.csv"));
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+  fs::remove_all(dir.parent_path());
+}
+
+// optimize chooses each design from the ones before: nothing to deal. Refused before its
+// options are read, on every process, with the reason.
+TEST_F(MpiStudies, OptimizeIsRefusedUnderMpirunWithItsReason) {
+  const CliOutcome o = run_mpi(2, "optimize " + magfem::test::example("3d/compensator_study.yaml"));
+  EXPECT_EQ(o.status, 2) << o.out;
+  EXPECT_NE(o.out.find("sequential"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("without mpirun"), std::string::npos) << o.out;
+}
+
+} // namespace
