@@ -362,6 +362,13 @@ int run_study(const std::vector<std::string>& arguments) {
   return magfem::run_study_command(options);
 }
 
+// Under mpirun the catalogue entries are dealt to the processes (validation/validate.hpp).
+int run_validate(const std::vector<std::string>& arguments) {
+  magfem::ValidateOptions options = magfem::parse_validate_options(arguments);
+  options.world = dealt_world("validate", "catalogue entries", options.jobs, "evaluates N at once");
+  return magfem::run_validate(options);
+}
+
 int run_compare(const Args& args) {
   const auto ref = magfem::read_probe_csv(args.positional[0]);
   const auto test = magfem::read_probe_csv(args.positional[1]);
@@ -439,7 +446,7 @@ void start_mpi_or_refuse(int argc, char** argv) {
   if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
     return;
   const std::string command = argv[1];
-  const bool dealt = command == "sweep" || command == "study";
+  const bool dealt = command == "sweep" || command == "study" || command == "validate";
   if (!magfem::join_mpi_world(dealt).distributed() || dealt)
     return;
   if (command == "optimize")
@@ -448,10 +455,11 @@ void start_mpi_or_refuse(int argc, char** argv) {
         "`magfem optimize` is sequential (each step is chosen from the designs before it), so "
         "processes would have nothing to share; run it without mpirun, or evaluate a grid of "
         "designs across processes with `mpirun -n N magfem study`");
-  throw magfem::InputError("<command line>", 0, "",
-                           "only `magfem solve`, `sweep` and `study` run distributed; run "
-                           "`magfem " +
-                               command + "` without mpirun");
+  throw magfem::InputError(
+      "<command line>", 0, "",
+      "only `magfem solve`, `sweep`, `study` and `validate` run distributed; run "
+      "`magfem " +
+          command + "` without mpirun");
 }
 
 // The error line on stderr and the exit code. Under mpirun with several processes every
@@ -482,8 +490,7 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "mesh") == 0)
       return magfem::run_mesh_command(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
-      return magfem::run_validate(
-          magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
+      return run_validate(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
       return magfem::run_optimize_command(
           magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));

@@ -1,10 +1,13 @@
-// `mpirun -n 2|3 magfem study` (designs dealt to the processes, rank 0 writing) against the
+// `mpirun -n 2|3 magfem study` and `validate` (designs and catalogue entries dealt to the
+// processes, rank 0 writing) against the
 // serial run with --jobs 1: the same study.csv byte for byte (and plot), the same summary.json
 // but for the times, the same exit code (3 when designs fail) from every process, for an
 // analytic grid (harmonic form, milliseconds a design) and a coarse FE one; --resume under
 // mpirun takes the checkpoint's designs and evaluates only the others; a bad option or group
 // ends every process with exit 2 and nothing written, never a hang; optimize is refused with
-// its reason.
+// its reason. validate likewise: results.csv, results.json and the reports the serial run's
+// but for the times; exit 4 from every process when an entry fails; --resume across
+// processes.
 //
 // Byte comparison is right here (not a tolerance): each design is the same deterministic
 // computation whichever process runs it (a design's BLAS on one thread, the position's
@@ -14,6 +17,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -71,7 +75,8 @@ void expect_same_outputs(const fs::path& serial, const fs::path& dir, int n) {
   EXPECT_EQ(without_times(dir / "summary.json"), without_times(serial / "summary.json"))
       << n << " processes";
   if (fs::exists(serial / "study.png")) { // gnuplot installed
-    EXPECT_EQ(text_of(dir / "study.png"), text_of(serial / "study.png")) << n << " processes";
+    EXPECT_TRUE(text_of(dir / "study.png") == text_of(serial / "study.png"))
+        << "study.png differs on " << n << " processes";
   }
   EXPECT_FALSE(fs::exists(dir / ".magfem-checkpoint.jsonl"));
 }
@@ -199,6 +204,155 @@ TEST_F(MpiStudies, OptimizeIsRefusedUnderMpirunWithItsReason) {
   EXPECT_EQ(o.status, 2) << o.out;
   EXPECT_NE(o.out.find("sequential"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("without mpirun"), std::string::npos) << o.out;
+}
+
+// ---- validate ------------------------------------------------------------------------------
+
+// The Harwin entries (seed 000: analytic fits and coarse 2D FE of the paper's model, ~4 s in
+// all), with --jobs 1 as the serial reference.
+std::string harwin_entries() {
+  return "validate --source 000 --jobs 1";
+}
+
+// The outputs without what a rerun does not reproduce: every time (each entry's seconds, the
+// last CSV column; the JSON `seconds` of the entries and of the solves in their details; the
+// run's wall time in results.json and the reports' "in N s"; the details the HTML report
+// shows).
+std::string csv_without_seconds(const fs::path& csv) {
+  std::stringstream in(text_of(csv));
+  std::string line, out;
+  while (std::getline(in, line))
+    out += line.substr(0, line.rfind(',')) + "\n";
+  return out;
+}
+void erase_seconds(nlohmann::json& j) {
+  if (j.is_object()) {
+    j.erase("seconds");
+    j.erase("wall_seconds");
+  }
+  if (j.is_structured())
+    for (auto& v : j)
+      erase_seconds(v);
+}
+nlohmann::json results_without_times(const fs::path& json) {
+  auto j = read_json(json);
+  erase_seconds(j);
+  return j;
+}
+std::string report_without_times(const fs::path& report) {
+  const std::string text =
+      std::regex_replace(text_of(report), std::regex("in [0-9.]+ s on"), "in T s on");
+  return std::regex_replace(text, std::regex("seconds&quot;: [-0-9.e]+"), "seconds&quot;: T");
+}
+
+void expect_same_validation(const fs::path& serial, const fs::path& dir, int n) {
+  EXPECT_EQ(csv_without_seconds(dir / "results.csv"), csv_without_seconds(serial / "results.csv"))
+      << n << " processes";
+  EXPECT_EQ(results_without_times(dir / "results.json"),
+            results_without_times(serial / "results.json"))
+      << n << " processes";
+  EXPECT_EQ(report_without_times(dir / "report.md"), report_without_times(serial / "report.md"));
+  EXPECT_EQ(report_without_times(dir / "report.html"),
+            report_without_times(serial / "report.html"));
+  EXPECT_FALSE(fs::exists(dir / ".magfem-checkpoint.jsonl"));
+}
+
+// Would fail on: entries reported in arrival order, an entry lost or evaluated twice, a value
+// or note re-rounded or dropped on its way to rank 0 (entries of other processes have no
+// shared cache with rank 0's, so they compute their own), the report written by two
+// processes.
+TEST_F(MpiStudies, ValidateOnTwoAndThreeProcessesWritesTheSerialOutputs) {
+  const fs::path serial = fresh_dir("validate_serial");
+  const CliOutcome s = magfem::test::run_cli(harwin_entries() + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.out;
+  for (const int n : {2, 3}) {
+    const fs::path dir = fresh_dir("validate_" + std::to_string(n) + "_ranks");
+    const CliOutcome m = run_mpi(n, harwin_entries() + " --out " + dir.string());
+    ASSERT_EQ(m.status, 0) << m.out;
+    expect_same_validation(serial, dir, n);
+    EXPECT_EQ(count(m.out, "wrote    "), 1u) << m.out;
+    EXPECT_EQ(count(m.out, "validate on " + std::to_string(n) + " processes"), 1u) << m.out;
+  }
+  fs::remove_all(serial.parent_path());
+}
+
+// The catalogue with every case path absolute (so that a copy elsewhere reads the same
+// cases) and the entry `id`'s published value replaced by `published`.
+fs::path catalogue_with(const fs::path& dir, const std::string& id, const std::string& published) {
+  const fs::path source = magfem::test::source_dir();
+  std::string text = text_of(source / "validation" / "catalogue.yaml");
+  text = std::regex_replace(text, std::regex("case: cases/"),
+                            "case: " + (source / "validation" / "cases").string() + "/");
+  text = std::regex_replace(text, std::regex("case: \\.\\./examples/"),
+                            "case: " + (source / "examples").string() + "/");
+  const auto at = text.find("published:", text.find("- id: " + id + "\n"));
+  text.replace(at, text.find('\n', at) - at, "published: " + published);
+  fs::create_directories(dir);
+  const fs::path file = dir / "catalogue.yaml";
+  std::ofstream(file) << text;
+  return file;
+}
+
+// An entry that fails its check on whichever process evaluates it: exit 4 from every
+// process, its id named once, the outputs still written (all entries, the failure among
+// them), as serially. Would fail if rank 0 ignored another process's failed entry.
+TEST_F(MpiStudies, ValidateWithAFailingEntryExitsFourOnEveryProcess) {
+  const fs::path dir = fresh_dir("validate_failing");
+  const fs::path catalogue = catalogue_with(dir, "harwin.t1.paper.max_ratio_8", "0.5");
+  const std::string run = harwin_entries() + " --catalogue " + catalogue.string();
+  const CliOutcome s = magfem::test::run_cli(run + " --out " + (dir / "serial").string());
+  ASSERT_EQ(s.status, 4) << s.out;
+  const CliOutcome m = run_mpi(3, run + " --out " + (dir / "mpi").string());
+  EXPECT_EQ(m.status, 4) << m.out;
+  EXPECT_EQ(count(m.out, "validation failed: harwin.t1.paper.max_ratio_8"), 1u) << m.out;
+  expect_same_validation(dir / "serial", dir / "mpi", 3);
+  fs::remove_all(dir.parent_path());
+}
+
+// A serial run's checkpoint (its outputs blocked), cut to half the entries, one of them with
+// a planted analytic value 4321, then --resume under mpirun: the planted value is in
+// results.csv (taken from the checkpoint, not evaluated again), the other entries are the
+// serial run's.
+TEST_F(MpiStudies, ResumedValidateUnderMpirunEvaluatesOnlyTheMissingEntries) {
+  const fs::path serial = fresh_dir("resume_validate_serial"), dir = fresh_dir("resume_validate");
+  ASSERT_EQ(magfem::test::run_cli(harwin_entries() + " --out " + serial.string()).status, 0);
+  fs::create_directories(dir / "results.csv" / "blocker");
+  ASSERT_EQ(magfem::test::run_cli(harwin_entries() + " --out " + dir.string()).status, 1);
+  fs::remove_all(dir / "results.csv");
+  const fs::path checkpoint = dir / ".magfem-checkpoint.jsonl";
+  std::stringstream lines(text_of(checkpoint));
+  std::string line, kept, planted;
+  std::getline(lines, line);
+  kept = line + "\n";
+  for (int i = 0; std::getline(lines, line); ++i) {
+    auto entry = nlohmann::json::parse(line);
+    if (i % 2)
+      continue;
+    if (planted.empty() && entry["value"]["analytic"].is_number()) {
+      planted = entry["key"];
+      entry["value"]["analytic"] = 4321.0;
+    }
+    kept += entry.dump() + "\n";
+  }
+  ASSERT_FALSE(planted.empty());
+  std::ofstream(checkpoint) << kept;
+
+  const CliOutcome m = run_mpi(2, harwin_entries() + " --resume --out " + dir.string());
+  ASSERT_EQ(m.status, 0) << m.out;
+  const auto results = read_json(dir / "results.json");
+  const auto reference = read_json(serial / "results.json");
+  ASSERT_EQ(results["entries"].size(), reference["entries"].size());
+  for (std::size_t i = 0; i < results["entries"].size(); ++i) {
+    auto e = results["entries"][i], r = reference["entries"][i];
+    if (e["id"] == planted) {
+      EXPECT_EQ(e["analytic"], 4321.0) << planted << " evaluated again";
+      continue;
+    }
+    erase_seconds(e), erase_seconds(r);
+    EXPECT_EQ(e, r);
+  }
+  EXPECT_FALSE(fs::exists(checkpoint));
+  fs::remove_all(serial.parent_path());
 }
 
 } // namespace
