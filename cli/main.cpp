@@ -1,5 +1,6 @@
 // magfem command-line front end. Exit codes: 0 success, 1 internal error, 2 bad input
 // (case file, options), 3 the solver did not converge.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -169,13 +170,14 @@ magfem::MpiWorld dealt_world(const std::string& command, const std::string& item
     return world;
   const int threads = magfem::threads_per_process(world);
   setenv("MAGFEM_THREADS", std::to_string(threads).c_str(), 0);
-  at_once.replace(at_once.find('N'), 1, std::to_string(jobs > 0 ? jobs : threads));
+  if (const auto n = at_once.find('N'); n != std::string::npos)
+    at_once.replace(n, 1, std::to_string(jobs > 0 ? jobs : threads)) +=
+        jobs > 0 ? " (--jobs)" : " (its share of the machine's cores)";
   if (world.is_root())
     std::fprintf(stderr,
                  "magfem: %s on %d processes (%d on this machine), %s dealt one at a time: each "
-                 "process %s (%s) with %d element-loop threads (MAGFEM_THREADS)%s\n",
+                 "process %s with %d element-loop threads (MAGFEM_THREADS)%s\n",
                  command.c_str(), world.size, world.size_on_node, items.c_str(), at_once.c_str(),
-                 jobs > 0 ? "--jobs" : "its share of the machine's cores",
                  magfem::available_threads(),
                  world.any_thread_calls_mpi
                      ? ""
@@ -369,6 +371,20 @@ int run_validate(const std::vector<std::string>& arguments) {
   return magfem::run_validate(options);
 }
 
+// Under mpirun (--verify only) the verification solves are dealt to the processes
+// (studies/actuator.hpp).
+int run_actuator(const std::vector<std::string>& arguments) {
+  magfem::ActuatorOptions options = magfem::parse_actuator_options(arguments);
+  options.world =
+      dealt_world("actuator --verify", "verification solves", 0, "solves one at a time");
+  if (options.world.distributed() && !options.coil_pitch.empty())
+    throw magfem::InputError("<command line>", 0, "--coil-pitch",
+                             "the coil-pitch study runs without mpirun");
+  if (!options.world.is_root())
+    options.quiet = true;
+  return magfem::run_actuator_command(options);
+}
+
 int run_compare(const Args& args) {
   const auto ref = magfem::read_probe_csv(args.positional[0]);
   const auto test = magfem::read_probe_csv(args.positional[1]);
@@ -446,9 +462,17 @@ void start_mpi_or_refuse(int argc, char** argv) {
   if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
     return;
   const std::string command = argv[1];
-  const bool dealt = command == "sweep" || command == "study" || command == "validate";
+  const bool verify = command == "actuator" &&
+                      std::any_of(argv + 2, argv + argc,
+                                  [](const char* a) { return std::strcmp(a, "--verify") == 0; });
+  const bool dealt = command == "sweep" || command == "study" || command == "validate" || verify;
   if (!magfem::join_mpi_world(dealt).distributed() || dealt)
     return;
+  if (command == "actuator")
+    throw magfem::InputError("<command line>", 0, "",
+                             "`magfem actuator` runs distributed only with --verify (its FE "
+                             "verification solves are dealt to the processes); run it without "
+                             "mpirun");
   if (command == "optimize")
     throw magfem::InputError(
         "<command line>", 0, "",
@@ -495,8 +519,7 @@ int main(int argc, char** argv) {
       return magfem::run_optimize_command(
           magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
     if (argc >= 2 && std::strcmp(argv[1], "actuator") == 0)
-      return magfem::run_actuator_command(
-          magfem::parse_actuator_options(std::vector<std::string>(argv + 2, argv + argc)));
+      return run_actuator(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
       return run_study(std::vector<std::string>(argv + 2, argv + argc));
     const Args args = magfem::parse_command_args(argc, argv);

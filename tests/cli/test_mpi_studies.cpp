@@ -7,7 +7,8 @@
 // ends every process with exit 2 and nothing written, never a hang; optimize is refused with
 // its reason. validate likewise: results.csv, results.json and the reports the serial run's
 // but for the times; exit 4 from every process when an entry fails; --resume across
-// processes.
+// processes. actuator --verify: its FE verification solves dealt, the serial outputs but the
+// times; without --verify refused.
 //
 // Byte comparison is right here (not a tolerance): each design is the same deterministic
 // computation whichever process runs it (a design's BLAS on one thread, the position's
@@ -353,6 +354,49 @@ TEST_F(MpiStudies, ResumedValidateUnderMpirunEvaluatesOnlyTheMissingEntries) {
   }
   EXPECT_FALSE(fs::exists(checkpoint));
   fs::remove_all(serial.parent_path());
+}
+
+// ---- actuator --verify -------------------------------------------------------------------
+
+// The suite's small actuator (tests/case_helpers.hpp), constants by the charge model, three
+// orientations: three FE verification solves (first, middle, last orientation, ~2 s each at
+// order 1), one per process at -n 3. The torques travel through the verification codec:
+// rank order leaking or a row lost changes summary.json's `verification`.
+TEST_F(MpiStudies, ActuatorVerifyOnThreeProcessesWritesTheSerialOutputs) {
+  const fs::path serial = fresh_dir("actuator_serial"), dir = fresh_dir("actuator_3_ranks");
+  fs::create_directories(serial.parent_path());
+  const fs::path case_file = serial.parent_path() / "small_actuator.yaml";
+  std::ofstream(case_file) << magfem::test::small_actuator_case;
+  const std::string run = "actuator " + case_file.string() +
+                          " --rotor rotor --orientations rx=0,ry=0:10:20 --torque 0,0,0.001 "
+                          "--analytic --verify --order 1 --quiet";
+  const CliOutcome s = magfem::test::run_cli(run + " --out " + serial.string());
+  ASSERT_EQ(s.status, 0) << s.out;
+  const CliOutcome m = run_mpi(3, run + " --out " + dir.string());
+  ASSERT_EQ(m.status, 0) << m.out;
+  for (const char* file : {"commutation.csv", "torque_constants.csv"})
+    EXPECT_EQ(text_of(dir / file), text_of(serial / file)) << file;
+  auto without_seconds = [](const fs::path& summary) {
+    auto j = read_json(summary);
+    j.erase("seconds");
+    j.erase("torque_constants_seconds");
+    return j;
+  };
+  const auto summary = without_seconds(dir / "summary.json");
+  EXPECT_EQ(summary, without_seconds(serial / "summary.json"));
+  EXPECT_EQ(summary["verification"].size(), 3u);
+  EXPECT_EQ(count(m.out, "verify   T_d at"), 3u) << m.out;
+  EXPECT_EQ(count(m.out, "actuator --verify on 3 processes"), 1u) << m.out;
+  fs::remove_all(serial.parent_path());
+}
+
+// Without --verify there is nothing to deal: refused on every process, exit 2.
+TEST_F(MpiStudies, ActuatorWithoutVerifyIsRefusedUnderMpirun) {
+  const CliOutcome o =
+      run_mpi(2, "actuator " + magfem::test::example("3d/spherical_actuator_design.yaml") +
+                     " --rotor rotor --orientations rx=0 --analytic");
+  EXPECT_EQ(o.status, 2) << o.out;
+  EXPECT_NE(o.out.find("only with --verify"), std::string::npos) << o.out;
 }
 
 } // namespace
