@@ -53,6 +53,14 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// `text` written as NAME in the test's output folder (beside the runs' folders).
+fs::path case_beside(const fs::path& run_dir, const std::string& name, const std::string& text) {
+  fs::create_directories(run_dir.parent_path());
+  const fs::path file = run_dir.parent_path() / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
 // summary.json without what a rerun does not reproduce: the designs' summed wall-clock time.
 nlohmann::json without_times(const fs::path& summary) {
   auto j = read_json(summary);
@@ -126,9 +134,7 @@ solver: {order: 1}
 // design codec (a re-rounded torque changes study.csv's last digits).
 TEST_F(MpiStudies, CoarseFeStudyOnTwoProcessesWritesTheSerialOutputs) {
   const fs::path serial = fresh_dir("fe_study_serial"), dir = fresh_dir("fe_study_2_ranks");
-  fs::create_directories(serial.parent_path());
-  const fs::path case_file = serial.parent_path() / "small_compensator.yaml";
-  std::ofstream(case_file) << small_compensator;
+  const fs::path case_file = case_beside(serial, "small_compensator.yaml", small_compensator);
   const std::string study = "study " + case_file.string() +
                             " --param R_out=26,30 --objective torque_at:90 --rotate outer "
                             "--axis y --fe --jobs 1 --quiet";
@@ -364,9 +370,8 @@ TEST_F(MpiStudies, ResumedValidateUnderMpirunEvaluatesOnlyTheMissingEntries) {
 // rank order leaking or a row lost changes summary.json's `verification`.
 TEST_F(MpiStudies, ActuatorVerifyOnThreeProcessesWritesTheSerialOutputs) {
   const fs::path serial = fresh_dir("actuator_serial"), dir = fresh_dir("actuator_3_ranks");
-  fs::create_directories(serial.parent_path());
-  const fs::path case_file = serial.parent_path() / "small_actuator.yaml";
-  std::ofstream(case_file) << magfem::test::small_actuator_case;
+  const fs::path case_file =
+      case_beside(serial, "small_actuator.yaml", magfem::test::small_actuator_case);
   const std::string run = "actuator " + case_file.string() +
                           " --rotor rotor --orientations rx=0,ry=0:10:20 --torque 0,0,0.001 "
                           "--analytic --verify --order 1 --quiet";
