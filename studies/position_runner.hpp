@@ -1,23 +1,24 @@
 #pragma once
-// The one loop over independent items of every sweep (3D rotate, axisymmetric move, planar
-// rotate: positions), of a study (designs) and of validate (catalogue entries), run_items;
-// run_positions is the sweeps' form. The positions of a sweep are independent solves, taken from
-// the checkpoint when an earlier run finished them (--resume), else computed on a pool of `workers`
-// threads (the calling thread is one of them) and recorded as each finishes; failed positions are
-// not recorded, so that
-// --resume tries them again. Rows come back in the order of the positions whatever the order
-// they finished in. solve(row, position) fills a fresh row; the runner times it, and an
-// exception becomes the row's error (ok false): a failed position never stops the others.
+// The one loop over independent items (run_items): a sweep's positions (3D rotate,
+// axisymmetric move, planar rotate; run_positions is the sweeps' form), a study's designs,
+// validate's catalogue entries and actuator --verify's solves. Items are taken from the
+// checkpoint when an earlier run finished them (--resume), else computed on a pool of
+// `workers` threads (the calling thread is one of them) and recorded as each finishes; failed
+// items are not recorded, so that --resume tries them again. Rows come back in the order of
+// the items whatever the order they finished in. solve(row, item) fills a fresh row; the
+// runner times it, and an exception becomes the row's error (ok false): a failed item never
+// stops the others (EndsRun below is the exception that does).
 // A stop asked through `cancel` (Ctrl-C in Python, python/background_call.hpp) starts no
-// further position: the positions under way finish, the others come back as default rows
-// (ok false, no error), which the caller throws away.
+// further item: the items under way finish, the others come back as default rows (ok false,
+// no error), which the caller throws away.
 //
-// Under mpirun (`world` distributed) the positions are dealt to the processes instead, one at
-// a time as each asks (solver/mpi_context.hpp WorkDealer); each process solves its positions
-// on its own `workers` threads, each position a serial solve of that process, and sends each
-// row to rank 0 as it finishes. Rank 0 alone reads and writes the checkpoint (it deals only
-// the positions missing from it), records the rows as they arrive, and alone gets the rows
-// back (in the order of the positions, as a serial run would); the others get none.
+// Under mpirun (`world` distributed) the items are dealt to the processes instead, one at a
+// time as each asks (solver/mpi_context.hpp WorkDealer); each process solves its items on its
+// own `workers` threads, each item a serial computation of that process, and sends each row
+// (its JSON codec, doubles exact) to rank 0 as it finishes. Rank 0 alone reads and writes the
+// checkpoint (it deals only the items missing from it), records the rows as they arrive, and
+// alone gets the rows back (in the order of the items, as a serial run would); the others get
+// none.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
