@@ -141,7 +141,13 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  --resume   continue a study that was interrupted (Ctrl-C, kill, crash): every\n"
      "             finished design is kept in DIR/.magfem-checkpoint.jsonl as it\n"
      "             finishes, and is not evaluated again; the outputs are those of an\n"
-     "             uninterrupted run. Refused if the case file or options changed.\n"},
+     "             uninterrupted run. Refused if the case file or options changed.\n"
+     "  Under mpirun (mpirun -n N magfem study ...) the designs are dealt to the N\n"
+     "  processes one at a time as each finishes one; a design's sweep runs on its\n"
+     "  process's share of the machine's cores (its positions --jobs at once). Rank 0\n"
+     "  keeps the checkpoint (--resume works with or without mpirun) and writes the\n"
+     "  outputs of a serial --jobs 1 run (summary.json but `seconds`); every process\n"
+     "  exits with the same code.\n"},
     {"optimize",
      "magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ...]\n"
      "                    --maximize|--minimize peak_torque|torque_at:DEG\n"
@@ -155,7 +161,9 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  e.g. \"R_out - R_in >= 10\"; exit 3 if no point satisfies it. --verify-fe solves\n"
      "  the optimum by FE (mesh as set by --mesh-scale/--order) and reports the FE value\n"
      "  beside the analytic one. Writes summary.json and history.csv (every evaluation:\n"
-     "  the variables and the objective) into DIR (default out/<case>_optimize).\n"},
+     "  the variables and the objective) into DIR (default out/<case>_optimize).\n"
+     "  Refused under mpirun: each step is chosen from the ones before, so there is\n"
+     "  nothing to deal; `mpirun -n N magfem study` spreads a grid of designs instead.\n"},
     {"actuator",
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
@@ -181,6 +189,9 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
+     "  Under mpirun (mpirun -n N magfem actuator ... --verify) these FE solves are\n"
+     "  dealt to the processes (each computes the constants; rank 0 writes); without\n"
+     "  --verify the command is refused under mpirun.\n"
      "  FE runs show the orientation, stage and solver residual on stderr, --analytic\n"
      "  the charge model's share of points done; --quiet turns that off.\n"
      "  --coil-pitch START:STEP:END (deg): the thesis's coil-pitch study (sec. 5.3) instead\n"
@@ -210,7 +221,11 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  Finished entries are kept in DIR/.magfem-checkpoint.jsonl as they finish: after\n"
      "  Ctrl-C or kill, --resume evaluates only the rest (failed entries again) and writes\n"
      "  the same results as an uninterrupted run. --catalogue FILE runs another catalogue\n"
-     "  (the same format; case paths relative to FILE).\n"},
+     "  (the same format; case paths relative to FILE).\n"
+     "  Under mpirun (mpirun -n N magfem validate ...) the entries are dealt to the N\n"
+     "  processes one at a time (each on --jobs threads, default its share of the\n"
+     "  machine's cores); rank 0 keeps the checkpoint and writes the serial run's\n"
+     "  outputs (but the times); every process exits with the same code.\n"},
 }};
 
 } // namespace

@@ -1,5 +1,6 @@
 // magfem command-line front end. Exit codes: 0 success, 1 internal error, 2 bad input
 // (case file, options), 3 the solver did not converge.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -148,30 +149,37 @@ template <class Row> double position_time(const std::vector<Row>& rows) {
   return total_s;
 }
 
-// Under mpirun a sweep's positions are dealt to the processes (studies/position_runner.hpp).
-// Each process takes its share of its machine's cores: that many positions at once unless
-// --jobs says otherwise, and that many threads in each position's element loops unless
-// MAGFEM_THREADS says otherwise (set here, before any of this process's threads reads it).
-// Said once, by rank 0.
-magfem::MpiWorld sweep_world(const Args& args) {
+// Under mpirun a sweep's positions, a study's designs and validate's entries are dealt to the
+// processes (studies/position_runner.hpp). Each process takes its share of its machine's
+// cores: that many items at once unless --jobs says otherwise, and that many threads in each
+// solve's element loops unless MAGFEM_THREADS says otherwise (set here, before any of this
+// process's threads reads it). Said once, by rank 0. `at_once`: what a process does at
+// once, with N for the number (--jobs, else the process's cores).
+magfem::MpiWorld dealt_world(const std::string& command, const std::string& items, int jobs,
+                             std::string at_once) {
   const magfem::MpiWorld world = magfem::join_mpi_world(true); // started by start_mpi_or_refuse
   if (!world.distributed())
     return world;
   const int threads = magfem::threads_per_process(world);
   setenv("MAGFEM_THREADS", std::to_string(threads).c_str(), 0);
+  if (const auto n = at_once.find('N'); n != std::string::npos)
+    at_once.replace(n, 1, std::to_string(jobs > 0 ? jobs : threads)) +=
+        jobs > 0 ? " (--jobs)" : " (its share of the machine's cores)";
   if (world.is_root())
     std::fprintf(stderr,
-                 "magfem: sweep on %d processes (%d on this machine), positions dealt one at a "
-                 "time: each process solves %d at once (%s) with %d element-loop threads "
-                 "(MAGFEM_THREADS)%s\n",
-                 world.size, world.size_on_node, args.jobs > 0 ? args.jobs : threads,
-                 args.jobs > 0 ? "--jobs" : "its share of the machine's cores",
+                 "magfem: %s on %d processes (%d on this machine), %s dealt one at a time: each "
+                 "process %s with %d element-loop threads (MAGFEM_THREADS)%s\n",
+                 command.c_str(), world.size, world.size_on_node, items.c_str(), at_once.c_str(),
                  magfem::available_threads(),
                  world.any_thread_calls_mpi
                      ? ""
                      : "; MPI gave no MPI_THREAD_MULTIPLE: rank 0 only deals, and the others "
-                       "solve one position at a time");
+                       "solve one at a time");
   return world;
+}
+
+magfem::MpiWorld sweep_world(const Args& args) {
+  return dealt_world("sweep", "positions", args.jobs, "solves N at once");
 }
 
 // The checkpoint of a sweep: rank 0's alone under mpirun (the other processes send it their
@@ -340,6 +348,38 @@ int run_sweep(const Args& args) {
   return magfem::code_of_root(failed ? 3 : 0);
 }
 
+// Under mpirun the designs are dealt to the processes, each design's sweep on its process's
+// threads (studies/study.hpp).
+int run_study(const std::vector<std::string>& arguments) {
+  magfem::StudyOptions options = magfem::parse_study_options(arguments);
+  options.world = dealt_world("study", "designs", options.sweep.jobs,
+                              "sweeps one design at a time, its positions N at once");
+  if (!options.world.is_root())
+    options.quiet = true;
+  return magfem::run_study_command(options);
+}
+
+// Under mpirun the catalogue entries are dealt to the processes (validation/validate.hpp).
+int run_validate(const std::vector<std::string>& arguments) {
+  magfem::ValidateOptions options = magfem::parse_validate_options(arguments);
+  options.world = dealt_world("validate", "catalogue entries", options.jobs, "evaluates N at once");
+  return magfem::run_validate(options);
+}
+
+// Under mpirun (--verify only) the verification solves are dealt to the processes
+// (studies/actuator.hpp).
+int run_actuator(const std::vector<std::string>& arguments) {
+  magfem::ActuatorOptions options = magfem::parse_actuator_options(arguments);
+  options.world =
+      dealt_world("actuator --verify", "verification solves", 0, "solves one at a time");
+  if (options.world.distributed() && !options.coil_pitch.empty())
+    throw magfem::InputError("<command line>", 0, "--coil-pitch",
+                             "the coil-pitch study runs without mpirun");
+  if (!options.world.is_root())
+    options.quiet = true;
+  return magfem::run_actuator_command(options);
+}
+
 int run_compare(const Args& args) {
   const auto ref = magfem::read_probe_csv(args.positional[0]);
   const auto test = magfem::read_probe_csv(args.positional[1]);
@@ -407,20 +447,38 @@ std::optional<int> answer_help_or_version(int argc, char** argv) {
                            "unknown command '" + command + "'\n" + magfem::usage_overview());
 }
 
-// Under mpirun `solve` distributes one case (run_solve starts MPI) and `sweep` deals its
-// positions to the processes: MPI starts here, with any thread allowed to call it (one
-// thread of rank 0 deals while others solve), before the options are read, so that a bad
-// option ends every process alike (fail()). Any other command with several processes would
-// run once per process, each writing the same outputs.
+// Under mpirun `solve` distributes one case (run_solve starts MPI); `sweep`, `study`,
+// `validate` and `actuator --verify` deal their positions, designs, entries or orientations to
+// the processes: MPI starts here, with any thread allowed to call it (one thread of rank 0
+// deals while others solve), before the options are read, so that a bad option ends every
+// process alike (fail()). Any other command with several processes would run once per
+// process, each writing the same outputs.
 void start_mpi_or_refuse(int argc, char** argv) {
   if (!magfem::launched_by_mpirun() || argc < 2 || std::strcmp(argv[1], "solve") == 0)
     return;
-  const bool sweep = std::strcmp(argv[1], "sweep") == 0;
-  if (magfem::join_mpi_world(sweep).distributed() && !sweep)
+  const std::string command = argv[1];
+  const bool verify = command == "actuator" &&
+                      std::any_of(argv + 2, argv + argc,
+                                  [](const char* a) { return std::strcmp(a, "--verify") == 0; });
+  const bool dealt = command == "sweep" || command == "study" || command == "validate" || verify;
+  if (!magfem::join_mpi_world(dealt).distributed() || dealt)
+    return;
+  if (command == "actuator")
     throw magfem::InputError("<command line>", 0, "",
-                             std::string("only `magfem solve` and `magfem sweep` run "
-                                         "distributed; run `magfem ") +
-                                 argv[1] + "` without mpirun");
+                             "`magfem actuator` runs distributed only with --verify (its FE "
+                             "verification solves are dealt to the processes); run it without "
+                             "mpirun");
+  if (command == "optimize")
+    throw magfem::InputError(
+        "<command line>", 0, "",
+        "`magfem optimize` is sequential (each step is chosen from the designs before it), so "
+        "processes would have nothing to share; run it without mpirun, or evaluate a grid of "
+        "designs across processes with `mpirun -n N magfem study`");
+  throw magfem::InputError(
+      "<command line>", 0, "",
+      "only `magfem solve`, `sweep`, `study` and `validate` run distributed; run "
+      "`magfem " +
+          command + "` without mpirun");
 }
 
 // The error line on stderr and the exit code. Under mpirun with several processes every
@@ -451,17 +509,14 @@ int main(int argc, char** argv) {
     if (argc >= 2 && std::strcmp(argv[1], "mesh") == 0)
       return magfem::run_mesh_command(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "validate") == 0)
-      return magfem::run_validate(
-          magfem::parse_validate_options(std::vector<std::string>(argv + 2, argv + argc)));
+      return run_validate(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "optimize") == 0)
       return magfem::run_optimize_command(
           magfem::parse_optimize_options(std::vector<std::string>(argv + 2, argv + argc)));
     if (argc >= 2 && std::strcmp(argv[1], "actuator") == 0)
-      return magfem::run_actuator_command(
-          magfem::parse_actuator_options(std::vector<std::string>(argv + 2, argv + argc)));
+      return run_actuator(std::vector<std::string>(argv + 2, argv + argc));
     if (argc >= 2 && std::strcmp(argv[1], "study") == 0)
-      return magfem::run_study_command(
-          magfem::parse_study_options(std::vector<std::string>(argv + 2, argv + argc)));
+      return run_study(std::vector<std::string>(argv + 2, argv + argc));
     const Args args = magfem::parse_command_args(argc, argv);
     if (args.command == "solve")
       return run_solve(args);

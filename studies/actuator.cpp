@@ -30,6 +30,7 @@
 #include "postproc/point_locator3d.hpp"
 #include "studies/actuator_coil_pitch.hpp"
 #include "studies/actuator_plot.hpp"
+#include "studies/position_runner.hpp"
 #include "studies/sweep.hpp"
 
 namespace magfem {
@@ -529,6 +530,18 @@ ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options
   return r;
 }
 
+namespace {
+
+// A verification as the item runner carries it (studies/position_runner.hpp).
+struct VerificationRow {
+  Verification v;
+  bool ok = false;
+  std::string error;
+  double seconds = 0;
+};
+
+} // namespace
+
 std::vector<Verification> verify_commutation(const CaseSpec& spec, const ActuatorOptions& options,
                                              const ActuatorResult& r) {
   std::vector<std::size_t> at{0, r.orientations.size() / 2, r.orientations.size() - 1};
@@ -537,29 +550,61 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
   ov.mesh_scale = options.mesh_scale;
   ov.order = options.order;
   ov.progress = options.progress;
+  // One item per demand and orientation, in the order they are reported.
+  std::vector<std::pair<std::size_t, std::size_t>> items; // (demand, orientation)
+  for (std::size_t d = 0; d < r.demands.size(); ++d)
+    for (const std::size_t i : at)
+      items.emplace_back(d, i);
+  using Item = std::pair<std::size_t, std::size_t>;
+  const auto planned = [&](const Item& item) {
+    const ActuatorDemand& d = r.demands[item.first];
+    return Verification{d.name, r.orientations[item.second], d.torque_Nm, Eigen::Vector3d::Zero(),
+                        false};
+  };
+  const PositionCodec<VerificationRow, Item> codec{
+      [](const VerificationRow& row) {
+        const Eigen::Vector3d& t = row.v.produced_Nm;
+        return nlohmann::json{{"produced_Nm", {t.x(), t.y(), t.z()}}, {"solved", row.v.ok}};
+      },
+      [&](const nlohmann::json& j, const Item& item) -> std::optional<VerificationRow> {
+        VerificationRow row;
+        row.v = planned(item);
+        for (int k = 0; k < 3; ++k)
+          row.v.produced_Nm[k] = j.at("produced_Nm").at(k).get<double>();
+        row.v.ok = j.at("solved").get<bool>();
+        return row;
+      },
+      {}};
+  const auto rows = run_items<VerificationRow, Item>(
+      items, 1, nullptr, codec,
+      [&](VerificationRow& row, const Item& item) {
+        row.v = planned(item);
+        const Commutation& c = r.demands[item.first].commutations[item.second];
+        if (!c.ok)
+          return; // ill-conditioned: no currents to verify
+        try {
+          if (options.progress)
+            options.progress->note("verify " + row.v.demand + " at (" + angles(row.v.orientation) +
+                                   " deg): FE with the commutated currents");
+          CaseSpec s = turned(spec, options.rotor, row.v.orientation);
+          for (std::size_t k = 0; k < s.geometry3d.coils.size(); ++k)
+            s.geometry3d.coils[k].current = c.currents(static_cast<Eigen::Index>(k));
+          s.probes.clear();
+          s.forces.clear();
+          s.write_vtu = false;
+          s.coil_inductance = false;
+          const auto run = run_case_3d(std::move(s), ov);
+          for (const auto& cr : run->coil_results.coils)
+            row.v.produced_Nm += cr.torque_Nm;
+          row.v.ok = true;
+        } catch (...) { // a solve that fails ends the command, as a serial run's does
+          throw EndsRun{std::current_exception()};
+        }
+      },
+      {}, options.world);
   std::vector<Verification> out;
-  for (const auto& d : r.demands)
-    for (const std::size_t i : at) {
-      Verification v{d.name, r.orientations[i], d.torque_Nm, Eigen::Vector3d::Zero(), false};
-      const Commutation& c = d.commutations[i];
-      if (c.ok) {
-        if (options.progress)
-          options.progress->note("verify " + d.name + " at (" + angles(v.orientation) +
-                                 " deg): FE with the commutated currents");
-        CaseSpec s = turned(spec, options.rotor, v.orientation);
-        for (std::size_t k = 0; k < s.geometry3d.coils.size(); ++k)
-          s.geometry3d.coils[k].current = c.currents(static_cast<Eigen::Index>(k));
-        s.probes.clear();
-        s.forces.clear();
-        s.write_vtu = false;
-        s.coil_inductance = false;
-        const auto run = run_case_3d(std::move(s), ov);
-        for (const auto& cr : run->coil_results.coils)
-          v.produced_Nm += cr.torque_Nm;
-        v.ok = true;
-      }
-      out.push_back(v);
-    }
+  for (const auto& row : rows)
+    out.push_back(row.v);
   return out;
 }
 
@@ -610,6 +655,12 @@ int run_actuator_command(ActuatorOptions options) {
   const CaseSpec spec = read_case(options.case_file, options.parameters);
   check_actuator_case(spec, options.rotor);
   const ActuatorResult r = run_actuator(spec, options, orientations);
+  // Under mpirun every process has computed r (the currents to verify); the verification
+  // solves are dealt, and rank 0 alone writes and reports.
+  const std::vector<Verification> verification =
+      options.verify ? verify_commutation(spec, options, r) : std::vector<Verification>{};
+  if (!options.world.is_root())
+    return code_of_root(0);
 
   std::filesystem::create_directories(options.out_dir);
   OutputStage stage(options.out_dir);
@@ -661,9 +712,7 @@ int run_actuator_command(ActuatorOptions options) {
       avg += power_stats(d).avg / 3;
     j["P_xyz_avg_W"] = avg;
   }
-  std::vector<Verification> verification;
   if (options.verify) {
-    verification = verify_commutation(spec, options, r);
     j["verification"] = nlohmann::ordered_json::array();
     for (const auto& v : verification) {
       nlohmann::ordered_json e;
@@ -722,7 +771,8 @@ int run_actuator_command(ActuatorOptions options) {
   std::printf("wrote    %s/summary.json, torque_constants.csv, commutation%s.csv%s\n",
               options.out_dir.c_str(), options.torque_Nm ? "" : "_{x,y,z}",
               plotted ? ", power_map.png" : "");
-  return 0;
+  std::fflush(stdout);
+  return code_of_root(0);
 }
 
 } // namespace magfem

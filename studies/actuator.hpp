@@ -13,7 +13,8 @@
 //
 // --verify: at the first, middle and last orientation, FE with the commutated currents in the
 // coils (the rotor turned into place): the Lorentz torque on all coils together against T_d.
-// It includes what Gamma leaves out (the coils' pull on the iron, ~i^2).
+// It includes what Gamma leaves out (the coils' pull on the iron, ~i^2). Under mpirun
+// (`mpirun -n N magfem actuator ... --verify`) these solves are dealt to the processes.
 //
 // Orientation (rx, ry, rz) in degrees: the rotor turned first by rx about the fixed x axis,
 // then by ry about the fixed y axis, then by rz about the fixed z axis, all through the
@@ -36,6 +37,7 @@
 #include "casefile/case_parameter.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/option_table.hpp"
+#include "solver/mpi_context.hpp"
 
 namespace magfem {
 class Progress;
@@ -75,6 +77,10 @@ struct ActuatorOptions {
   std::string out_dir;
   bool quiet = false;           // --quiet: no progress lines
   Progress* progress = nullptr; // console progress (not owned); null = silent
+  // Under mpirun (--verify): the processes the verification solves are dealt to
+  // (studies/position_runner.hpp); every process computes the torque constants and
+  // commutations (they choose the currents), rank 0 alone gets the verifications and writes.
+  MpiWorld world{};
 };
 
 // Parses the arguments after `actuator`; throws InputError naming the option.
@@ -108,7 +114,8 @@ struct Verification {
   bool ok = false;                                       // false: ill-conditioned, not solved
 };
 
-// The --verify solves (see above); options.mesh_scale and options.order apply.
+// The --verify solves (see above); options.mesh_scale and options.order apply. Under mpirun
+// (options.world) every process calls this; rank 0 gets the verifications, the others none.
 std::vector<Verification> verify_commutation(const CaseSpec& spec, const ActuatorOptions& options,
                                              const ActuatorResult& result);
 

@@ -1,30 +1,36 @@
 #pragma once
-// The one position loop of every sweep (3D and planar rotate and move, axisymmetric move): the
-// positions of a sweep are independent solves, taken from the checkpoint when an earlier run
-// finished them (--resume), else computed on a pool of `workers` threads (the calling thread
-// is one of them) and recorded as each finishes; failed positions are not recorded, so that
-// --resume tries them again. Rows come back in the order of the positions whatever the order
-// they finished in. solve(row, position) fills a fresh row; the runner times it, and an
-// exception becomes the row's error (ok false): a failed position never stops the others.
+// The one loop over independent items (run_items): a sweep's positions (3D and planar
+// rotate and move, axisymmetric move; run_positions is the sweeps' form), a study's designs,
+// validate's catalogue entries and actuator --verify's solves. Items are taken from the
+// checkpoint when an earlier run finished them (--resume), else computed on a pool of
+// `workers` threads (the calling thread is one of them) and recorded as each finishes; failed
+// items are not recorded, so that --resume tries them again. Rows come back in the order of
+// the items whatever the order they finished in. solve(row, item) fills a fresh row; the
+// runner times it, and an exception becomes the row's error (ok false): a failed item never
+// stops the others (EndsRun below is the exception that does).
 // A stop asked through `cancel` (Ctrl-C in Python, python/background_call.hpp) starts no
-// further position: the positions under way finish, the others come back as default rows
-// (ok false, no error), which the caller throws away.
+// further item: the items under way finish, the others come back as default rows (ok false,
+// no error), which the caller throws away.
 //
-// Under mpirun (`world` distributed) the positions are dealt to the processes instead, one at
-// a time as each asks (solver/mpi_context.hpp WorkDealer); each process solves its positions
-// on its own `workers` threads, each position a serial solve of that process, and sends each
-// row to rank 0 as it finishes. Rank 0 alone reads and writes the checkpoint (it deals only
-// the positions missing from it), records the rows as they arrive, and alone gets the rows
-// back (in the order of the positions, as a serial run would); the others get none.
+// Under mpirun (`world` distributed) the items are dealt to the processes instead, one at a
+// time as each asks (solver/mpi_context.hpp WorkDealer); each process solves its items on its
+// own `workers` threads, each item a serial computation of that process, and sends each row
+// (its JSON codec, doubles exact) to rank 0 as it finishes. Rank 0 alone reads and writes the
+// checkpoint (it deals only the items missing from it), records the rows as they arrive, and
+// alone gets the rows back (in the order of the items, as a serial run would); the others get
+// none.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <optional>
+#include <stdexcept>
 #include <stop_token>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -35,9 +41,34 @@
 
 namespace magfem {
 
-template <class Row> struct PositionCodec {
+// A row to and from its checkpoint record. An item is what the runner deals (a sweep's
+// position, a study's design, a validation entry); `key` names it in the checkpoint (empty: a
+// position's exact value, RunCheckpoint::key_of). from_json gives nothing for a record of
+// another shape, which is then computed again.
+template <class Row, class Item = double> struct PositionCodec {
   std::function<nlohmann::json(const Row&)> to_json; // a finished row, for the checkpoint
-  std::function<Row(const nlohmann::json&, double position)> from_json; // a restored row (ok)
+  std::function<std::optional<Row>(const nlohmann::json&, const Item&)> from_json;
+  std::function<std::string(const Item&)> key;
+
+  std::string key_of(const Item& item) const {
+    if (key)
+      return key(item);
+    if constexpr (std::is_arithmetic_v<Item>)
+      return RunCheckpoint::key_of(item);
+    else
+      throw std::logic_error("PositionCodec: a non-numeric item needs a key");
+  }
+};
+
+// After each row (restored from the checkpoint or computed, here or on another process):
+// the row, how many are done of how many, and whether the checkpoint had it. Serialized.
+template <class Row>
+using RowProgress = std::function<void(const Row& row, int done, int total, bool restored)>;
+
+// Thrown by a solve to end the whole run instead of failing its item (an option that is bad
+// for every item, which should be reported once, as bad input): run_items throws `error`.
+struct EndsRun {
+  std::exception_ptr error;
 };
 
 // Position workers of one process by default (--jobs not given): one per core, or under
@@ -50,13 +81,15 @@ inline int default_position_workers(const MpiWorld& world, int requested, int n_
 
 namespace position_detail {
 
-// One position: solved, timed, and its exception (if any) become the row's error.
-template <class Row>
-void solve_timed(Row& row, double position, const std::function<void(Row&, double)>& solve) {
+// One item: solved, timed, and its exception (if any) become the row's error. A solve may
+// also mark its row failed itself (ok false: a validation entry out of its tolerance is a
+// result to report, but is not kept in the checkpoint, so that --resume evaluates it again).
+template <class Row, class Item>
+void solve_timed(Row& row, const Item& item, const std::function<void(Row&, const Item&)>& solve) {
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    solve(row, position);
     row.ok = true;
+    solve(row, item);
   } catch (const std::exception& e) {
     row.ok = false;
     row.error = e.what();
@@ -66,16 +99,21 @@ void solve_timed(Row& row, double position, const std::function<void(Row&, doubl
 
 // A row as it travels to rank 0: the checkpoint's fields (doubles exact) plus what the
 // checkpoint leaves out, the outcome (a failed row is reported in summary.json too).
-template <class Row> std::string row_to_wire(const Row& row, const PositionCodec<Row>& codec) {
+template <class Row, class Item>
+std::string row_to_wire(const Row& row, const PositionCodec<Row, Item>& codec) {
   return nlohmann::json{
       {"ok", row.ok}, {"error", row.error}, {"seconds", row.seconds}, {"row", codec.to_json(row)}}
       .dump();
 }
 
-template <class Row>
-Row row_from_wire(const std::string& text, double position, const PositionCodec<Row>& codec) {
+template <class Row, class Item>
+Row row_from_wire(const std::string& text, const Item& item,
+                  const PositionCodec<Row, Item>& codec) {
   const auto j = nlohmann::json::parse(text);
-  Row row = codec.from_json(j.at("row"), position);
+  const std::optional<Row> read = codec.from_json(j.at("row"), item);
+  if (!read) // the same build wrote it: a bug, not a user's input
+    throw std::logic_error("a row sent by another process does not read back");
+  Row row = *read;
   row.ok = j.at("ok").get<bool>();
   row.error = j.at("error").get<std::string>();
   row.seconds = j.at("seconds").get<double>();
@@ -118,31 +156,37 @@ private:
   std::vector<std::jthread> threads_; // last: stopped and joined first
 };
 
-// Rank 0: deals the positions the checkpoint lacks, solves some on its own workers while its
+// The checkpoint's record of `item`, if it has one of this build's shape.
+template <class Row, class Item>
+std::optional<Row> restored_row(RunCheckpoint* checkpoint, const Item& item,
+                                const PositionCodec<Row, Item>& codec) {
+  const auto saved = checkpoint ? checkpoint->find(codec.key_of(item)) : std::nullopt;
+  return saved ? codec.from_json(*saved, item) : std::nullopt;
+}
+
+// Rank 0: deals the items the checkpoint lacks, solves some on its own workers while its
 // calling thread serves the other processes, and keeps every row as it arrives.
-template <class Row>
-std::vector<Row> deal_positions(const std::vector<double>& positions, int workers,
-                                RunCheckpoint* checkpoint, const PositionCodec<Row>& codec,
-                                const std::function<void(Row&, double)>& solve,
-                                const std::function<void(int done, int total)>& progress) {
-  const int total = static_cast<int>(positions.size());
-  std::vector<Row> rows(positions.size());
+template <class Row, class Item>
+std::vector<Row> deal_items(const std::vector<Item>& items, int workers, RunCheckpoint* checkpoint,
+                            const PositionCodec<Row, Item>& codec,
+                            const std::function<void(Row&, const Item&)>& solve,
+                            const RowProgress<Row>& progress) {
+  const int total = static_cast<int>(items.size());
+  std::vector<Row> rows(items.size());
   std::vector<int> todo;
   int done = 0;
   std::mutex mutex;
-  const auto keep = [&](int i, Row&& row) {
-    if (checkpoint && row.ok)
-      checkpoint->record(RunCheckpoint::key_of(positions[i]), codec.to_json(row));
+  const auto keep = [&](int i, Row&& row, bool restored) {
+    if (checkpoint && row.ok && !restored)
+      checkpoint->record(codec.key_of(items[i]), codec.to_json(row));
     const std::lock_guard<std::mutex> lock(mutex);
     rows[i] = std::move(row);
     if (progress)
-      progress(++done, total);
+      progress(rows[i], ++done, total, restored);
   };
   for (int i = 0; i < total; ++i) {
-    const auto saved =
-        checkpoint ? checkpoint->find(RunCheckpoint::key_of(positions[i])) : std::nullopt;
-    if (saved)
-      keep(i, codec.from_json(*saved, positions[i]));
+    if (auto saved = restored_row(checkpoint, items[i], codec))
+      keep(i, std::move(*saved), true);
     else
       todo.push_back(i);
   }
@@ -151,30 +195,30 @@ std::vector<Row> deal_positions(const std::vector<double>& positions, int worker
   pool.start(workers, [&](int w, std::stop_token stop) {
     for (int i; !stop.stop_requested() && (i = dealer.next(w)) >= 0;) {
       Row row;
-      solve_timed(row, positions[i], solve);
-      keep(i, std::move(row));
+      solve_timed(row, items[i], solve);
+      keep(i, std::move(row), false);
     }
   });
   dealer.serve([&](int i, const std::string& text) {
-    keep(i, row_from_wire<Row>(text, positions[i], codec));
+    keep(i, row_from_wire<Row>(text, items[i], codec), false);
   });
   pool.join();
   return rows;
 }
 
-// The other processes: ask rank 0 for positions until none is left, sending each row back
-// with the next request.
-template <class Row>
-void solve_dealt_positions(const std::vector<double>& positions, int workers,
-                           const PositionCodec<Row>& codec,
-                           const std::function<void(Row&, double)>& solve) {
+// The other processes: ask rank 0 for items until none is left, sending each row back with
+// the next request.
+template <class Row, class Item>
+void solve_dealt_items(const std::vector<Item>& items, int workers,
+                       const PositionCodec<Row, Item>& codec,
+                       const std::function<void(Row&, const Item&)>& solve) {
   WorkDealer dealer({}, workers);
   const auto work = [&](int w, std::stop_token stop) {
     int finished = -1;
     std::string result;
     for (int i; !stop.stop_requested() && (i = dealer.next(w, finished, result)) >= 0;) {
       Row row;
-      solve_timed(row, positions[i], solve);
+      solve_timed(row, items[i], solve);
       finished = i;
       result = row_to_wire(row, codec);
     }
@@ -185,49 +229,42 @@ void solve_dealt_positions(const std::vector<double>& positions, int workers,
   pool.join();
 }
 
-} // namespace position_detail
-
-template <class Row>
-std::vector<Row> run_positions(const std::vector<double>& positions, int workers,
-                               RunCheckpoint* checkpoint, const PositionCodec<Row>& codec,
-                               const std::function<void(Row&, double)>& solve,
-                               const std::function<void(int done, int total)>& progress,
-                               const MpiWorld& world = {}, std::stop_token cancel = {}) {
-  using namespace position_detail;
-  // Positions are a sweep's parallelism (threads, processes); a position's own BLAS stays on
-  // one thread, so that its result does not depend on how many there are: a sweep's outputs
-  // are the same bits with any --jobs and under mpirun with any number of processes (whose
-  // binding to cores would otherwise give each a different OpenBLAS thread count).
-  const BlasThreads one_blas_thread(1);
+// Serially on `workers` threads, or dealt across the processes of `world`.
+template <class Row, class Item>
+std::vector<Row> run_items_here(const std::vector<Item>& items, int workers,
+                                RunCheckpoint* checkpoint, const PositionCodec<Row, Item>& codec,
+                                const std::function<void(Row&, const Item&)>& solve,
+                                const RowProgress<Row>& progress, const MpiWorld& world,
+                                std::stop_token cancel) {
   if (world.distributed()) {
     // Without MPI_THREAD_MULTIPLE only one thread of a process may call MPI: rank 0 then
-    // only deals, and every other process solves one position at a time.
+    // only deals, and every other process solves one item at a time.
     if (world.is_root())
-      return deal_positions(positions, world.any_thread_calls_mpi ? workers : 0, checkpoint, codec,
-                            solve, progress);
-    solve_dealt_positions(positions, world.any_thread_calls_mpi ? workers : 1, codec, solve);
+      return deal_items(items, world.any_thread_calls_mpi ? workers : 0, checkpoint, codec, solve,
+                        progress);
+    solve_dealt_items(items, world.any_thread_calls_mpi ? workers : 1, codec, solve);
     return {};
   }
-  const int total = static_cast<int>(positions.size());
-  std::vector<Row> rows(positions.size());
+  const int total = static_cast<int>(items.size());
+  std::vector<Row> rows(items.size());
   std::atomic<int> next{0};
   int done = 0;
   std::mutex mutex;
   const auto work = [&](int, std::stop_token stop) {
     for (int i; !stop.stop_requested() && !cancel.stop_requested() && (i = next++) < total;) {
-      const std::string key = RunCheckpoint::key_of(positions[i]);
-      const auto saved = checkpoint ? checkpoint->find(key) : std::nullopt;
+      auto saved = restored_row(checkpoint, items[i], codec);
       if (saved) {
-        rows[i] = codec.from_json(*saved, positions[i]);
+        rows[i] = std::move(*saved);
       } else {
-        solve_timed(rows[i], positions[i], solve);
+        rows[i] = Row{};
+        solve_timed(rows[i], items[i], solve);
         if (checkpoint && rows[i].ok)
-          checkpoint->record(key, codec.to_json(rows[i]));
+          checkpoint->record(codec.key_of(items[i]), codec.to_json(rows[i]));
       }
       const std::lock_guard<std::mutex> lock(mutex);
       ++done;
       if (progress)
-        progress(done, total);
+        progress(rows[i], done, total, saved.has_value());
     }
   };
   WorkerPool pool;
@@ -235,6 +272,45 @@ std::vector<Row> run_positions(const std::vector<double>& positions, int workers
   pool.run_here(0, work);
   pool.join();
   return rows;
+}
+
+} // namespace position_detail
+
+// The independent items of a run (a sweep's positions, a study's designs, validation
+// entries), serially on `workers` threads or dealt across the processes of `world`, as the
+// header says; rows in the order of `items` (none on the processes other than rank 0).
+template <class Row, class Item>
+std::vector<Row> run_items(const std::vector<Item>& items, int workers, RunCheckpoint* checkpoint,
+                           const PositionCodec<Row, Item>& codec,
+                           const std::function<void(Row&, const Item&)>& solve,
+                           const RowProgress<Row>& progress, const MpiWorld& world = {},
+                           std::stop_token cancel = {}) {
+  using namespace position_detail;
+  // Items are a run's parallelism (threads, processes); an item's own BLAS stays on one
+  // thread, so that its result does not depend on how many there are: the outputs are the
+  // same bits with any --jobs and under mpirun with any number of processes (whose binding
+  // to cores would otherwise give each a different OpenBLAS thread count).
+  const BlasThreads one_blas_thread(1);
+  try {
+    return run_items_here(items, workers, checkpoint, codec, solve, progress, world, cancel);
+  } catch (const EndsRun& end) {
+    std::rethrow_exception(end.error);
+  }
+}
+
+// A sweep's positions (a number each: degrees or metres), with a progress that counts.
+template <class Row>
+std::vector<Row> run_positions(const std::vector<double>& positions, int workers,
+                               RunCheckpoint* checkpoint, const PositionCodec<Row>& codec,
+                               const std::function<void(Row&, double)>& solve,
+                               const std::function<void(int done, int total)>& progress,
+                               const MpiWorld& world = {}, std::stop_token cancel = {}) {
+  RowProgress<Row> counted;
+  if (progress)
+    counted = [&](const Row&, int done, int total, bool) { progress(done, total); };
+  return run_items<Row, double>(
+      positions, workers, checkpoint, codec,
+      [&](Row& row, const double& position) { solve(row, position); }, counted, world, cancel);
 }
 
 } // namespace magfem

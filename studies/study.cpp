@@ -14,6 +14,7 @@
 #include "core/output_stage.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "studies/position_runner.hpp"
 #include "studies/study_plot.hpp"
 
 namespace magfem {
@@ -98,6 +99,9 @@ StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<doubl
     const CaseSpec spec = o.read ? o.read(overrides) : read_case(o.case_file, overrides);
     SweepOptions so = o.sweep;
     so.angles_deg = design_angles(o);
+    // A design's sweep stays on its process (its positions on that process's threads), with
+    // the process's share of the machine's cores and memory.
+    so.world = MpiWorld{0, 1, o.world.size_on_node, false};
     const auto rows = run_sweep(spec, so);
     const Eigen::Vector3d axis = so.axis.normalized();
     const std::size_t n_peak = rows.size() - [&] {
@@ -240,19 +244,20 @@ nlohmann::json design_to_json(const StudyDesign& d) {
           {"seconds", d.seconds}};
 }
 
-// A recorded design, if its record has the shape this build writes (else it is evaluated
-// again, as a line cut short by the interrupt is).
-std::optional<StudyDesign> design_from_json(const nlohmann::json& j, std::size_t n_objectives) {
+// A recorded design (from the checkpoint, or from another process under mpirun, failed ones
+// too), if its record has the shape this build writes (else it is evaluated again, as a line
+// cut short by the interrupt is). The checkpoint's identity names the objectives, so a record
+// has as many as the options.
+std::optional<StudyDesign> design_from_json(const nlohmann::json& j,
+                                            const std::vector<double>& values) {
   try {
     StudyDesign d;
-    d.parameters = j.at("parameters").get<std::vector<double>>();
+    d.parameters = values;
     d.objectives = j.at("objectives").get<std::vector<double>>();
     d.method = j.at("method").get<std::string>();
     d.torque_accuracy = j.at("torque_accuracy").get<double>();
     d.seconds = j.at("seconds").get<double>();
     d.ok = true;
-    if (d.objectives.size() != n_objectives)
-      return std::nullopt;
     return d;
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;
@@ -285,7 +290,8 @@ std::string study_checkpoint_identity(const StudyOptions& o) {
 std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* checkpoint,
                                    const std::function<void(int, int)>& on_design) {
   // Fail early for names the file does not declare (read_case names them as --param); the
-  // first design's own problems (crossing radii) are that design's, reported with it.
+  // first design's own problems (crossing radii) are that design's, reported with it. Under
+  // mpirun every process checks alike, so that all end with the same exit code.
   try {
     ParameterOverrides check;
     for (const auto& p : options.parameters)
@@ -305,34 +311,41 @@ std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* c
       }
     grid = std::move(next);
   }
-  std::vector<StudyDesign> designs;
   // A line every 2 s at most (an analytic grid of hundreds of designs takes seconds; an FE
   // design takes minutes and gets its own line).
   auto last = std::chrono::steady_clock::now();
-  for (const auto& values : grid) {
-    if (options.sweep.stop.stop_requested())
-      break;
-    const std::string key = design_key(values);
-    std::optional<StudyDesign> restored;
-    if (checkpoint)
-      if (const auto saved = checkpoint->find(key))
-        restored = design_from_json(*saved, options.objectives.size());
-    if (restored) {
-      designs.push_back(std::move(*restored));
-    } else {
-      designs.push_back(evaluate_study_design(options, values));
-      if (checkpoint && designs.back().ok) // failed designs are tried again on --resume
-        checkpoint->record(key, design_to_json(designs.back()));
-    }
+  const RowProgress<StudyDesign> progress = [&](const StudyDesign& d, int done, int total, bool) {
     const auto now = std::chrono::steady_clock::now();
-    if (!options.quiet && (now - last > std::chrono::seconds(2) || designs.size() == grid.size())) {
-      std::fprintf(stderr, "study: design %zu/%zu done (%.1f s)%s\n", designs.size(), grid.size(),
-                   designs.back().seconds, designs.back().ok ? "" : ", failed");
+    if (!options.quiet && (now - last > std::chrono::seconds(2) || done == total)) {
+      std::fprintf(stderr, "study: design %d/%d done (%.1f s)%s\n", done, total, d.seconds,
+                   d.ok ? "" : ", failed");
       last = now;
     }
     if (on_design)
-      on_design(static_cast<int>(designs.size()), static_cast<int>(grid.size()));
-  }
+      on_design(done, total);
+  };
+  const PositionCodec<StudyDesign, std::vector<double>> codec{
+      design_to_json,
+      [&](const nlohmann::json& j, const std::vector<double>& values) {
+        return design_from_json(j, values);
+      },
+      design_key};
+  // One design at a time on each process (a design's positions are its sweep's, on the
+  // process's threads); under mpirun the designs are dealt to the processes.
+  std::vector<StudyDesign> designs = run_items<StudyDesign, std::vector<double>>(
+      grid, 1, checkpoint, codec,
+      [&](StudyDesign& d, const std::vector<double>& values) {
+        try {
+          d = evaluate_study_design(options, values);
+        } catch (const InputError&) { // an option bad for every design: bad input, once
+          throw EndsRun{std::current_exception()};
+        }
+      },
+      progress, options.world, options.sweep.stop);
+  // A stop leaves the designs not started as default rows (no parameters): not returned.
+  std::erase_if(designs, [&](const StudyDesign& d) {
+    return d.parameters.size() != options.parameters.size();
+  });
   return designs;
 }
 
@@ -395,11 +408,18 @@ nlohmann::ordered_json study_summary(const StudyOptions& options,
 }
 
 int run_study_command(const StudyOptions& options) {
-  RunCheckpoint checkpoint(options.out_dir, study_checkpoint_identity(options), options.resume);
-  if (checkpoint.n_restored())
-    std::fprintf(stderr, "magfem: --resume: %zu finished designs from the checkpoint\n",
-                 checkpoint.n_restored());
-  const auto designs = run_study(options, &checkpoint);
+  // Under mpirun rank 0 alone keeps the checkpoint (the others send it their designs), and
+  // alone writes and reports; every process ends with its exit code.
+  std::optional<RunCheckpoint> checkpoint;
+  if (options.world.is_root()) {
+    checkpoint.emplace(options.out_dir, study_checkpoint_identity(options), options.resume);
+    if (checkpoint->n_restored())
+      std::fprintf(stderr, "magfem: --resume: %zu finished designs from the checkpoint\n",
+                   checkpoint->n_restored());
+  }
+  const auto designs = run_study(options, checkpoint ? &*checkpoint : nullptr);
+  if (!options.world.is_root())
+    return code_of_root(0);
   std::filesystem::create_directories(options.out_dir);
   OutputStage stage(options.out_dir);
   stage.write_text("study.csv", study_csv(options, designs));
@@ -419,7 +439,7 @@ int run_study_command(const StudyOptions& options) {
   const int failed = j["failed_designs"];
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
-  checkpoint.remove();
+  checkpoint->remove();
 
   for (const auto& p : options.parameters)
     std::printf("%14s", p.name.c_str());
@@ -443,11 +463,10 @@ int run_study_command(const StudyOptions& options) {
                 method == "harmonic_interaction" ? "truncation bound" : "estimate");
   std::printf("wrote    %s/study.csv%s, summary.json\n", options.out_dir.c_str(),
               plotted ? ", study.png" : "");
-  if (failed) {
+  std::fflush(stdout);
+  if (failed)
     std::cerr << "magfem: " << failed << " of " << designs.size() << " designs failed\n";
-    return 3;
-  }
-  return 0;
+  return code_of_root(failed ? 3 : 0);
 }
 
 } // namespace magfem

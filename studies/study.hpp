@@ -13,6 +13,10 @@
 //
 // Every finished design is kept in DIR/.magfem-checkpoint.jsonl as it finishes
 // (pipeline/run_checkpoint.hpp, the sweep's); --resume restores them and evaluates the rest.
+//
+// Under mpirun (`mpirun -n N magfem study ...`) the designs are dealt to the processes one at
+// a time as each finishes one (studies/position_runner.hpp, the sweep's dealer); rank 0 keeps
+// the checkpoint and writes the outputs of the serial run.
 #include <functional>
 #include <string>
 #include <vector>
@@ -51,6 +55,10 @@ struct StudyOptions {
   // Reads the case with a design's parameter values; empty: read_case(case_file, ..). Python
   // sets it for a case given as YAML text (magfem.Case.from_dict), which has no file.
   std::function<CaseSpec(const ParameterOverrides&)> read;
+  // Under mpirun: the processes the designs are dealt to (studies/position_runner.hpp), each
+  // design's sweep on its process's threads (sweep.jobs, else its share of the machine's
+  // cores); rank 0 alone gets the designs back and keeps the checkpoint.
+  MpiWorld world{};
 };
 
 // Parses the arguments after `study`; throws InputError naming the option.
@@ -83,7 +91,8 @@ StudyDesign evaluate_study_design(const StudyOptions& options, const std::vector
 // With a checkpoint, a design it holds is restored instead of evaluated, and every design
 // that succeeds is recorded in it as it finishes (failed ones are evaluated again on resume).
 // on_design(done, total) after each design; a stop asked through options.sweep.stop starts
-// no further design (those returned are the ones done).
+// no further design (those returned are the ones done). Under mpirun (options.world) every
+// process calls this; rank 0 gets the designs, the others none.
 std::vector<StudyDesign>
 run_study(const StudyOptions& options, RunCheckpoint* checkpoint = nullptr,
           const std::function<void(int done, int total)>& on_design = nullptr);

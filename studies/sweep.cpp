@@ -509,7 +509,7 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     fe.parallel_runs = at_once,
     fe.shared_memory_mb = jobs.memory_limit_mb * options.world.size_on_node;
   return run_positions<SweepRow>(
-      positions, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      positions, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json, {}},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
       progress, options.world, options.stop);
 }

@@ -117,7 +117,7 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
   const int n_jobs =
       default_position_workers(o.world, o.jobs, static_cast<int>(o.positions_m.size()));
   return run_positions<AxiSweepRow>(
-      o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json},
+      o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json, {}},
       [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress, o.world,
       o.stop);
 }

@@ -141,7 +141,7 @@ std::vector<SweepRow> run_sweep_planar(const CaseSpec& spec, const SweepOptions&
   if (jobs)
     jobs->requested = jobs->used = workers;
   return run_positions<SweepRow>(
-      positions, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      positions, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json, {}},
       [&](SweepRow& row, double position) { solve_position(row, spec, o, position); }, progress,
       o.world, o.stop);
 }

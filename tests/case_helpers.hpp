@@ -16,6 +16,32 @@ inline std::string example(const std::string& relative) {
   return std::string(magfem::test::source_dir()) + "/examples/" + relative;
 }
 
+// A small actuator the suite can solve by FE in seconds: a 2 x 4 segment array (7..10 mm) on
+// the rotor inside six ring coils on the sphere (11..14 mm), three above and three below the
+// equator, no iron; the refined air over the coils starts at mid-gap, apart from the turning
+// rotor. Coarse on purpose (68k tetrahedra at order 2, a few seconds).
+inline const char* small_actuator_case = R"(title: small spherical actuator (test)
+dimension: 3
+unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
+regions:
+  - {name: m, shape: segment_array, r_inner: 7, r_outer: 10, theta: [0, 180], phi: [0, 360],
+     p_theta: 2, p_phi: 4, material: pm, pattern: {type: parallel_alternating, convention: centre},
+     group: rotor, mesh_size: 3}
+  - {name: coil_space, shape: spherical_segment, r_inner: 10.5, r_outer: 15, mesh_size: 2.5}
+coils:
+  - {name: a1, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 0], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: a2, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 120], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: a3, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 240], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: b1, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 60], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: b2, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 180], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+  - {name: b3, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 300], turns: 100, current: 0, fill_factor: 0.7, group: stator}
+boundary: {type: open, radius: 25, shell_ratio: 1.5}
+mesh: {size: 6, chord_tolerance: 0.3}
+solver: {order: 2}
+)";
+
 // Writes `text` to a fresh temporary case file and returns its path.
 // Thick solenoid in air (examples/axi/solenoid.yaml's winding: r 10..15 mm, z -15..15 mm, 500
 // turns at 2 A), meshed coarsely so that an adaptive loop has to find where the sizes matter.

@@ -1,20 +1,19 @@
 #include "validation/validate.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <mutex>
+#include <numeric>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "studies/position_runner.hpp"
 #include "validation/validate_checkpoint.hpp"
 #include "validation/validate_report.hpp"
 
@@ -199,50 +198,61 @@ ValidationRun select_validation(const ValidateOptions& options) {
   run.results.resize(selected.size());
   for (std::size_t i = 0; i < selected.size(); ++i)
     run.results[i].entry = selected[i];
-  const int n_hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = threads_per_process(options.world); // every core in a serial run
   run.jobs = std::max(
-      1, std::min<int>(options.jobs > 0 ? options.jobs : n_hw, static_cast<int>(selected.size())));
+      1, std::min<int>(options.jobs > 0 ? options.jobs : cores, static_cast<int>(selected.size())));
   return run;
 }
+
+namespace {
+
+// An entry as the item runner carries it (studies/position_runner.hpp): ok false for a
+// failed entry, which is reported but not kept in the checkpoint (--resume evaluates it
+// again).
+struct EntryRow {
+  EntryResult result;
+  bool ok = false;
+  std::string error;
+  double seconds = 0;
+};
+
+} // namespace
 
 void evaluate_validation(ValidationRun& run, RunCheckpoint* checkpoint,
                          const ValidationProgress& progress, std::stop_token stop) {
   const auto t_start = Clock::now();
-  ComputeCache cache;
-  std::atomic<std::size_t> next{0};
-  std::mutex report_mutex;
-  int done = 0;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < run.results.size() && !stop.stop_requested(); i = next++) {
-      EntryResult& r = run.results[i];
-      bool resumed = false;
-      if (const auto saved = checkpoint ? checkpoint->find(r.entry->id) : std::nullopt) {
+  ComputeCache cache; // this process's: under mpirun each process computes what it needs
+  std::vector<std::size_t> items(run.results.size());
+  std::iota(items.begin(), items.end(), std::size_t{0});
+  const PositionCodec<EntryRow, std::size_t> codec{
+      [](const EntryRow& row) { return entry_to_checkpoint(row.result); },
+      [&](const nlohmann::json& j, const std::size_t& i) -> std::optional<EntryRow> {
+        EntryRow row;
+        row.result.entry = run.results[i].entry;
         try {
-          entry_from_checkpoint(*saved, r);
-          resumed = true;
-        } catch (const std::exception&) {
-          const CatalogueEntry* entry = r.entry; // a record of another shape: evaluate again
-          r = EntryResult();
-          r.entry = entry;
+          entry_from_checkpoint(j, row.result);
+        } catch (const std::exception&) { // a record of another shape: evaluate again
+          return std::nullopt;
         }
-      }
-      if (!resumed) {
-        evaluate(r, run.options.tier, cache);
-        if (checkpoint && r.status != "fail")
-          checkpoint->record(r.entry->id, entry_to_checkpoint(r));
-      }
-      std::lock_guard<std::mutex> lock(report_mutex);
-      ++done;
-      if (progress)
-        progress(r, done, since(t_start), resumed);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < run.jobs; ++t)
-    pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool)
-    t.join();
+        row.ok = row.result.status != "fail";
+        return row;
+      },
+      [&](const std::size_t& i) { return run.results[i].entry->id; }};
+  auto rows = run_items<EntryRow, std::size_t>(
+      items, run.jobs, checkpoint, codec,
+      [&](EntryRow& row, const std::size_t& i) {
+        row.result.entry = run.results[i].entry;
+        evaluate(row.result, run.options.tier, cache);
+        row.ok = row.result.status != "fail";
+      },
+      [&](const EntryRow& row, int done, int, bool restored) {
+        if (progress)
+          progress(row.result, done, since(t_start), restored);
+      },
+      run.options.world, stop);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].result.entry) // not stopped before it started
+      run.results[i] = std::move(rows[i].result);
   run.wall_seconds = since(t_start);
 }
 
@@ -254,21 +264,27 @@ int run_validate(const ValidateOptions& options) {
       "tier=" + to_string(options.tier) + " source=" + options.source + " only=";
   for (const auto& id : options.only)
     selection += id + ",";
-  RunCheckpoint checkpoint(options.out_dir,
-                           checkpoint_identity("validate", run.catalogue_file, selection),
-                           options.resume);
-  evaluate_validation(
-      run, &checkpoint, [&](const EntryResult& r, int done, double elapsed_s, bool resumed) {
-        std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n", done,
-                     run.results.size(), r.status.c_str(), r.entry->id.c_str(), r.seconds,
-                     elapsed_s, resumed ? " resumed" : "");
-      });
+  // Under mpirun rank 0 alone keeps it (the other processes send it their entries).
+  std::optional<RunCheckpoint> checkpoint;
+  if (options.world.is_root())
+    checkpoint.emplace(options.out_dir,
+                       checkpoint_identity("validate", run.catalogue_file, selection),
+                       options.resume);
+  evaluate_validation(run, checkpoint ? &*checkpoint : nullptr,
+                      [&](const EntryResult& r, int done, double elapsed_s, bool resumed) {
+                        std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n",
+                                     done, run.results.size(), r.status.c_str(),
+                                     r.entry->id.c_str(), r.seconds, elapsed_s,
+                                     resumed ? " resumed" : "");
+                      });
 
+  if (!options.world.is_root()) // rank 0 has the results, and writes and reports them
+    return code_of_root(0);
   std::filesystem::create_directories(options.out_dir);
   OutputStage stage(options.out_dir, "results.csv");
   write_validation_outputs(run, stage);
   stage.commit();
-  checkpoint.remove();
+  checkpoint->remove();
 
   std::map<std::string, int> counts;
   std::vector<std::string> failed;
@@ -282,14 +298,14 @@ int run_validate(const ValidateOptions& options) {
               run.results.size(), run.wall_seconds, to_string(options.tier).c_str(), run.jobs,
               counts["pass"], counts["fail"], counts["finding"], counts["skipped"],
               options.out_dir.c_str());
+  std::fflush(stdout);
   if (!failed.empty()) {
     std::cerr << "magfem: validation failed:";
     for (const auto& id : failed)
       std::cerr << " " << id;
     std::cerr << "\n";
-    return 4;
   }
-  return 0;
+  return code_of_root(failed.empty() ? 0 : 4);
 }
 
 } // namespace magfem

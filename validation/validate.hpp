@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/option_table.hpp"
+#include "solver/mpi_context.hpp"
 #include "validation/validate_catalogue.hpp"
 #include "validation/validate_evaluators.hpp"
 
@@ -25,6 +26,10 @@ struct ValidateOptions {
   std::string out_dir = "out/validate";
   std::string catalogue; // empty: validation/catalogue.yaml of the source tree
   bool resume = false;   // continue from the checkpoint an interrupted run left
+  // Under mpirun: the processes the entries are dealt to (studies/position_runner.hpp), each
+  // evaluating its entries on `jobs` threads (0: its share of the machine's cores); rank 0
+  // alone keeps the checkpoint and writes the outputs.
+  MpiWorld world{};
 };
 
 struct EntryResult {
@@ -63,7 +68,8 @@ using ValidationProgress =
 // Evaluates the selected entries on run.jobs threads, without writing outputs: finished
 // entries are taken from `checkpoint` (may be null) and the others recorded there but failed
 // ones. A stop asked through `stop` (Ctrl-C in Python) starts no further entry; entries not
-// started keep an empty status.
+// started keep an empty status. Under mpirun (options.world) every process calls this and
+// the entries are dealt to them; rank 0 gets the results, the others keep empty ones.
 void evaluate_validation(ValidationRun& run, RunCheckpoint* checkpoint,
                          const ValidationProgress& progress = {}, std::stop_token stop = {});
 

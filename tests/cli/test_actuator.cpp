@@ -312,32 +312,6 @@ TEST(Actuator, LongFeTorqueConstantsMatchTheChargeModel) {
 
 namespace {
 
-// A small actuator the suite can solve by FE in seconds: a 2 x 4 segment array (7..10 mm) on
-// the rotor inside six ring coils on the sphere (11..14 mm), three above and three below the
-// equator, no iron; the refined air over the coils starts at mid-gap, apart from the turning
-// rotor. Coarse on purpose (68k tetrahedra at order 2, a few seconds).
-const char* small_actuator = R"(title: small spherical actuator (test)
-dimension: 3
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
-regions:
-  - {name: m, shape: segment_array, r_inner: 7, r_outer: 10, theta: [0, 180], phi: [0, 360],
-     p_theta: 2, p_phi: 4, material: pm, pattern: {type: parallel_alternating, convention: centre},
-     group: rotor, mesh_size: 3}
-  - {name: coil_space, shape: spherical_segment, r_inner: 10.5, r_outer: 15, mesh_size: 2.5}
-coils:
-  - {name: a1, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 0], turns: 100, current: 0, fill_factor: 0.7, group: stator}
-  - {name: a2, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 120], turns: 100, current: 0, fill_factor: 0.7, group: stator}
-  - {name: a3, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [60, 240], turns: 100, current: 0, fill_factor: 0.7, group: stator}
-  - {name: b1, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 60], turns: 100, current: 0, fill_factor: 0.7, group: stator}
-  - {name: b2, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 180], turns: 100, current: 0, fill_factor: 0.7, group: stator}
-  - {name: b3, shape: circular_coil_on_sphere, r_inner: 11, r_outer: 14, gap_angle: 4, bundle_width: 16, axis_angles: [120, 300], turns: 100, current: 0, fill_factor: 0.7, group: stator}
-boundary: {type: open, radius: 25, shell_ratio: 1.5}
-mesh: {size: 6, chord_tolerance: 0.3}
-solver: {order: 2}
-)";
-
 std::vector<double> numbers_after(const std::string& text, const std::string& key) {
   std::vector<double> v;
   auto at = text.find("\"" + key + "\"");
@@ -369,7 +343,7 @@ std::vector<double> numbers_after(const std::string& text, const std::string& ke
 //   for --verify): forgetting the currents, the rotor's turn or a coil's order fails it.
 // - The run shows its stages on stderr (a long FE run is never silent).
 TEST(Actuator, FeTorqueConstantsAndVerificationOnASmallActuator) {
-  const std::string file = test::write_temp_case("small_actuator.yaml", small_actuator);
+  const std::string file = test::write_temp_case("small_actuator.yaml", test::small_actuator_case);
   const CaseSpec spec = read_case(file);
   ActuatorOptions a;
   a.case_file = file;

@@ -28,12 +28,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/case_helpers.hpp"
 #include "postproc/probe_compare.hpp"
+#include "tests/case_helpers.hpp"
+#include "tests/cli/mpi_helpers.hpp"
 #include "tests/run_cli.hpp"
 
 namespace fs = std::filesystem;
 using magfem::test::CliOutcome;
+using magfem::test::fresh_dir;
+using magfem::test::mpirun_path;
+using magfem::test::read_json;
+using magfem::test::run_mpi;
+using magfem::test::text_of;
 
 namespace {
 
@@ -44,40 +50,6 @@ namespace {
 // room for the probe files' printed digits. An assembly or gather error (a rank's elements
 // twice or missing, a solution block misplaced) changes them by percents.
 constexpr double agreement_tol = 1e-6;
-
-// A fresh output folder of this test process (several worktrees may run the suite at once).
-fs::path fresh_dir(const std::string& name) {
-  const auto dir =
-      fs::temp_directory_path() / "magfem_tests" / ("mpi_" + std::to_string(getpid())) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string mpirun_path() {
-  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"})
-    if (fs::exists(fs::path(dir) / "mpirun"))
-      return (fs::path(dir) / "mpirun").string();
-  return "";
-}
-
-// `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
-// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
-// process left waiting for another would hang the test: `timeout` ends it (exit 124).
-CliOutcome run_mpi(int n, const std::string& args) {
-  std::string cmd =
-      "timeout 120 " + mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
-  if (geteuid() == 0) {
-    cmd += "--allow-run-as-root ";
-    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  }
-  return magfem::test::run_command(cmd + magfem::test::magfem_binary() + " " + args);
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
@@ -193,13 +165,6 @@ TEST_F(Mpi, KrylovFailureIsExitThreeWithoutOutputs) {
 // whose every row goes through the dealer and the row codec. Serially with --jobs 1 it is the
 // reference the processes must reproduce.
 const std::string voice_coil_sweep = " --move coil --axis z --positions 0:1:5 --mesh-scale 3";
-
-std::string text_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // summary.json without what a rerun does not reproduce: each position's wall-clock `seconds`
 // and the process's peak memory (rank 0's, which also solved some positions).

@@ -1,0 +1,61 @@
+#pragma once
+// What the tests that run magfem under mpirun share (test_mpi.cpp: the distributed solve and
+// sweep; test_mpi_studies.cpp: study, validate, actuator --verify).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/run_cli.hpp"
+
+namespace magfem::test {
+
+namespace fs = std::filesystem;
+
+// A fresh output folder of this test process (several worktrees may run the suite at once).
+inline fs::path fresh_dir(const std::string& name) {
+  const auto dir =
+      fs::temp_directory_path() / "magfem_tests" / ("mpi_" + std::to_string(getpid())) / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+inline std::string mpirun_path() {
+  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"})
+    if (fs::exists(fs::path(dir) / "mpirun"))
+      return (fs::path(dir) / "mpirun").string();
+  return "";
+}
+
+// `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
+// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
+// process left waiting for another would hang the test: `timeout` ends it (exit 124).
+inline CliOutcome run_mpi(int n, const std::string& args) {
+  std::string cmd =
+      "timeout 120 " + mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
+  if (geteuid() == 0) {
+    cmd += "--allow-run-as-root ";
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  }
+  return run_command(cmd + magfem_binary() + " " + args);
+}
+
+inline nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+inline std::string text_of(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+} // namespace magfem::test
