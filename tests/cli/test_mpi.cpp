@@ -29,11 +29,14 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/case_helpers.hpp"
-#include "postproc/probe_compare.hpp"
-#include "tests/run_cli.hpp"
+#include "tests/cli/mpirun.hpp"
 
 namespace fs = std::filesystem;
 using magfem::test::CliOutcome;
+using magfem::test::mpirun_path;
+using magfem::test::probe_difference;
+using magfem::test::read_json;
+using magfem::test::run_mpi;
 
 namespace {
 
@@ -45,60 +48,11 @@ namespace {
 // twice or missing, a solution block misplaced) changes them by percents.
 constexpr double agreement_tol = 1e-6;
 
-// A fresh output folder of this test process (several worktrees may run the suite at once).
-fs::path fresh_dir(const std::string& name) {
-  const auto dir =
-      fs::temp_directory_path() / "magfem_tests" / ("mpi_" + std::to_string(getpid())) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string mpirun_path() {
-  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"})
-    if (fs::exists(fs::path(dir) / "mpirun"))
-      return (fs::path(dir) / "mpirun").string();
-  return "";
-}
-
-// `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
-// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
-// process left waiting for another would hang the test: `timeout` ends it (exit 124).
-CliOutcome run_mpi(int n, const std::string& args) {
-  std::string cmd =
-      "timeout 120 " + mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
-  if (geteuid() == 0) {
-    cmd += "--allow-run-as-root ";
-    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  }
-  return magfem::test::run_command(cmd + magfem::test::magfem_binary() + " " + args);
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
-
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
     ++n;
   return n;
-}
-
-// Largest |a - b| over the B columns of two probe tables, relative to the largest |B| there.
-double probe_difference(const magfem::ProbeTable& a, const magfem::ProbeTable& b) {
-  EXPECT_EQ(a.columns, b.columns);
-  EXPECT_EQ(a.rows.size(), b.rows.size());
-  double diff = 0, scale = 0;
-  for (const char* c : {"Bx", "By", "Bz"}) {
-    const std::size_t k = a.column(c);
-    for (std::size_t i = 0; i < std::min(a.rows.size(), b.rows.size()); ++i) {
-      diff = std::max(diff, std::abs(a.rows[i][k] - b.rows[i][k]));
-      scale = std::max(scale, std::abs(a.rows[i][k]));
-    }
-  }
-  return scale > 0 ? diff / scale : diff;
 }
 
 class Mpi : public ::testing::Test {
@@ -111,7 +65,8 @@ protected:
 
 TEST_F(Mpi, TwoRanksGiveTheSerialFieldWithOneSetOfOutputs) {
   const std::string example = magfem::test::example("3d/magnet_and_ball_small.yaml");
-  const fs::path serial_dir = fresh_dir("serial"), mpi_dir = fresh_dir("two_ranks");
+  const fs::path serial_dir = magfem::test::fresh_mpi_dir("serial"),
+                 mpi_dir = magfem::test::fresh_mpi_dir("two_ranks");
   const CliOutcome serial =
       magfem::test::run_cli("solve " + example + " --out " + serial_dir.string());
   ASSERT_EQ(serial.status, 0) << serial.out;
@@ -155,12 +110,9 @@ TEST_F(Mpi, TwoRanksGiveTheSerialFieldWithOneSetOfOutputs) {
 }
 
 // Refusals come before any meshing, on every process alike, with exit 2: never a hang.
+// (Coils and nonlinear iron are distributed: test_mpi_solve.cpp.)
 TEST_F(Mpi, RefusedCasesEndWithExitTwo) {
-  const fs::path out = fresh_dir("refused");
-  const CliOutcome nonlinear =
-      run_mpi(2, "solve " + magfem::test::example("3d/team20.yaml") + " --out " + out.string());
-  EXPECT_EQ(nonlinear.status, 2) << nonlinear.out;
-  EXPECT_NE(nonlinear.out.find("not distributed"), std::string::npos) << nonlinear.out;
+  const fs::path out = magfem::test::fresh_mpi_dir("refused");
   const CliOutcome planar =
       run_mpi(2, "solve " + magfem::test::example("2d/c_core.yaml") + " --out " + out.string());
   EXPECT_EQ(planar.status, 2) << planar.out;
@@ -177,7 +129,7 @@ TEST_F(Mpi, KrylovFailureIsExitThreeWithoutOutputs) {
   const std::string tol = "  linear_tolerance: 1e-12";
   ASSERT_NE(text.find(tol), std::string::npos);
   text.replace(text.find(tol), tol.size(), "  linear_max_iterations: 3\n" + tol);
-  const fs::path dir = fresh_dir("krylov_failure");
+  const fs::path dir = magfem::test::fresh_mpi_dir("krylov_failure");
   fs::create_directories(dir);
   const fs::path case_file = dir / "three_iterations.yaml";
   std::ofstream(case_file) << text;
@@ -223,12 +175,12 @@ CliOutcome serial_sweep(const std::string& case_and_motion, const fs::path& out)
 TEST_F(Mpi, SweepDealtToTwoAndThreeProcessesWritesTheSerialOutputs) {
   const std::string sweep =
       "sweep " + magfem::test::example("axi/voice_coil_magnet.yaml") + voice_coil_sweep;
-  const fs::path serial = fresh_dir("sweep_serial");
+  const fs::path serial = magfem::test::fresh_mpi_dir("sweep_serial");
   const CliOutcome s =
       serial_sweep(magfem::test::example("axi/voice_coil_magnet.yaml") + voice_coil_sweep, serial);
   ASSERT_EQ(s.status, 0) << s.out;
   for (const int n : {2, 3}) {
-    const fs::path dir = fresh_dir("sweep_" + std::to_string(n) + "_ranks");
+    const fs::path dir = magfem::test::fresh_mpi_dir("sweep_" + std::to_string(n) + "_ranks");
     const CliOutcome m = run_mpi(n, sweep + " --out " + dir.string());
     ASSERT_EQ(m.status, 0) << m.out;
     EXPECT_EQ(text_of(dir / "sweep.csv"), text_of(serial / "sweep.csv")) << n << " processes";
@@ -245,7 +197,8 @@ TEST_F(Mpi, SweepDealtToTwoAndThreeProcessesWritesTheSerialOutputs) {
 TEST_F(Mpi, PlanarSweepOnTwoProcessesWritesTheSerialCsvAndPlot) {
   const std::string motion = magfem::test::example("2d/re25_motor_torque.yaml") +
                              " --rotate rotor --axis z --angles 0,120";
-  const fs::path serial = fresh_dir("planar_serial"), dir = fresh_dir("planar_2_ranks");
+  const fs::path serial = magfem::test::fresh_mpi_dir("planar_serial"),
+                 dir = magfem::test::fresh_mpi_dir("planar_2_ranks");
   const CliOutcome s = serial_sweep(motion, serial);
   ASSERT_EQ(s.status, 0) << s.out;
   const CliOutcome m = run_mpi(2, "sweep " + motion + " --quiet --out " + dir.string());
@@ -265,7 +218,8 @@ TEST_F(Mpi, PlanarSweepOnTwoProcessesWritesTheSerialCsvAndPlot) {
 // checkpoint, if a restored position were dealt again, or if the rows were placed by arrival.
 TEST_F(Mpi, ResumedSweepUnderMpirunSolvesOnlyTheMissingPositions) {
   const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
-  const fs::path serial = fresh_dir("resume_serial"), dir = fresh_dir("resume_2_ranks");
+  const fs::path serial = magfem::test::fresh_mpi_dir("resume_serial"),
+                 dir = magfem::test::fresh_mpi_dir("resume_2_ranks");
   ASSERT_EQ(serial_sweep(case_file + voice_coil_sweep, serial).status, 0);
   fs::create_directories(dir / "sweep.csv" / "blocker");
   const CliOutcome cut =
@@ -311,7 +265,7 @@ TEST_F(Mpi, ResumedSweepUnderMpirunSolvesOnlyTheMissingPositions) {
 // are dealt: exit 2 from all, through MPI_Abort, within the timeout, nothing written.
 TEST_F(Mpi, BadSweepInputEndsEveryProcessWithExitTwo) {
   const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
-  const fs::path dir = fresh_dir("sweep_bad");
+  const fs::path dir = magfem::test::fresh_mpi_dir("sweep_bad");
   const CliOutcome option =
       run_mpi(2, "sweep " + case_file + voice_coil_sweep + " --bogus --out " + dir.string());
   EXPECT_EQ(option.status, 2) << option.out;

@@ -1,0 +1,71 @@
+#pragma once
+// Running magfem under mpirun from a test: the launcher's path, the run itself (as root too,
+// with a timeout so that a process left waiting fails the test instead of hanging it), fresh
+// output folders and the comparisons of a distributed run's outputs with a serial run's.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "postproc/probe_compare.hpp"
+#include "tests/run_cli.hpp"
+
+namespace magfem::test {
+
+// A fresh output folder of this test process (several worktrees may run the suite at once).
+inline std::filesystem::path fresh_mpi_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "magfem_tests" /
+                   ("mpi_" + std::to_string(getpid())) / name;
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+inline std::string mpirun_path() {
+  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"})
+    if (std::filesystem::exists(std::filesystem::path(dir) / "mpirun"))
+      return (std::filesystem::path(dir) / "mpirun").string();
+  return "";
+}
+
+// `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
+// unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
+// process left waiting for another would hang the test: `timeout` ends it (exit 124).
+inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 120) {
+  std::string cmd = "timeout " + std::to_string(timeout_s) + " " + mpirun_path() + " -n " +
+                    std::to_string(n) + " --oversubscribe ";
+  if (geteuid() == 0) {
+    cmd += "--allow-run-as-root ";
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  }
+  return run_command(cmd + magfem_binary() + " " + args);
+}
+
+inline nlohmann::json read_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+// Largest |a - b| over the B columns of two probe tables, relative to the largest |B| there.
+inline double probe_difference(const ProbeTable& a, const ProbeTable& b) {
+  EXPECT_EQ(a.columns, b.columns);
+  EXPECT_EQ(a.rows.size(), b.rows.size());
+  double diff = 0, scale = 0;
+  for (const char* c : {"Bx", "By", "Bz"}) {
+    const std::size_t k = a.column(c);
+    for (std::size_t i = 0; i < std::min(a.rows.size(), b.rows.size()); ++i) {
+      diff = std::max(diff, std::abs(a.rows[i][k] - b.rows[i][k]));
+      scale = std::max(scale, std::abs(a.rows[i][k]));
+    }
+  }
+  return scale > 0 ? diff / scale : diff;
+}
+
+} // namespace magfem::test
