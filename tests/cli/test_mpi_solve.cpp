@@ -57,14 +57,15 @@ double relative(double a, double b) {
 // The serial run of `args` (its outputs in dir/serial), then `mpirun -n <n>` of it (dir/ranks_n),
 // and every comparison: ranks, energy, each region's energy, coils' linkage and inductance,
 // probes.
-void expect_serial_field(const fs::path& dir, const std::string& args, int n) {
+void expect_serial_field(const fs::path& dir, const std::string& args, int n, int timeout_s = 120) {
   const fs::path serial_dir = dir / "serial", mpi_dir = dir / ("ranks_" + std::to_string(n));
   if (!fs::exists(serial_dir / "summary.json")) {
     const CliOutcome serial =
         magfem::test::run_cli("solve " + args + " --out " + serial_dir.string());
     ASSERT_EQ(serial.status, 0) << serial.out;
   }
-  const CliOutcome mpi = magfem::test::run_mpi(n, "solve " + args + " --out " + mpi_dir.string());
+  const CliOutcome mpi =
+      magfem::test::run_mpi(n, "solve " + args + " --out " + mpi_dir.string(), timeout_s);
   ASSERT_EQ(mpi.status, 0) << mpi.out;
   const auto s = magfem::test::read_json(serial_dir / "summary.json");
   const auto m = magfem::test::read_json(mpi_dir / "summary.json");
@@ -162,4 +163,22 @@ TEST_F(MpiSolve, LongCoilAndNonlinearCasesOnOneAndThreeProcesses) {
   for (int n : {1, 3})
     expect_serial_field(steel, steel_case(steel), n);
   fs::remove_all(steel);
+}
+
+// TEAM 20 (nonlinear steel driven by a coil; the third case), coarse P1 (44k
+// tetrahedra: half a minute a run, most of it the coil's source field): the pole force too.
+TEST_F(MpiSolve, LongTeam20OnTwoAndThreeProcesses) {
+  const fs::path dir = magfem::test::fresh_mpi_dir("team20");
+  const std::string args =
+      write_case(dir, "3d/team20.yaml", "solver: {order: 1, linear_tolerance: 1e-12}").string() +
+      " --mesh-scale 6";
+  for (int n : {2, 3}) {
+    expect_serial_field(dir, args, n, 600);
+    const auto s = magfem::test::read_json(dir / "serial" / "summary.json");
+    const auto m = magfem::test::read_json(dir / ("ranks_" + std::to_string(n)) / "summary.json");
+    ASSERT_FALSE(s["forces"].empty());
+    const double fz = s["forces"][0]["force_N"][2], fz_mpi = m["forces"][0]["force_N"][2];
+    EXPECT_LE(relative(fz, fz_mpi), probe_tol) << fz << " N against " << fz_mpi << " N";
+  }
+  fs::remove_all(dir);
 }
