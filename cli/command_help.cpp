@@ -35,9 +35,9 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  --max-unknowns N  stop before a pass that would need more unknowns (default 4e6)\n"
      "  --quiet           3D: no progress lines (stage, CG iteration every 2 s) on stderr\n"
      "  --param NAME=VALUE  set one of the case file's `parameters:` (repeatable)\n"
-     "  Linear 3D cases also run distributed: mpirun -n N magfem solve CASE.yaml --out DIR\n"
-     "  (each process meshes, assembles 1/N of the elements; rank 0 writes; "
-     "docs/performance.md).\n"},
+     "  3D cases (coils, nonlinear iron too) also run distributed: mpirun -n N magfem solve\n"
+     "  CASE.yaml --out DIR (each process meshes, assembles 1/N of the elements; rank 0\n"
+     "  writes; docs/performance.md).\n"},
     {"analytic",
      "magfem analytic CASE.yaml [--out DIR] [--model charge|harmonic] [--tolerance T] "
      "[--n-max N]\n"

@@ -17,7 +17,6 @@
 #include "sources/coil_field.hpp"
 
 namespace magfem {
-namespace {
 
 // The sensitivity solves (one per coil) stop at a relative residual of 1e-9 unless the case
 // asks for a looser one: on the 12-coil actuator design (mesh scale 3) the inductance matrix
@@ -27,6 +26,8 @@ LinearSolverOptions sensitivity_solver_options(LinearSolverOptions options) {
   options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
   return options;
 }
+
+namespace {
 
 // Gauss order of the coil volume quadrature for the Lorentz force: B is smooth across the
 // bundle (its own field is subtracted), so a few points per direction suffice there. Along a
@@ -182,13 +183,17 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
   }
   if (run.spec.coil_inductance) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto sens = current_sensitivities_3d(assembler, u, nc,
-                                               sensitivity_solver_options(run.spec.newton.linear));
+    const auto sens =
+        !run.coil_sensitivities.empty()
+            ? run.coil_sensitivities
+            : current_sensitivities_3d(assembler, u, nc,
+                                       sensitivity_solver_options(run.spec.newton.linear));
     std::vector<Eigen::VectorXd> full;
     for (const auto& s : sens)
       full.push_back(assembler.expand(s));
     out.inductance_H = inductance_matrix_3d(*run.field, full);
-    out.inductance_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.inductance_s = run.coil_sensitivity_s +
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   out.warnings = run.coil_source.warnings;
   return out;

@@ -1,6 +1,7 @@
 #include "pipeline/run3d.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -95,20 +96,6 @@ Problem3D build_problem(const CaseSpec& spec, const Mesh3D& mesh) {
   for (const auto& r : spec.regions)
     p.parts.push_back(RegionPhysics3D{r.material, r.magnetization});
   return p;
-}
-
-// Why a case cannot be solved by several processes ("" if it can), found before meshing.
-// Newton would need every residual evaluation of its line search distributed, and the coils'
-// inductance solves reuse the serial linear solver: both stay on one process for now.
-std::string distributed_refusal(const CaseSpec& spec) {
-  for (const auto& r : spec.regions)
-    if (r.material->is_nonlinear())
-      return "region '" + r.name + "' is nonlinear (material '" + r.material->name +
-             "'): Newton iterations are not distributed; run this case without mpirun";
-  if (!spec.geometry3d.coils.empty())
-    return "coils are not distributed (their inductance solves run on one process); run this "
-           "case without mpirun";
-  return "";
 }
 
 // Every process meshed the case on its own; the element shares only make sense if the
@@ -218,10 +205,6 @@ public:
     options.direct_limit = std::min(options.direct_limit, 200'000);
   }
   void check_before_mesh() const {
-    if (world_.distributed())
-      if (const std::string why = distributed_refusal(run_.spec); !why.empty())
-        throw InputError(run_.spec.file, 0, "",
-                         why + " (" + std::to_string(world_.size) + " processes asked for)");
     if (!run_.spec.geometry3d.coils.empty()) {
       run_.coils = std::make_unique<CaseCoils>(run_.spec.geometry3d.coils, fe_source_options());
       check_coils_in_air(run_.spec, *run_.coils);
@@ -249,14 +232,20 @@ public:
                          std::to_string(run_.mesh.n_tets() *
                                         tet_rule(SourceFieldTable3D::rule_degree).size()) +
                          " quadrature points");
-      run_.coil_source = make_coil_source_3d(run_.problem, *run_.dofs, *run_.coils);
+      // Distributed: each process evaluates the source field at its own tetrahedra; rank 0,
+      // which post-processes, gets the whole table.
+      run_.coil_source = make_coil_source_3d(run_.problem, *run_.dofs, *run_.coils, share());
+      if (world_.distributed())
+        run_.coil_source.table.gather_to_root();
       announce_stage(ov_.progress, "assembly");
       run_.problem.source = &run_.coil_source;
     }
   }
-  // Distributed: one thread per process (the processes share the cores).
+  // Distributed: this process's share of the tetrahedra, one thread (the processes share the
+  // cores).
   Assembler3D make_assembler() const {
-    return Assembler3D(run_.problem, *run_.dofs, AssemblyOptions3D{world_.distributed() ? 1 : 0});
+    return Assembler3D(run_.problem, *run_.dofs,
+                       AssemblyOptions3D{world_.distributed() ? 1 : 0, share()});
   }
   void prepare_solver(const Assembler3D& assembler) const {
     run_.threads = assembler.threads();
@@ -274,10 +263,20 @@ public:
                             [&](std::size_t t) { return run_.problem.is_shell(t); }));
   }
   NewtonReport solve(Assembler3D& assembler, Eigen::VectorXd& u) const {
-    if (world_.distributed())
-      return solve_linear_distributed(assembler, *run_.dofs, run_.mesh.n_tets(), world_.rank,
-                                      world_.size, run_.spec.newton.linear, u);
-    return solve_nonlinear(assembler, u, run_.spec.newton);
+    if (!world_.distributed())
+      return solve_nonlinear(assembler, u, run_.spec.newton);
+    NewtonReport report = solve_distributed(assembler, world_.size, run_.spec.newton, u);
+    // The inductance matrix's solves need every process: done here, before rank 0 goes on
+    // alone. (A Newton that did not converge ends the run on every process anyway.)
+    if (report.converged && run_.coils && run_.spec.coil_inductance) {
+      const auto t0 = std::chrono::steady_clock::now();
+      run_.coil_sensitivities =
+          current_sensitivities_distributed(assembler, world_.size, u, run_.coils->n_coils(),
+                                            sensitivity_solver_options(run_.spec.newton.linear));
+      run_.coil_sensitivity_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    return report;
   }
   // Rank 0 holds the solution and alone post-processes.
   bool post_processes() const { return world_.is_root(); }
@@ -436,6 +435,12 @@ public:
   }
 
 private:
+  // The tetrahedra this process assembles (all of them in a serial run).
+  ElementRange share() const {
+    return world_.distributed() ? element_share(run_.mesh.n_tets(), world_.rank, world_.size)
+                                : ElementRange{};
+  }
+
   Run3D& run_;
   const RunOverrides& ov_;
   const MpiWorld& world_;

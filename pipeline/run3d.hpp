@@ -42,8 +42,13 @@ struct Run3D {
   std::vector<SectionFlux> sections; // parallel to spec.sections
   std::vector<ForceResult> forces;
   CoilResults coil_results;
-  ErrorEstimate3D error_estimate;    // energy-norm indicator per tet and in all
-  std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  // A distributed run: du/dI per coil (free DOFs), solved by all processes together right after
+  // the solve (the inductance matrix needs them; rank 0 alone post-processes), and the seconds
+  // that took. Empty otherwise: the post-processing solves for them.
+  std::vector<Eigen::VectorXd> coil_sensitivities;
+  double coil_sensitivity_s = 0;
+  ErrorEstimate3D error_estimate;        // energy-norm indicator per tet and in all
+  std::vector<std::string> warnings;     // pipeline/result_checks.hpp
   DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;
   int threads = 1;                   // element-loop threads of the assembly
@@ -53,10 +58,10 @@ struct Run3D {
 
 // Under mpirun (overrides.world.distributed()) every process calls this: each meshes the
 // case (the meshes must agree bit for bit, else an internal error on all), assembles its
-// share of the elements and takes part in the solve (solver/distributed_solve3d.hpp); rank 0
-// alone gets the solution and post-processes; the others return a Run3D without field and
-// results, to be neither described nor written. Nonlinear materials and coils are refused
-// (InputError) before meshing.
+// share of the elements and takes part in the solve (solver/distributed_solve3d.hpp: Newton
+// for nonlinear iron, and the coils' sensitivity solves for the inductance matrix); rank 0
+// alone post-processes; the others return a Run3D without field and results, to be neither
+// described nor written.
 std::unique_ptr<Run3D> run_case_3d(CaseSpec spec, const RunOverrides& overrides = {});
 // The memory guard's estimate of the peak memory (MB) run_case_3d would need for this case,
 // from the size field alone (no mesh is made; seconds on large cases).

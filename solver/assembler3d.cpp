@@ -194,7 +194,15 @@ void Assembler3D::element(std::size_t t, const Eigen::VectorXd& phi_full, double
 int Assembler3D::loop_threads() const {
   if (options_.threads > 0)
     return options_.threads;
-  return element_loop_threads(problem_.mesh->n_tets());
+  return element_loop_threads(share_count());
+}
+
+std::size_t Assembler3D::share_first() const {
+  return std::min(options_.share.first, problem_.mesh->n_tets());
+}
+
+std::size_t Assembler3D::share_count() const {
+  return std::min(options_.share.last, problem_.mesh->n_tets()) - share_first();
 }
 
 void Assembler3D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
@@ -223,12 +231,14 @@ void Assembler3D::assemble(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   double* values = matrix ? matrix->valuePtr() : nullptr;
   // Equation i owns residual entry i and the stored matrix row i (the lower triangle keeps
   // local (i, j) at global row eq[i]), so each entry is summed by one thread in element order.
+  const std::size_t first = share_first();
   parallel_element_scatter(
-      problem_.mesh->n_tets(), n + (matrix ? n * n : 0), n_eqs_, loop_threads(),
-      [&](std::size_t t, double* out) {
-        element(t, phi_full, out, matrix ? out + n : nullptr, kind, start_law);
+      share_count(), n + (matrix ? n * n : 0), n_eqs_, loop_threads(),
+      [&](std::size_t e, double* out) {
+        element(first + e, phi_full, out, matrix ? out + n : nullptr, kind, start_law);
       },
-      [&](std::size_t t, const double* re, std::size_t lo, std::size_t hi) {
+      [&](std::size_t e, const double* re, std::size_t lo, std::size_t hi) {
+        const std::size_t t = first + e;
         const int* eq = &element_eqs_[t * n];
         const int* slot = matrix ? pattern_.slots(t) : nullptr;
         for (int i = 0; i < n; ++i) {
@@ -296,11 +306,12 @@ void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
 Eigen::VectorXd Assembler3D::source_load(int coil) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(n_eqs_);
   const int n = dofs_.dofs_per_element();
+  const std::size_t first = share_first();
   parallel_element_scatter(
-      problem_.mesh->n_tets(), n, n_eqs_, loop_threads(),
-      [&](std::size_t t, double* re) { element_source(t, coil, re); },
-      [&](std::size_t t, const double* re, std::size_t lo, std::size_t hi) {
-        const int* eq = &element_eqs_[t * n];
+      share_count(), n, n_eqs_, loop_threads(),
+      [&](std::size_t e, double* re) { element_source(first + e, coil, re); },
+      [&](std::size_t e, const double* re, std::size_t lo, std::size_t hi) {
+        const int* eq = &element_eqs_[(first + e) * n];
         for (int i = 0; i < n; ++i)
           if (eq[i] >= 0 && static_cast<std::size_t>(eq[i]) >= lo &&
               static_cast<std::size_t>(eq[i]) < hi && re[i] != 0)
@@ -317,9 +328,11 @@ Eigen::VectorXd Assembler3D::current_derivative(const Eigen::VectorXd& u, int co
   const Eigen::VectorXd& per_ampere = src.offset_per_ampere[coil];
   const int n = dofs_.dofs_per_element();
   // Total regions: r depends on the current through u + I Phi_s, so dr/dI = K_e Phi_s.
+  const std::size_t first = share_first();
   parallel_element_scatter(
-      problem_.mesh->n_tets(), n, n_eqs_, loop_threads(),
-      [&](std::size_t t, double* sum) {
+      share_count(), n, n_eqs_, loop_threads(),
+      [&](std::size_t e, double* sum) {
+        const std::size_t t = first + e;
         std::fill(sum, sum + n, 0.0);
         if (!src.is_total(t))
           return;
@@ -331,7 +344,8 @@ Eigen::VectorXd Assembler3D::current_derivative(const Eigen::VectorXd& u, int co
           for (int j = 0; j < n; ++j)
             sum[i] += ke[i * n + j] * per_ampere[dof[j]];
       },
-      [&](std::size_t t, const double* sum, std::size_t lo, std::size_t hi) {
+      [&](std::size_t e, const double* sum, std::size_t lo, std::size_t hi) {
+        const std::size_t t = first + e;
         if (!src.is_total(t))
           return;
         const int* eq = &element_eqs_[t * n];

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "solver/dof_map3d.hpp"
+#include "solver/element_range.hpp"
 #include "solver/nonlinear_system.hpp"
 #include "solver/problem3d.hpp"
 #include "solver/shell_transform.hpp"
@@ -26,6 +27,10 @@ struct AssemblyOptions3D {
   // Element loop threads; 0 = all cores (fewer for small meshes). The sums are the serial
   // ones bit for bit whatever the count (core/parallel_scatter.hpp).
   int threads = 0;
+  // The tetrahedra whose contributions evaluate(), start_problem(), current_derivative() and
+  // the load norm sum (default all): a process's share in a distributed solve, where the
+  // residuals are then this share's part (DistributedSystem3D sums them over the processes).
+  ElementRange share;
 };
 
 class Assembler3D : public NonlinearSystem {
@@ -66,6 +71,9 @@ private:
   Eigen::VectorXd source_load(int coil) const; // coil < 0: all coils at their currents
   void element_source(std::size_t t, int coil, double* re) const;
   int loop_threads() const; // threads for an element loop (few elements: one)
+  // The share's first tetrahedron and count (AssemblyOptions3D::share, clamped to the mesh).
+  std::size_t share_first() const;
+  std::size_t share_count() const;
 
   const Problem3D& problem_;
   const DofMap3D& dofs_;

@@ -17,6 +17,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "solver/tangent_solver.hpp"
+
 namespace magfem {
 
 class Progress;
@@ -79,35 +81,35 @@ double true_residual_limit(double tol);
 std::string describe_krylov_stop(const KrylovOutcome& outcome, const std::string& method,
                                  double tol);
 
-class LinearSolver {
+class LinearSolver final : public TangentSolver {
 public:
   explicit LinearSolver(LinearSolverOptions options = {});
-  ~LinearSolver();
+  ~LinearSolver() override;
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
 
   // `lower`: symmetric matrix given by its lower triangle; it must outlive the solve() calls
   // that follow. Throws SolveError if it is not positive definite (a floating region without
   // a gauge, a bad material) or the preconditioner cannot be built.
-  void factorize(const Eigen::SparseMatrix<double>& lower);
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  void factorize(const Eigen::SparseMatrix<double>& lower) override;
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override;
   // One solution per column of `rhs`, with the factorization or preconditioner set up once:
   // CHOLMOD solves all columns in one pass over its factor; CG + pmg runs the columns side by
   // side with each V-cycle applied to all at once (PetscSolver::solve_many). Each column is
   // checked as solve() checks its one. last_iterations(): the largest column's count.
-  Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs);
+  Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs) override;
   // Krylov solves from now on stop at this relative residual (LinearSolverOptions::
   // cg_tolerance until then); direct solves are exact whatever it is.
-  void set_cg_tolerance(double tol);
+  void set_cg_tolerance(double tol) override;
   double cg_tolerance() const { return options_.cg_tolerance; }
-  std::string name() const;           // cholmod | cg
-  std::string preconditioner() const; // none (direct) | ichol | boomeramg | gamg | pmg | ...
-  int last_iterations() const { return last_iterations_; }
+  std::string name() const override;           // cholmod | cg
+  std::string preconditioner() const override; // none (direct) | ichol | boomeramg | gamg | pmg
+  int last_iterations() const override { return last_iterations_; }
   // Seconds spent so far in factorize() (factorization, preconditioner set-up) and solve().
-  double setup_seconds() const { return setup_s_; }
-  double solve_seconds() const { return solve_s_; }
+  double setup_seconds() const override { return setup_s_; }
+  double solve_seconds() const override { return solve_s_; }
   // Why the automatic choice changed course (AMG fallback), for the console and summary.
-  const std::vector<std::string>& notes() const { return notes_; }
+  const std::vector<std::string>& notes() const override { return notes_; }
   // pmg with a smoother block: how many times the block was factorized (it is reused while
   // its entries do not change, e.g. the open-boundary shell across Newton steps); 0 otherwise.
   int smoother_block_factorizations() const;

@@ -35,6 +35,16 @@ bool same_on_every_rank(std::uint64_t value) {
   return backend ? backend->same_on_every_rank(value) : true;
 }
 
+void sum_on_every_rank(double* values, std::size_t n) {
+  if (PetscBackend* backend = loaded_petsc_backend())
+    backend->sum_on_every_rank(values, n);
+}
+
+void sum_to_root(float* values, std::size_t n) {
+  if (PetscBackend* backend = loaded_petsc_backend())
+    backend->sum_to_root(values, n);
+}
+
 void idle_barrier() {
   if (PetscBackend* backend = loaded_petsc_backend())
     backend->idle_barrier();

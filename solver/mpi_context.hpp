@@ -6,6 +6,7 @@
 // error). MPI itself stays in the PETSc module (petsc_backend.hpp); nothing else includes it.
 //
 // A process not launched by mpirun never starts MPI here (a serial run pays nothing).
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -46,6 +47,16 @@ MpiWorld started_mpi_world();
 
 // Collective: whether every process passed the same value (e.g. a hash of a replicated mesh).
 bool same_on_every_rank(std::uint64_t value);
+
+// Collective: `values` (n, the same length everywhere) summed over the processes, the same bits
+// on every process (rank 0 sums and sends the sum back, where an all-reduce may round
+// differently from process to process): replicated vectors of a distributed solve, whose
+// every process must take the same Newton decisions. No-op in a serial run.
+void sum_on_every_rank(double* values, std::size_t n);
+// Collective: `values` summed over the processes into rank 0's (the others' are unchanged).
+// For tables each process fills its own entries of and rank 0 alone reads whole. No-op in a
+// serial run.
+void sum_to_root(float* values, std::size_t n);
 
 // Collective: waits until every process has arrived, sleeping between checks. Open MPI's
 // blocking calls spin on the CPU; processes waiting here for rank 0's post-processing leave

@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstring>
@@ -49,6 +50,37 @@ bool same_on_every_rank(std::uint64_t value) {
   MPI_Allreduce(MPI_IN_PLACE, &low, 1, MPI_UINT64_T, MPI_MIN, MPI_COMM_WORLD);
   MPI_Allreduce(MPI_IN_PLACE, &high, 1, MPI_UINT64_T, MPI_MAX, MPI_COMM_WORLD);
   return low == high;
+}
+
+namespace {
+
+// MPI counts are ints: long arrays travel in pieces.
+constexpr std::size_t max_piece = std::size_t{1} << 28;
+
+template <class T> void reduce_to_root(T* values, std::size_t n, MPI_Datatype type, int rank) {
+  for (std::size_t at = 0; at < n; at += max_piece) {
+    const int count = static_cast<int>(std::min(max_piece, n - at));
+    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : values + at, values + at, count, type, MPI_SUM, 0,
+               MPI_COMM_WORLD);
+  }
+}
+
+} // namespace
+
+void sum_on_every_rank(double* values, std::size_t n) {
+  const MpiWorld world = started_mpi_world();
+  if (!world.distributed())
+    return;
+  reduce_to_root(values, n, MPI_DOUBLE, world.rank);
+  for (std::size_t at = 0; at < n; at += max_piece)
+    MPI_Bcast(values + at, static_cast<int>(std::min(max_piece, n - at)), MPI_DOUBLE, 0,
+              MPI_COMM_WORLD);
+}
+
+void sum_to_root(float* values, std::size_t n) {
+  const MpiWorld world = started_mpi_world();
+  if (world.distributed())
+    reduce_to_root(values, n, MPI_FLOAT, world.rank);
 }
 
 namespace {

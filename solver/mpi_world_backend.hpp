@@ -13,6 +13,8 @@ namespace magfem::petsc_module {
 MpiWorld join_mpi_world(bool any_thread_calls_mpi);
 MpiWorld started_mpi_world();
 bool same_on_every_rank(std::uint64_t value);
+void sum_on_every_rank(double* values, std::size_t n);
+void sum_to_root(float* values, std::size_t n);
 void idle_barrier();
 int code_of_root(int code);
 // MPI_Abort when distributed; returns otherwise (the caller exits).

@@ -65,9 +65,14 @@ double energy_line_search(const NonlinearSystem& system, const Eigen::VectorXd& 
 
 NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
                              const NewtonOptions& options) {
+  LinearSolver linear(options.linear);
+  return solve_nonlinear(system, u, options, linear);
+}
+
+NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
+                             const NewtonOptions& options, TangentSolver& linear) {
   NewtonReport report;
   report.linear = system.is_linear();
-  LinearSolver linear(options.linear);
   if (u.size() != system.n_unknowns())
     u = Eigen::VectorXd::Zero(system.n_unknowns());
   const double scale = system.load_norm() > 0 ? system.load_norm() : 1.0;

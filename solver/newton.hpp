@@ -54,7 +54,15 @@ struct NewtonReport {
   std::string message;
 };
 
+// With a LinearSolver on options.linear.
 NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
                              const NewtonOptions& options);
+// With the given solver for the tangent systems (options.linear only for its tolerance and
+// progress): a distributed solve passes DistributedLinearSolver and a system whose residuals
+// are summed over the processes, and every process takes the same steps. A linear system
+// computes its final residual from the tangent, which must then be the whole matrix (a
+// distributed linear system goes through solve_distributed, which solves it directly).
+NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
+                             const NewtonOptions& options, TangentSolver& linear);
 
 } // namespace magfem

@@ -6,6 +6,7 @@
 // whose loading cost every command 50-400 ms of start-up, a 2D solve or an analytic curve
 // included (issue 35). PetscSolver (petsc_solver.hpp) and the functions of mpi_context.hpp
 // are the callers' interface; they forward to the objects declared here.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -26,9 +27,9 @@ public:
   virtual std::vector<KrylovOutcome> solve_many(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) = 0;
   virtual void set_relative_tolerance(double tol) = 0;
   virtual void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) = 0;
-  virtual void add_element(int n, const int* eq, const double* ke, const double* fe) = 0;
+  virtual void add_lower_share(const Eigen::SparseMatrix<double>& lower) = 0;
   virtual void setup_distributed() = 0;
-  virtual KrylovOutcome solve_distributed(Eigen::VectorXd& x) = 0;
+  virtual KrylovOutcome solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) = 0;
   virtual std::string preconditioner_name() const = 0;
   virtual int block_factorizations() const = 0;
 };
@@ -51,6 +52,8 @@ public:
   virtual MpiWorld join_mpi_world(bool any_thread_calls_mpi) = 0;
   virtual MpiWorld started_mpi_world() = 0;
   virtual bool same_on_every_rank(std::uint64_t value) = 0;
+  virtual void sum_on_every_rank(double* values, std::size_t n) = 0;
+  virtual void sum_to_root(float* values, std::size_t n) = 0;
   virtual void idle_barrier() = 0;
   virtual int code_of_root(int code) = 0;
   virtual std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items,

@@ -411,7 +411,7 @@ struct PetscKspSolver::Impl {
   Mat a = nullptr;
   Mat p = nullptr;      // pmg's interpolation
   Mat coarse = nullptr; // pmg's coarse operator P^T A P
-  Vec rhs = nullptr;    // distributed mode: the assembled right-hand side
+  Vec rhs = nullptr;    // distributed mode: the right-hand side of the solve
   std::unique_ptr<BlockSmootherSlot> block_smoother; // pmg with a smoother block
   BlockFactorCache block_factor;                     // kept across setup() calls (not release()d)
   std::vector<PetscInt> row_start, column, p_row_start, p_column;
@@ -798,16 +798,23 @@ void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_
                      &m.a),
         "MatCreateAIJ");
   check(VecCreateMPI(PETSC_COMM_WORLD, local, n, &m.rhs), "VecCreateMPI");
-  check(VecSetOption(m.rhs, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE), "VecSetOption");
   check(VecSet(m.rhs, 0.0), "VecSet");
 }
 
-void PetscKspSolver::add_element(int n, const int* eq, const double* ke, const double* fe) {
+void PetscKspSolver::add_lower_share(const Eigen::SparseMatrix<double>& lower) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
-  std::vector<PetscInt> rows(eq, eq + n); // negative (constrained): skipped by PETSc
-  check(MatSetValues(m.a, n, rows.data(), n, rows.data(), ke, ADD_VALUES), "MatSetValues");
-  check(VecSetValues(m.rhs, n, rows.data(), fe, ADD_VALUES), "VecSetValues");
+  // Only the non-zero entries: a process's elements touch a small part of the pattern, and
+  // every entry added in another process's rows travels to it at assembly.
+  for (Eigen::Index j = 0; j < lower.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
+      if (it.value() == 0)
+        continue;
+      const auto row = static_cast<PetscInt>(it.row()), col = static_cast<PetscInt>(j);
+      check(MatSetValue(m.a, row, col, it.value(), ADD_VALUES), "MatSetValue");
+      if (row != col)
+        check(MatSetValue(m.a, col, row, it.value(), ADD_VALUES), "MatSetValue");
+    }
 }
 
 void PetscKspSolver::setup_distributed() {
@@ -815,24 +822,30 @@ void PetscKspSolver::setup_distributed() {
   Impl& m = *impl_;
   check(MatAssemblyBegin(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-  check(VecAssemblyBegin(m.rhs), "VecAssemblyBegin");
-  check(VecAssemblyEnd(m.rhs), "VecAssemblyEnd");
   m.set_up_ksp(PETSC_COMM_WORLD);
 }
 
-KrylovOutcome PetscKspSolver::solve_distributed(Eigen::VectorXd& x) {
+KrylovOutcome PetscKspSolver::solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
+  {
+    PetscInt begin = 0, end = 0;
+    check(VecGetOwnershipRange(m.rhs, &begin, &end), "VecGetOwnershipRange");
+    PetscScalar* own = nullptr;
+    check(VecGetArray(m.rhs, &own), "VecGetArray");
+    std::copy(rhs.data() + begin, rhs.data() + end, own);
+    check(VecRestoreArray(m.rhs, &own), "VecRestoreArray");
+  }
   PetscReal b_norm = 0;
   check(VecNorm(m.rhs, NORM_2, &b_norm), "VecNorm");
   m.rhs_norm = b_norm;
-  Vec vx = nullptr, r = nullptr, root = nullptr;
-  VecScatter to_root = nullptr;
+  Vec vx = nullptr, r = nullptr, all = nullptr;
+  VecScatter to_all = nullptr;
   auto destroy = [&] {
     VecDestroy(&vx);
     VecDestroy(&r);
-    VecDestroy(&root);
-    VecScatterDestroy(&to_root);
+    VecDestroy(&all);
+    VecScatterDestroy(&to_all);
   };
   try {
     check(VecDuplicate(m.rhs, &vx), "VecDuplicate");
@@ -853,15 +866,15 @@ KrylovOutcome PetscKspSolver::solve_distributed(Eigen::VectorXd& x) {
       check(VecNorm(r, NORM_2, &r_norm), "VecNorm");
       out.true_relative_residual = r_norm / b_norm;
     }
-    check(VecScatterCreateToZero(vx, &to_root, &root), "VecScatterCreateToZero");
-    check(VecScatterBegin(to_root, vx, root, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-    check(VecScatterEnd(to_root, vx, root, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-    PetscInt n_root = 0;
-    check(VecGetLocalSize(root, &n_root), "VecGetLocalSize");
+    check(VecScatterCreateToAll(vx, &to_all, &all), "VecScatterCreateToAll");
+    check(VecScatterBegin(to_all, vx, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(to_all, vx, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    PetscInt n_all = 0;
+    check(VecGetLocalSize(all, &n_all), "VecGetLocalSize");
     const PetscScalar* values = nullptr;
-    check(VecGetArrayRead(root, &values), "VecGetArrayRead");
-    x = Eigen::Map<const Eigen::VectorXd>(values, n_root); // n on rank 0, 0 elsewhere
-    VecRestoreArrayRead(root, &values);
+    check(VecGetArrayRead(all, &values), "VecGetArrayRead");
+    x = Eigen::Map<const Eigen::VectorXd>(values, n_all); // the whole solution
+    VecRestoreArrayRead(all, &values);
     destroy();
     return out;
   } catch (...) {

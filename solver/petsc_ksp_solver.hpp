@@ -24,9 +24,9 @@ public:
   std::vector<KrylovOutcome> solve_many(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) override;
   void set_relative_tolerance(double tol) override;
   void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) override;
-  void add_element(int n, const int* eq, const double* ke, const double* fe) override;
+  void add_lower_share(const Eigen::SparseMatrix<double>& lower) override;
   void setup_distributed() override;
-  KrylovOutcome solve_distributed(Eigen::VectorXd& x) override;
+  KrylovOutcome solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) override;
   std::string preconditioner_name() const override;
   int block_factorizations() const override;
 

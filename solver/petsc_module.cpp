@@ -24,6 +24,10 @@ public:
   bool same_on_every_rank(std::uint64_t value) override {
     return petsc_module::same_on_every_rank(value);
   }
+  void sum_on_every_rank(double* values, std::size_t n) override {
+    petsc_module::sum_on_every_rank(values, n);
+  }
+  void sum_to_root(float* values, std::size_t n) override { petsc_module::sum_to_root(values, n); }
   void idle_barrier() override { petsc_module::idle_barrier(); }
   int code_of_root(int code) override { return petsc_module::code_of_root(code); }
   std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items, int workers) override {

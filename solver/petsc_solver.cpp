@@ -39,16 +39,16 @@ void PetscSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_pat
   engine_->begin_distributed(lower_pattern);
 }
 
-void PetscSolver::add_element(int n, const int* eq, const double* ke, const double* fe) {
-  engine_->add_element(n, eq, ke, fe);
+void PetscSolver::add_lower_share(const Eigen::SparseMatrix<double>& lower) {
+  engine_->add_lower_share(lower);
 }
 
 void PetscSolver::setup_distributed() {
   engine_->setup_distributed();
 }
 
-KrylovOutcome PetscSolver::solve_distributed(Eigen::VectorXd& x) {
-  return engine_->solve_distributed(x);
+KrylovOutcome PetscSolver::solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  return engine_->solve_distributed(rhs, x);
 }
 
 std::string PetscSolver::preconditioner_name() const {

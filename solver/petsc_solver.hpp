@@ -8,9 +8,9 @@
 // process, or at the start of a run under mpirun (start_petsc), and stop at its exit.
 //
 // Two ways to give it the system: setup() copies a whole matrix held by this process into a
-// sequential PETSc matrix; the distributed mode (begin_distributed, add_element,
+// sequential PETSc matrix; the distributed mode (begin_distributed, add_lower_share,
 // setup_distributed, solve_distributed) builds one PETSc MPIAIJ matrix over MPI_COMM_WORLD
-// from the element contributions each process adds for its share of the elements.
+// from the contributions each process assembled for its share of the elements.
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,21 +74,23 @@ public:
   void set_relative_tolerance(double tol);
 
   // Distributed mode; every process of MPI_COMM_WORLD calls these collective steps in this
-  // order (add_element is local). Rows are owned in contiguous blocks, PETSc's default split
+  // order (add_lower_share is local). Rows are owned in contiguous blocks, PETSc's default split
   // (the first n % size processes own one row more). `lower_pattern`: the lower triangle of
   // the whole system's sparsity (values unused), the same on every process; it gives the exact
   // preallocation of this process's rows. Not for pmg (its coarse space is not distributed).
   void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern);
-  // Adds an element's full symmetric matrix `ke` (n x n, row major) and right-hand side `fe`
-  // (n) at the equations `eq` (n; negative = constrained, skipped). Rows of other processes
-  // are stashed and sent to them by setup_distributed().
-  void add_element(int n, const int* eq, const double* ke, const double* fe);
+  // Adds this process's part of the symmetric matrix, given by its lower triangle (the whole
+  // system's size; what this process's elements contributed, zero elsewhere). Its non-zero
+  // entries in rows of other processes are stashed and sent to them by setup_distributed().
+  void add_lower_share(const Eigen::SparseMatrix<double>& lower);
   // Collective: completes the assembly (off-process entries travel here) and sets up CG and
   // the preconditioner. Throws SolveError as setup() does.
   void setup_distributed();
-  // Collective: CG on the assembled system from x = 0; fills true_relative_residual. `x`
-  // receives the whole solution on rank 0 and is left empty on the others.
-  KrylovOutcome solve_distributed(Eigen::VectorXd& x);
+  // Collective: CG on the assembled system from x = 0 for the right-hand side `rhs` (the whole
+  // vector, the same on every process; each takes its own rows); fills
+  // true_relative_residual. `x` receives the whole solution on every process. May be called
+  // again with another right-hand side: the preconditioner set-up is reused.
+  KrylovOutcome solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x);
   // The preconditioner actually in use (the options may have changed it): boomeramg, gamg,
   // or PETSc's name for another one.
   std::string preconditioner_name() const;

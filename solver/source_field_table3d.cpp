@@ -5,6 +5,7 @@
 
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "solver/mpi_context.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -40,15 +41,17 @@ constexpr std::size_t block = 256;
 } // namespace
 
 SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D& dofs,
-                                       const SourceField3D& field, int threads)
+                                       const SourceField3D& field, int threads, ElementRange share)
     : field_(&field), n_coils_(field.n_coils()),
       n_points_(static_cast<int>(tet_rule(rule_degree).size())) {
   const Mesh3D& mesh = *problem.mesh;
   const std::size_t n_tets = mesh.n_tets();
   values_.resize(n_tets * n_points_ * n_coils_ * 3);
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
-  const int n_threads = static_cast<int>(
-      std::min<std::size_t>(threads > 0 ? threads : available_threads(), 1 + n_tets / 2000));
+  const std::size_t first = std::min(share.first, n_tets);
+  const std::size_t last = std::min(share.last, n_tets);
+  const int n_threads = static_cast<int>(std::min<std::size_t>(
+      threads > 0 ? threads : available_threads(), 1 + (last - first) / 2000));
   auto fill = [&](std::size_t begin, std::size_t end) {
     std::vector<Eigen::Vector3d> x, h(n_coils_);
     for (std::size_t t = begin; t < end; ++t) {
@@ -63,18 +66,23 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
       }
     }
   };
-  parallel_blocks(n_tets, block, n_threads,
-                  [&](std::size_t, std::size_t begin, std::size_t end) { fill(begin, end); });
+  parallel_blocks(
+      last - first, block, n_threads,
+      [&](std::size_t, std::size_t begin, std::size_t end) { fill(first + begin, first + end); });
 
   // DOF points of the tets outside the shell: B adds H_s at those of reduced tets, and the
-  // VTU shows H_s at all of them.
+  // VTU shows H_s at all of them. Each is computed by the share of its first such tet.
   std::vector<int> points;
   {
-    std::vector<unsigned char> needed(dofs.n_dofs(), 0);
+    std::vector<unsigned char> seen(dofs.n_dofs(), 0), needed(dofs.n_dofs(), 0);
     for (std::size_t t = 0; t < n_tets; ++t)
       if (!problem.is_shell(t))
-        for (int i = 0; i < dofs.dofs_per_element(); ++i)
-          needed[dofs.element_dofs(t)[i]] = 1;
+        for (int i = 0; i < dofs.dofs_per_element(); ++i) {
+          const int d = dofs.element_dofs(t)[i];
+          if (!seen[d])
+            needed[d] = t >= first && t < last;
+          seen[d] = 1;
+        }
     for (int d = 0; d < dofs.n_dofs(); ++d)
       if (needed[d])
         points.push_back(d);
@@ -92,6 +100,11 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
                           *out++ = static_cast<float>(h[k][c]);
                     }
                   });
+}
+
+void SourceFieldTable3D::gather_to_root() {
+  sum_to_root(values_.data(), values_.size());
+  sum_to_root(at_dofs_.data(), at_dofs_.size());
 }
 
 Eigen::Vector3d SourceFieldTable3D::H_at_dof(int d) const {

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "solver/dof_map3d.hpp"
+#include "solver/element_range.hpp"
 #include "solver/problem3d.hpp"
 #include "solver/source_field3d.hpp"
 
@@ -25,9 +26,15 @@ public:
 
   SourceFieldTable3D() = default;
   // threads: 0 = all cores (MAGFEM_THREADS). Each entry is computed on its own, so the table
-  // is the same whatever the count.
+  // is the same whatever the count. `share`: the tets whose entries are computed (a process's
+  // share in a distributed solve; the rest stay zero until gather_to_root), and the DOF points
+  // whose first tet outside the shell is one of them.
   SourceFieldTable3D(const Problem3D& problem, const DofMap3D& dofs, const SourceField3D& field,
-                     int threads = 0);
+                     int threads = 0, ElementRange share = {});
+  // Collective: rank 0's table becomes the whole one, every process having computed its share
+  // (each entry by one process: the sum is exact). Rank 0 alone post-processes; the other
+  // processes keep their share, all their element loops read.
+  void gather_to_root();
 
   bool empty() const { return values_.empty(); }
   // Every coil's H per ampere at rule point q of tet t, out[0..n_coils).

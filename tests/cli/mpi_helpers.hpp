@@ -1,6 +1,10 @@
 #pragma once
 // What the tests that run magfem under mpirun share (test_mpi.cpp: the distributed solve and
-// sweep; test_mpi_studies.cpp: study, validate, actuator --verify).
+// sweep; test_mpi_solve.cpp: coils and nonlinear iron; test_mpi_studies.cpp: study, validate,
+// actuator --verify): the launcher, fresh output folders, and the comparison of a distributed
+// run's outputs with a serial run's.
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -9,8 +13,10 @@
 
 #include <unistd.h>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "postproc/probe_compare.hpp"
 #include "tests/run_cli.hpp"
 
 namespace magfem::test {
@@ -35,9 +41,9 @@ inline std::string mpirun_path() {
 // `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
 // unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
 // process left waiting for another would hang the test: `timeout` ends it (exit 124).
-inline CliOutcome run_mpi(int n, const std::string& args) {
-  std::string cmd =
-      "timeout 120 " + mpirun_path() + " -n " + std::to_string(n) + " --oversubscribe ";
+inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 120) {
+  std::string cmd = "timeout " + std::to_string(timeout_s) + " " + mpirun_path() + " -n " +
+                    std::to_string(n) + " --oversubscribe ";
   if (geteuid() == 0) {
     cmd += "--allow-run-as-root ";
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
@@ -56,6 +62,21 @@ inline std::string text_of(const fs::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// Largest |a - b| over the B columns of two probe tables, relative to the largest |B| there.
+inline double probe_difference(const ProbeTable& a, const ProbeTable& b) {
+  EXPECT_EQ(a.columns, b.columns);
+  EXPECT_EQ(a.rows.size(), b.rows.size());
+  double diff = 0, scale = 0;
+  for (const char* c : {"Bx", "By", "Bz"}) {
+    const std::size_t k = a.column(c);
+    for (std::size_t i = 0; i < std::min(a.rows.size(), b.rows.size()); ++i) {
+      diff = std::max(diff, std::abs(a.rows[i][k] - b.rows[i][k]));
+      scale = std::max(scale, std::abs(a.rows[i][k]));
+    }
+  }
+  return scale > 0 ? diff / scale : diff;
 }
 
 } // namespace magfem::test

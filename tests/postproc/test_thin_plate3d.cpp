@@ -84,7 +84,7 @@ struct SheetStack {
   // The potential with phi = phi_exact on the outer faces: K_ff u = -r_f(lift), where the lift
   // holds the boundary values (the problem is linear, so r(lift + u) = r(lift) + K u).
   Eigen::VectorXd solve() const {
-    const Assembler3D assembler(problem, *dofs, {1});
+    const Assembler3D assembler(problem, *dofs, {1, {}});
     const auto& eq = assembler.dof_to_equation();
     Eigen::VectorXd lift = Eigen::VectorXd::Zero(dofs->n_dofs());
     for (int d = 0; d < dofs->n_dofs(); ++d)

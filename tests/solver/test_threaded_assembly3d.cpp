@@ -45,7 +45,7 @@ TEST(ThreadedAssembly3D, ResidualTangentAndRecoveredBEqualTheSerialOnesBitForBit
   problem.parts = {{&magnet, m}, {MaterialLibrary::bundled().find("steel_1010"), {}}};
   const DofMap3D dofs(mesh, 2);
 
-  const Assembler3D serial(problem, dofs, {1});
+  const Assembler3D serial(problem, dofs, {1, {}});
   // A potential that drives the steel into its knee: the Newton tangent's 2 mu' H H^T term
   // is non-zero.
   const Eigen::VectorXd u = 300.0 * Eigen::VectorXd::Random(serial.n_unknowns());
@@ -77,7 +77,7 @@ TEST(ThreadedAssembly3D, ResidualTangentAndRecoveredBEqualTheSerialOnesBitForBit
   ASSERT_GT(rec1.n_slots(), static_cast<std::size_t>(dofs.n_dofs()));
   const auto& b1 = rec1.values();
   for (int threads : {2, 3, 7}) {
-    const Assembler3D threaded(problem, dofs, {threads});
+    const Assembler3D threaded(problem, dofs, {threads, {}});
     Eigen::VectorXd r;
     Eigen::SparseMatrix<double> k;
     threaded.evaluate(u, r, &k, TangentKind::newton);

@@ -1,0 +1,102 @@
+#include "solver/distributed_linear_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "core/input_error.hpp"
+#include "core/progress.hpp"
+
+namespace magfem {
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// The preconditioner a distributed solve uses for the one the case asks for, and the note
+// that says so when they differ: rather than refuse a case that runs serially, the
+// factorizations and p-multigrid become BoomerAMG, the preconditioner hypre distributes
+// natively, and the summary says so.
+std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
+                                       std::vector<std::string>& notes) {
+  if (o.kind != LinearSolverKind::cholmod) {
+    if (o.preconditioner == PreconditionerKind::gamg)
+      return "gamg";
+    if (o.preconditioner == PreconditionerKind::boomeramg)
+      return "boomeramg";
+  }
+  std::string asked = "the automatic choice (CHOLMOD or incomplete Cholesky)";
+  if (o.kind == LinearSolverKind::cholmod)
+    asked = "CHOLMOD";
+  else if (o.preconditioner == PreconditionerKind::ichol)
+    asked = "incomplete Cholesky";
+  else if (o.preconditioner == PreconditionerKind::pmg)
+    asked = "p-multigrid";
+  notes.push_back("distributed over " + std::to_string(size) + " processes: CG + BoomerAMG in " +
+                  "place of " + asked + ", which runs on one process only");
+  if (o.progress)
+    o.progress->note(notes.back());
+  return "boomeramg";
+}
+
+PetscSolverOptions petsc_options(const LinearSolverOptions& o, int size,
+                                 std::vector<std::string>& notes) {
+  return PetscSolverOptions{distributed_preconditioner(o, size, notes),
+                            o.petsc_options,
+                            o.cg_tolerance,
+                            o.cg_max_iterations,
+                            o.progress,
+                            nullptr};
+}
+
+} // namespace
+
+DistributedLinearSolver::DistributedLinearSolver(const LinearSolverOptions& options, int size)
+    : tolerance_(options.cg_tolerance), solver_(petsc_options(options, size, notes_)) {}
+
+void DistributedLinearSolver::factorize(const Eigen::SparseMatrix<double>& lower_part) {
+  const auto t0 = Clock::now();
+  // The part has the whole pattern (Assembler3D's), which gives the exact preallocation.
+  solver_.begin_distributed(lower_part);
+  solver_.add_lower_share(lower_part);
+  solver_.setup_distributed();
+  setup_s_ += seconds_since(t0);
+}
+
+Eigen::VectorXd DistributedLinearSolver::solve(const Eigen::VectorXd& rhs) {
+  const auto t0 = Clock::now();
+  Eigen::VectorXd x;
+  const KrylovOutcome o = solver_.solve_distributed(rhs, x);
+  solve_s_ += seconds_since(t0);
+  last_iterations_ = o.iterations;
+  last_true_residual_ = o.true_relative_residual;
+  const std::string method = "CG + " + solver_.preconditioner_name();
+  if (!o.converged)
+    throw SolveError(describe_krylov_stop(o, method, tolerance_));
+  if (o.true_relative_residual > true_residual_limit(tolerance_)) {
+    char buf[120];
+    std::snprintf(buf, sizeof buf, "; the true residual |b - A x| / |b| is %.3e",
+                  o.true_relative_residual);
+    throw SolveError(describe_krylov_stop(o, method, tolerance_) + buf);
+  }
+  return x;
+}
+
+Eigen::MatrixXd DistributedLinearSolver::solve_many(const Eigen::MatrixXd& rhs) {
+  Eigen::MatrixXd x(rhs.rows(), rhs.cols());
+  int most = 0;
+  for (Eigen::Index j = 0; j < rhs.cols(); ++j) {
+    x.col(j) = solve(rhs.col(j));
+    most = std::max(most, last_iterations_);
+  }
+  last_iterations_ = most;
+  return x;
+}
+
+void DistributedLinearSolver::set_cg_tolerance(double tol) {
+  tolerance_ = tol;
+  solver_.set_relative_tolerance(tol);
+}
+
+} // namespace magfem

@@ -1,0 +1,184 @@
+// The distributed 3D solve with coils and nonlinear iron (issue 33 item 2): `mpirun -n N magfem
+// solve` against the serial run of the same case, for a coil over a permeable plate (the coil
+// source field evaluated per process, the inductance's sensitivity solve distributed) and a
+// magnet over a saturable steel plate (Newton with distributed residuals and tangents).
+// The energy, the coil's flux linkage and inductance agree to 1e-8 and every probe value to
+// 1e-6 of the largest |B|; a Newton that does not converge ends every process with exit 3 and
+// writes nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/case_helpers.hpp"
+#include "tests/cli/mpi_helpers.hpp"
+
+namespace fs = std::filesystem;
+using magfem::test::CliOutcome;
+
+namespace {
+
+// Serial runs factorize (CHOLMOD) or solve by CG with p-multigrid, distributed ones by CG with
+// BoomerAMG; the cases ask both to stop CG at 1e-12 (and Newton at its 1e-9 residual and
+// update). The energy is stationary at the discrete solution, so it moves with the square of
+// the solution difference: measured 1e-16 to 1e-12 relative (coil, magnet over steel), so 1e-8
+// (the issue's target) has room for other machines' rounding. Fields are linear in the
+// solution: probes to 1e-6 of the largest |B| (the issue's target; measured ~1e-10). A rank's
+// share of the source load or of the matrix lost changes these by percents.
+constexpr double energy_tol = 1e-8;
+constexpr double probe_tol = 1e-6;
+
+// `example` with `solver:` replaced (tolerances tight enough to compare runs), written to
+// `dir`.
+fs::path write_case(const fs::path& dir, const std::string& example, const std::string& solver) {
+  std::ifstream in(magfem::test::example(example));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string old = "solver: {order: 2}";
+  const auto at = text.find(old);
+  EXPECT_NE(at, std::string::npos) << example;
+  if (at != std::string::npos)
+    text.replace(at, old.size(), solver);
+  fs::create_directories(dir);
+  const fs::path file = dir / fs::path(example).filename();
+  std::ofstream(file) << text;
+  return file;
+}
+
+double relative(double a, double b) {
+  return std::abs(a - b) / std::max(std::abs(a), 1e-300);
+}
+
+// The serial run of `args` (its outputs in dir/serial), then `mpirun -n <n>` of it (dir/ranks_n),
+// and every comparison: ranks, energy, each region's energy, coils' linkage and inductance,
+// probes.
+void expect_serial_field(const fs::path& dir, const std::string& args, int n, int timeout_s = 120) {
+  const fs::path serial_dir = dir / "serial", mpi_dir = dir / ("ranks_" + std::to_string(n));
+  if (!fs::exists(serial_dir / "summary.json")) {
+    const CliOutcome serial =
+        magfem::test::run_cli("solve " + args + " --out " + serial_dir.string());
+    ASSERT_EQ(serial.status, 0) << serial.out;
+  }
+  const CliOutcome mpi =
+      magfem::test::run_mpi(n, "solve " + args + " --out " + mpi_dir.string(), timeout_s);
+  ASSERT_EQ(mpi.status, 0) << mpi.out;
+  const auto s = magfem::test::read_json(serial_dir / "summary.json");
+  const auto m = magfem::test::read_json(mpi_dir / "summary.json");
+  EXPECT_EQ(m["ranks"], n);
+  const double e = relative(s["energy_J"], m["energy_J"]);
+  EXPECT_LE(e, energy_tol) << s["energy_J"] << " J serially, " << m["energy_J"] << " J on " << n;
+  std::printf("%d ranks: energy %.17g J against %.17g J, relative difference %.2e\n", n,
+              double(m["energy_J"]), double(s["energy_J"]), e);
+  ASSERT_EQ(m["regions"].size(), s["regions"].size());
+  for (std::size_t i = 0; i < s["regions"].size(); ++i)
+    if (s["regions"][i].is_object()) {
+      EXPECT_LE(relative(s["regions"][i]["energy_J"], m["regions"][i]["energy_J"]), energy_tol)
+          << s["regions"][i]["name"];
+    }
+  if (s.contains("coils")) {
+    ASSERT_EQ(m["coils"].size(), s["coils"].size());
+    for (std::size_t k = 0; k < s["coils"].size(); ++k) {
+      const double l = relative(s["coils"][k]["flux_linkage_Wb"], m["coils"][k]["flux_linkage_Wb"]);
+      const double ind = relative(s["coils"][k]["inductance_H"], m["coils"][k]["inductance_H"]);
+      EXPECT_LE(l, energy_tol) << "linkage of coil " << k;
+      EXPECT_LE(ind, energy_tol) << "inductance of coil " << k;
+      std::printf("coil %zu: linkage differs by %.2e, inductance by %.2e\n", k, l, ind);
+    }
+  }
+  for (const auto& name : s.value("probes", nlohmann::json::array())) {
+    const std::string file = name;
+    const double d =
+        magfem::test::probe_difference(magfem::read_probe_csv((serial_dir / file).string()),
+                                       magfem::read_probe_csv((mpi_dir / file).string()));
+    EXPECT_LE(d, probe_tol) << file;
+    std::printf("%s: largest B difference %.2e of the largest |B|\n", file.c_str(), d);
+  }
+}
+
+class MpiSolve : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (magfem::test::mpirun_path().empty())
+      GTEST_SKIP() << "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
+  }
+};
+
+// Coarse P1 variants (seconds a run): the distributed code paths are those of P2.
+std::string coil_case(const fs::path& dir) {
+  return write_case(dir, "3d/coil_over_plate.yaml", "solver: {order: 1, linear_tolerance: 1e-12}")
+             .string() +
+         " --mesh-scale 4";
+}
+
+std::string steel_case(const fs::path& dir) {
+  return write_case(dir, "3d/magnet_over_steel_plate.yaml",
+                    "solver: {order: 1, linear_tolerance: 1e-12}")
+             .string() +
+         " --mesh-scale 4";
+}
+
+} // namespace
+
+// The coil's source field on each process's own tetrahedra, the distributed inductance solve.
+TEST_F(MpiSolve, CoilCaseOnTwoProcessesGivesTheSerialField) {
+  const fs::path dir = magfem::test::fresh_dir("coil");
+  expect_serial_field(dir, coil_case(dir), 2);
+  fs::remove_all(dir);
+}
+
+// Newton with every residual (the line search's too) summed over the processes.
+TEST_F(MpiSolve, NonlinearCaseOnTwoProcessesGivesTheSerialField) {
+  const fs::path dir = magfem::test::fresh_dir("steel");
+  expect_serial_field(dir, steel_case(dir), 2);
+  fs::remove_all(dir);
+}
+
+// Newton stopped after two iterations: every process sees the same residuals and gives up
+// together, exit 3 on all, nothing written, no process left waiting (the timeout's 124).
+TEST_F(MpiSolve, NewtonThatDoesNotConvergeEndsEveryProcessWithoutOutputs) {
+  const fs::path dir = magfem::test::fresh_dir("newton_failure");
+  const fs::path file =
+      write_case(dir, "3d/magnet_over_steel_plate.yaml", "solver: {order: 1, max_iterations: 2}");
+  const CliOutcome o = magfem::test::run_mpi(
+      2, "solve " + file.string() + " --mesh-scale 4 --out " + (dir / "out").string());
+  EXPECT_EQ(o.status, 3) << o.out;
+  EXPECT_NE(o.out.find("did not converge"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
+// One process under mpirun (the serial path) and three (an uneven split of the elements and
+// rows): label long.
+TEST_F(MpiSolve, LongCoilAndNonlinearCasesOnOneAndThreeProcesses) {
+  const fs::path coil = magfem::test::fresh_dir("coil_1_3");
+  for (int n : {1, 3})
+    expect_serial_field(coil, coil_case(coil), n);
+  fs::remove_all(coil);
+  const fs::path steel = magfem::test::fresh_dir("steel_1_3");
+  for (int n : {1, 3})
+    expect_serial_field(steel, steel_case(steel), n);
+  fs::remove_all(steel);
+}
+
+// TEAM 20 (nonlinear steel driven by a coil; the issue's third case), coarse P1 (44k
+// tetrahedra: half a minute a run, most of it the coil's source field): the pole force too.
+TEST_F(MpiSolve, LongTeam20OnTwoAndThreeProcesses) {
+  const fs::path dir = magfem::test::fresh_dir("team20");
+  const std::string args =
+      write_case(dir, "3d/team20.yaml", "solver: {order: 1, linear_tolerance: 1e-12}").string() +
+      " --mesh-scale 6";
+  for (int n : {2, 3}) {
+    expect_serial_field(dir, args, n, 600);
+    const auto s = magfem::test::read_json(dir / "serial" / "summary.json");
+    const auto m = magfem::test::read_json(dir / ("ranks_" + std::to_string(n)) / "summary.json");
+    ASSERT_FALSE(s["forces"].empty());
+    const double fz = s["forces"][0]["force_N"][2], fz_mpi = m["forces"][0]["force_N"][2];
+    EXPECT_LE(relative(fz, fz_mpi), probe_tol) << fz << " N against " << fz_mpi << " N";
+  }
+  fs::remove_all(dir);
+}
