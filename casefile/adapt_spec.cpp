@@ -4,6 +4,7 @@
 #include <array>
 
 #include "casefile/case_spec.hpp"
+#include "core/input_error.hpp"
 
 namespace magfem {
 namespace {
@@ -47,6 +48,18 @@ std::optional<AdaptQuantity> parse_adapt_quantity(const std::string& text, const
   }
   why = "unknown quantity '" + text + "' (energy, forces.NAME.COMPONENT, probes.NAME)";
   return std::nullopt;
+}
+
+void apply_adapt_overrides(AdaptSpec& a, const AdaptOverrides& o, const AdaptOverrideNames& n) {
+  if (o.accuracy_pct)
+    a.accuracy_pct = *o.accuracy_pct;
+  if ((o.max_passes || o.max_unknowns) && !a.enabled())
+    throw InputError(n.file, 0, o.max_passes ? n.max_passes : n.max_unknowns,
+                     "applies to adaptive solves: give " + n.accuracy + " or an adapt: section");
+  if (o.max_passes)
+    a.max_passes = *o.max_passes;
+  if (o.max_unknowns)
+    a.max_unknowns = *o.max_unknowns;
 }
 
 } // namespace magfem

@@ -20,6 +20,23 @@ struct AdaptSpec {
   bool enabled() const { return accuracy_pct > 0; }
 };
 
+// An accuracy and limits given beside the case (`solve --accuracy --max-passes --max-unknowns`,
+// Python's Case.solve(accuracy=, max_passes=, max_unknowns=)); unset ones keep the case's.
+struct AdaptOverrides {
+  std::optional<double> accuracy_pct, max_unknowns;
+  std::optional<int> max_passes;
+};
+
+// The caller's names of the three settings, for messages.
+struct AdaptOverrideNames {
+  std::string file, accuracy, max_passes, max_unknowns;
+};
+
+// Applies `o` over the case's adapt: section. A limit with no accuracy from either is an
+// InputError naming the limit: limits of a solve that does not adapt would be silently
+// ignored.
+void apply_adapt_overrides(AdaptSpec& a, const AdaptOverrides& o, const AdaptOverrideNames& n);
+
 // A named quantity resolved against the case. Force components: Fx Fy Fz Tx Ty Tz, or
 // force / torque for the magnitude. A probe stands for the rms |B| over its samples.
 struct AdaptQuantity {

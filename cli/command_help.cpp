@@ -60,7 +60,7 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  guard) and stops. Prints per region its elements, area (planar) or volume and the\n"
      "  shortest and longest element edge; writes into DIR (default out/<case>_mesh):\n"
      "  summary.json (elements, nodes, unknowns at the order, regions, mesh quality, the\n"
-     "  mesher's warnings), mesh.vtu (region_id per cell, for ParaView) and mesh.png (2D:\n"
+     "  mesher's warnings), mesh.vtu (region_id and region name per cell) and mesh.png (2D:\n"
      "  the mesh coloured by region; 3D: its cut by the plane through the origin normal to\n"
      "  --plane, default y, i.e. the xz plane). The open boundary's shell is left out.\n"
      "  --order 1|2       the order whose unknowns are counted\n"
@@ -78,8 +78,10 @@ constexpr std::array<CommandHelp, 10> commands{{
      "                    [--max-memory GB] [--resume] [--quiet] [--out DIR]\n"
      "       magfem sweep CASE.yaml --move GROUP --axis x|y|z|ax,ay,az\n"
      "                    --positions START:STEP:END|A,B,C [--analytic] [--order 1|2]\n"
-     "                    [--mesh-scale S] [--jobs N] [--resume] [--quiet] [--out DIR]\n"
-     "                    (3D and axisymmetric cases; axisymmetric: --axis z, FE only)",
+     "                    [--point px,py,0] [--mesh-scale S] [--jobs N] [--resume]\n"
+     "                    [--quiet] [--out DIR]\n"
+     "                    (3D, planar and axisymmetric cases; planar: --axis x|y|dx,dy,\n"
+     "                    FE only; axisymmetric: --axis z, FE only)",
      "torque and force while a group of parts rotates or moves along a line",
      "  Rotates GROUP (magnets, iron and coils) about the axis through the origin or --point\n"
      "  (right-hand rule) and writes sweep.csv (angle_deg,Tx,Ty,Tz,Fx,Fy,Fz: torque about\n"
@@ -96,6 +98,10 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  about --point (default the origin; px,py,0) and takes the torque about it (Tz)\n"
      "  and the force on the group from the Lorentz force on its coils, else the case's\n"
      "  one `band` (or `circle`) force around it: cogging torque against rotor angle.\n"
+     "  Planar 2D cases: --move GROUP --axis x|y|dx,dy translates those regions in the\n"
+     "  plane by the positions (mm), their magnetizations and the `circle` or `band`\n"
+     "  force around them with them, and writes sweep.csv with position_mm in place of\n"
+     "  angle_deg: force per metre against gap, Tz about --point moved with the group.\n"
      "  3D cases: --move translates GROUP along --axis by the positions (mm) and writes\n"
      "  sweep.csv with position_mm in place of angle_deg (force against gap); the stress\n"
      "  sphere about the origin is chosen mid-gap at each position (--analytic as above).\n"
@@ -148,7 +154,8 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  inequality (<= or >=) between expressions of the --vary names in their own units,\n"
      "  e.g. \"R_out - R_in >= 10\"; exit 3 if no point satisfies it. --verify-fe solves\n"
      "  the optimum by FE (mesh as set by --mesh-scale/--order) and reports the FE value\n"
-     "  beside the analytic one. Writes summary.json into DIR (default out/<case>_optimize).\n"},
+     "  beside the analytic one. Writes summary.json and history.csv (every evaluation:\n"
+     "  the variables and the objective) into DIR (default out/<case>_optimize).\n"},
     {"actuator",
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
@@ -174,13 +181,18 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
-     "  FE runs show the orientation, stage and solver residual on stderr; --quiet\n"
-     "  turns that off.\n"
+     "  FE runs show the orientation, stage and solver residual on stderr, --analytic\n"
+     "  the charge model's share of points done; --quiet turns that off.\n"
      "  --coil-pitch START:STEP:END (deg): the thesis's coil-pitch study (sec. 5.3) instead\n"
      "  of the case's coils: coil_pitch.csv (mean copper loss against pitch), coil_pitch.png.\n"},
-    {"materials", "magfem materials [--export NAME]",
-     "list the bundled materials, or write one's B-H table as CSV",
-     "  Without options: one line per bundled entry (name, kind, other names).\n"
+    {"materials", "magfem materials [NAME | --export NAME]",
+     "list the bundled materials, show one, or write one's B-H table as CSV",
+     "  Without options: one line per bundled entry (name, kind, other names; magnets their\n"
+     "  B_r and the knee data the demagnetization check uses, H_cJ and its temperature\n"
+     "  coefficient).\n"
+     "  NAME            the entry in full: B_r, mu_r, H_cJ with their temperature\n"
+     "                  coefficients and the knee B_r(T) - mu0 mu_r H_cJ(T) from 20 to\n"
+     "                  150 C (magnets), the B-H table's extent (soft), and the source.\n"
      "  --export NAME   writes the B-H table of the soft entry NAME to stdout in the format\n"
      "                  a case's `bh_file:` reads (a '#' line with its source, the header\n"
      "                  H_Apm,B_T, then H in A/m and B in T), e.g.\n"

@@ -77,16 +77,8 @@ int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides o
 
 // The command line's --accuracy / --max-passes / --max-unknowns over the case file's adapt:.
 void apply_adapt_options(const Args& args, magfem::CaseSpec& spec) {
-  if (args.accuracy_pct)
-    spec.adapt.accuracy_pct = *args.accuracy_pct;
-  if ((args.max_passes || args.max_unknowns) && !spec.adapt.enabled())
-    throw magfem::InputError("<command line>", 0,
-                             args.max_passes ? "--max-passes" : "--max-unknowns",
-                             "applies to adaptive solves: give --accuracy or an adapt: section");
-  if (args.max_passes)
-    spec.adapt.max_passes = *args.max_passes;
-  if (args.max_unknowns)
-    spec.adapt.max_unknowns = *args.max_unknowns;
+  magfem::apply_adapt_overrides(spec.adapt, {args.accuracy_pct, args.max_unknowns, args.max_passes},
+                                {"<command line>", "--accuracy", "--max-passes", "--max-unknowns"});
 }
 
 int run_solve(const Args& args) {
@@ -193,10 +185,6 @@ int run_sweep_axi(const Args& args) {
   using magfem::InputError;
   const std::string cli = "<command line>";
   const auto spec = magfem::read_case(args.case_file);
-  if (!spec.axisymmetric())
-    throw InputError(cli, 0, "--move",
-                     "a planar 2D sweep turns a group (--rotate); translations are for "
-                     "axisymmetric and 3D cases");
   if (args.axis != "z")
     throw InputError(cli, 0, "--axis", "an axisymmetric group moves along z: give --axis z");
   if (args.positions.empty())
@@ -250,8 +238,8 @@ int run_sweep(const Args& args) {
   if (!args.move.empty() && !args.rotate.empty())
     throw InputError(cli, 0, "--move", "give --rotate GROUP or --move GROUP, not both");
   const bool translate = !args.move.empty();
-  if (translate && magfem::read_case(args.case_file).dimension == 2)
-    return run_sweep_axi(args); // planar cases are refused there, naming --move
+  if (translate && magfem::read_case(args.case_file).axisymmetric())
+    return run_sweep_axi(args);
   if (!translate && args.rotate.empty())
     throw InputError(cli, 0, "--rotate", "name the group to rotate (or --move GROUP)");
   if (args.axis.empty())
@@ -264,10 +252,11 @@ int run_sweep(const Args& args) {
     throw InputError(cli, 0, "--angles", "give the angles");
   const auto spec = magfem::read_case(args.case_file);
   const double s = spec.length_unit;
+  const bool planar = spec.dimension == 2 && !spec.axisymmetric();
   magfem::SweepOptions o;
   o.group = translate ? args.move : args.rotate;
   o.motion = translate ? magfem::SweepMotion::translate : magfem::SweepMotion::rotate;
-  o.axis = magfem::parse_axis(args.axis);
+  o.axis = magfem::parse_axis(args.axis, planar);
   if (translate)
     for (const double p : magfem::parse_angle_list(args.positions, "--positions"))
       o.offsets_m.push_back(1e-3 * p);
@@ -297,7 +286,6 @@ int run_sweep(const Args& args) {
   magfem::SweepJobs jobs;
   const bool quiet = args.quiet || !o.world.is_root();
   const auto progress = quiet ? magfem::SweepProgress{} : show_progress;
-  const bool planar = spec.dimension == 2 && !spec.axisymmetric();
   const auto rows = planar ? magfem::run_sweep_planar(spec, o, progress, &jobs)
                            : magfem::run_sweep(spec, o, progress, &jobs);
   if (!o.world.is_root()) // rank 0 has the rows, and writes and reports them
@@ -305,8 +293,15 @@ int run_sweep(const Args& args) {
   magfem::OutputStage stage(args.out_dir);
   stage.write_text("sweep.csv", magfem::sweep_csv(rows, o.motion));
   std::string why;
+  magfem::SweepPlotLabels labels;
+  if (planar) { // about the sweep's point, per metre of length unless the case has a stack
+    const std::string per = spec.stack_length > 0 ? "" : "/m";
+    labels.torque = std::string("torque about the point") +
+                    (translate ? " moved with the group" : "") + " (N m" + per + ")";
+    labels.force = "force on the group (N" + per + ")";
+  }
   const bool plotted = magfem::plot_sweep(rows, spec.file + (o.analytic ? " (analytic)" : " (FE)"),
-                                          stage.path_for("sweep.png"), why, o.motion);
+                                          stage.path_for("sweep.png"), why, o.motion, labels);
   if (!plotted)
     std::cerr << "magfem: note: no sweep.png: " << why << "\n";
   nlohmann::ordered_json j;

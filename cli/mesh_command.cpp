@@ -17,6 +17,7 @@
 #include "pipeline/run2d.hpp"
 #include "pipeline/run3d.hpp"
 #include "postproc/tet_plane_cut.hpp"
+#include "postproc/vtu_cell_names.hpp"
 #include "postproc/vtu_writer.hpp"
 #include "solver/dof_map2d.hpp"
 #include "solver/dof_map3d.hpp"
@@ -218,7 +219,7 @@ VtuGrid mesh_grid(const std::vector<Eigen::Vector3d>& points, int cell_type,
                   const std::vector<std::vector<int>>& cells, const std::vector<int>& region) {
   VtuGrid g;
   g.points = points;
-  VtuArray ids{"region_id", 1, {}};
+  VtuArray ids{"region_id", 1, {}, VtuType::Int32};
   for (std::size_t c = 0; c < cells.size(); ++c) {
     g.cell_types.push_back(cell_type);
     g.connectivity.insert(g.connectivity.end(), cells[c].begin(), cells[c].end());
@@ -327,8 +328,10 @@ int run_mesh_command(const std::vector<std::string>& args) {
   add_provenance(j);
 
   OutputStage stage(o.out_dir);
-  for (std::size_t i = 0; i < spec.regions.size(); ++i)
-    out.grid.material_names.push_back(spec.regions[i].name);
+  std::vector<std::string> region_names;
+  for (const auto& r : spec.regions)
+    region_names.push_back(r.name);
+  add_cell_names(out.grid, "region_id", "region", "region_names", region_names);
   write_vtu(stage.path_for("mesh.vtu").string(), out.grid);
   std::string why;
   if (!plot_polygons(out.picture, spec,

@@ -4,8 +4,8 @@
 // at before a long run. Writes into DIR (default out/<case>_mesh), all or nothing:
 // summary.json (elements, nodes, unknowns at the order, per region its elements, size and
 // smallest and largest element edge, mesh quality, the mesher's warnings), mesh.vtu (region_id
-// per cell, for ParaView) and mesh.png (2D: the mesh coloured by region; 3D: its cut by the
-// coordinate plane through the origin normal to --plane, default y: the xz plane).
+// and region name per cell, for ParaView) and mesh.png (2D: the mesh coloured by region; 3D: its
+// cut by the coordinate plane through the origin normal to --plane, default y: the xz plane).
 #include <string>
 #include <vector>
 

@@ -257,7 +257,8 @@ public:
       j["coils"] = coils_json_2d(run.coils);
   }
   static void stage_vtu(OutputStage& stage, const Run2D& run, const VtuMaterials& materials) {
-    VtuGrid grid = make_vtu_2d(*run.field, materials.of_region, 0, materials.names);
+    VtuGrid grid =
+        make_vtu_2d(*run.field, materials.of_region, 0, materials.names, materials.region_names);
     // eta_K^2 per cell (J/m planar, J axisymmetric).
     grid.cell_data.push_back(error_indicator_cells(run.problem, run.error.eta2));
     add_B_along_M(grid, run.demagnetization,
@@ -265,7 +266,8 @@ public:
     write_vtu(stage.path_for("solution.vtu").string(), grid);
     if (run.spec.write_revolved_vtu)
       write_vtu(stage.path_for("solution_revolved.vtu").string(),
-                make_vtu_revolved(*run.field, materials.of_region, 0, materials.names));
+                make_vtu_revolved(*run.field, materials.of_region, 0, materials.names,
+                                  materials.region_names));
   }
   static std::string describe_head(const Run2D& run) {
     char buf[512];

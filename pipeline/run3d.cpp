@@ -379,7 +379,7 @@ public:
   }
   static void stage_vtu(OutputStage& stage, const Run3D& run, const VtuMaterials& materials) {
     VtuGrid grid = make_vtu_3d(*run.field, run.recovered_B.dof_average(), materials.of_region, 0,
-                               materials.names);
+                               materials.names, materials.region_names);
     // eta_K^2 (J) per cell.
     grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2_J));
     add_B_along_M(grid, run.demagnetization,

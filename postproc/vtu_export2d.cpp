@@ -1,15 +1,18 @@
 #include "postproc/vtu_export2d.hpp"
 
+#include "postproc/vtu_cell_names.hpp"
+
 namespace magfem {
 
-VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_part, int air_material,
-                    const std::vector<std::string>& material_names) {
+VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_part,
+                    int air_material, const std::vector<std::string>& material_names,
+                    const std::vector<std::string>& region_names) {
   const auto& problem = field.problem();
   const auto& mesh = *problem.mesh;
   const auto& dofs = field.dofs();
   VtuGrid g;
-  g.material_names = material_names;
-  for (const auto& p : dofs.dof_points()) g.points.emplace_back(p.x(), p.y(), 0.0);
+  for (const auto& p : dofs.dof_points())
+    g.points.emplace_back(p.x(), p.y(), 0.0);
 
   const auto b_nodes = field.recovered_B();
   const bool axi = problem.axisymmetric();
@@ -27,12 +30,14 @@ VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_pa
   if (axi)
     g.point_data.push_back(psi);
 
-  VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"B", 3, {}},
-      bcm{"|B|", 1, {}}, hc{"H", 3, {}};
+  VtuArray region{"region_id", 1, {}, VtuType::Int32},
+      material{"material_id", 1, {}, VtuType::Int32}, bc{"B", 3, {}}, bcm{"|B|", 1, {}},
+      hc{"H", 3, {}};
   const int per = dofs.dofs_per_element();
   const int type = dofs.order() == 1 ? 5 : 22;
   for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
-    if (problem.is_shell(t)) continue;
+    if (problem.is_shell(t))
+      continue;
     const int* dof = dofs.element_dofs(t);
     g.connectivity.insert(g.connectivity.end(), dof, dof + per);
     g.offsets.push_back(static_cast<int>(g.connectivity.size()));
@@ -48,6 +53,7 @@ VtuGrid make_vtu_2d(const Field2D& field, const std::vector<int>& material_of_pa
     hc.values.insert(hc.values.end(), {h.x(), h.y(), 0.0});
   }
   g.cell_data = {region, material, bc, bcm, hc};
+  add_region_and_material_names(g, region_names, material_names);
   return g;
 }
 

@@ -1,17 +1,19 @@
 #include "postproc/vtu_export3d.hpp"
 
+#include "postproc/vtu_cell_names.hpp"
+
 #include "solver/coil_source3d.hpp"
 
 namespace magfem {
 
 VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& recovered_B,
                     const std::vector<int>& material_of_part, int air_material,
-                    const std::vector<std::string>& material_names) {
+                    const std::vector<std::string>& material_names,
+                    const std::vector<std::string>& region_names) {
   const auto& problem = field.problem();
   const auto& mesh = *problem.mesh;
   const auto& dofs = field.dofs();
   VtuGrid g;
-  g.material_names = material_names;
   g.points = dofs.dof_points();
 
   VtuArray phi{"phi", 1, {}}, bp{"B", 3, {}}, bpm{"|B|", 1, {}};
@@ -34,8 +36,9 @@ VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& re
     g.point_data.push_back(std::move(hs));
   }
 
-  VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"B", 3, {}},
-      bcm{"|B|", 1, {}}, hc{"H", 3, {}}, mc{"magnetization", 3, {}}, jc{"J", 3, {}};
+  VtuArray region{"region_id", 1, {}, VtuType::Int32},
+      material{"material_id", 1, {}, VtuType::Int32}, bc{"B", 3, {}}, bcm{"|B|", 1, {}},
+      hc{"H", 3, {}}, mc{"magnetization", 3, {}}, jc{"J", 3, {}};
   const int per = dofs.dofs_per_element();
   const int type = dofs.order() == 1 ? 10 : 24;
   const std::array<double, 4> centroid = {0.25, 0.25, 0.25, 0.25};
@@ -66,6 +69,7 @@ VtuGrid make_vtu_3d(const Field3D& field, const std::vector<Eigen::Vector3d>& re
   g.cell_data = {region, material, bc, bcm, hc, mc};
   if (coils)
     g.cell_data.push_back(jc);
+  add_region_and_material_names(g, region_names, material_names);
   return g;
 }
 

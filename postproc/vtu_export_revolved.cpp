@@ -1,5 +1,7 @@
 #include "postproc/vtu_export_revolved.hpp"
 
+#include "postproc/vtu_cell_names.hpp"
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -10,7 +12,7 @@ namespace magfem {
 
 VtuGrid make_vtu_revolved(const Field2D& field, const std::vector<int>& material_of_part,
                           int air_material, const std::vector<std::string>& material_names,
-                          int n_phi) {
+                          const std::vector<std::string>& region_names, int n_phi) {
   const auto& problem = field.problem();
   if (!problem.axisymmetric() || n_phi < 3)
     throw std::invalid_argument("make_vtu_revolved: an axisymmetric field and n_phi >= 3");
@@ -18,7 +20,6 @@ VtuGrid make_vtu_revolved(const Field2D& field, const std::vector<int>& material
   const auto b_nodes = field.recovered_B(); // per DOF; mesh vertices are DOFs 0..n_nodes-1
   const int n_nodes = static_cast<int>(mesh.n_nodes());
   VtuGrid g;
-  g.material_names = material_names;
   VtuArray a{"A_phi", 1, {}}, b{"B", 3, {}}, bm{"|B|", 1, {}};
   for (int k = 0; k < n_phi; ++k) {
     const double phi = 2 * pi * k / n_phi, c = std::cos(phi), s = std::sin(phi);
@@ -32,7 +33,8 @@ VtuGrid make_vtu_revolved(const Field2D& field, const std::vector<int>& material
     }
   }
   g.point_data = {a, b, bm};
-  VtuArray region{"region_id", 1, {}}, material{"material_id", 1, {}}, bc{"|B|", 1, {}};
+  VtuArray region{"region_id", 1, {}, VtuType::Int32},
+      material{"material_id", 1, {}, VtuType::Int32}, bc{"|B|", 1, {}};
   constexpr int vtk_wedge = 13;
   const std::array<double, 3> centroid = {1.0 / 3, 1.0 / 3, 1.0 / 3};
   for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
@@ -55,6 +57,7 @@ VtuGrid make_vtu_revolved(const Field2D& field, const std::vector<int>& material
     }
   }
   g.cell_data = {region, material, bc};
+  add_region_and_material_names(g, region_names, material_names);
   return g;
 }
 

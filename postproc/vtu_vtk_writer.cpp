@@ -8,9 +8,11 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -19,14 +21,28 @@
 namespace magfem {
 namespace {
 
-vtkNew<vtkDoubleArray> make_array(const VtuArray& a) {
-  vtkNew<vtkDoubleArray> arr;
+template <class Array, class Value> vtkSmartPointer<vtkDataArray> filled(const VtuArray& a) {
+  vtkNew<Array> arr;
   arr->SetName(a.name.c_str());
   arr->SetNumberOfComponents(a.components);
   const vtkIdType n = static_cast<vtkIdType>(a.values.size()) / a.components;
   arr->SetNumberOfTuples(n);
   for (vtkIdType i = 0; i < n * a.components; ++i)
-    arr->SetValue(i, a.values[i]);
+    arr->SetValue(i, static_cast<Value>(a.values[i]));
+  return vtkSmartPointer<vtkDataArray>(arr.GetPointer());
+}
+
+vtkSmartPointer<vtkDataArray> make_array(const VtuArray& a) {
+  // vtkIntArray is written as Int32 (VTK's int is 32 bits on every platform it supports).
+  return a.type == VtuType::Int32 ? filled<vtkIntArray, int>(a) : filled<vtkDoubleArray, double>(a);
+}
+
+vtkNew<vtkStringArray> make_strings(const VtuStrings& s) {
+  vtkNew<vtkStringArray> arr;
+  arr->SetName(s.name.c_str());
+  arr->SetNumberOfValues(static_cast<vtkIdType>(s.values.size()));
+  for (std::size_t i = 0; i < s.values.size(); ++i)
+    arr->SetValue(static_cast<vtkIdType>(i), s.values[i]);
   return arr;
 }
 
@@ -52,13 +68,10 @@ void write_vtu_with_vtk(const std::string& path, const VtuGrid& grid) {
     ug->GetPointData()->AddArray(make_array(a));
   for (const auto& a : grid.cell_data)
     ug->GetCellData()->AddArray(make_array(a));
-  if (!grid.material_names.empty()) {
-    vtkNew<vtkStringArray> names;
-    names->SetName("material_names");
-    for (const auto& n : grid.material_names)
-      names->InsertNextValue(n);
-    ug->GetFieldData()->AddArray(names);
-  }
+  for (const auto& s : grid.cell_names)
+    ug->GetCellData()->AddArray(make_strings(s));
+  for (const auto& s : grid.field_data)
+    ug->GetFieldData()->AddArray(make_strings(s));
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName(path.c_str());

@@ -2,6 +2,7 @@
 
 #include "core/backend_module.hpp"
 #include "postproc/vtk_backend.hpp"
+#include "postproc/vtu_unused_points.hpp"
 
 namespace magfem {
 
@@ -13,7 +14,9 @@ const VtkBackend& vtk_backend() {
 }
 
 void write_vtu(const std::string& path, const VtuGrid& grid) {
-  vtk_backend().write_vtu(path, grid);
+  VtuGrid used = grid;
+  drop_unused_points(used);
+  vtk_backend().write_vtu(path, used);
 }
 
 } // namespace magfem

@@ -8,10 +8,21 @@
 
 namespace magfem {
 
+// How an array is stored in the file. Ids are Int32 so that ParaView offers them to
+// Threshold and categorical colouring as the whole numbers they are.
+enum class VtuType { Float64, Int32 };
+
 struct VtuArray {
   std::string name;
   int components = 1;
-  std::vector<double> values; // components * count, interleaved
+  std::vector<double> values; // components * count, interleaved (Int32: whole numbers)
+  VtuType type = VtuType::Float64;
+};
+
+// A string array: one name per cell (cell_names) or a table (field_data).
+struct VtuStrings {
+  std::string name;
+  std::vector<std::string> values;
 };
 
 struct VtuGrid {
@@ -22,9 +33,12 @@ struct VtuGrid {
   std::vector<int> connectivity;
   std::vector<VtuArray> point_data;
   std::vector<VtuArray> cell_data;
-  std::vector<std::string> material_names; // stored as field data "material_names"
+  std::vector<VtuStrings> cell_names; // string cell data (vtu_cell_names.hpp)
+  std::vector<VtuStrings> field_data; // tables such as material_names
 };
 
+// Writes the grid without the points no cell uses (drop_unused_points, vtu_unused_points.hpp:
+// the open boundary's shell is not written, its nodes would otherwise stay as stray points).
 // Throws std::runtime_error if the file cannot be written.
 void write_vtu(const std::string& path, const VtuGrid& grid);
 

@@ -10,6 +10,7 @@
 #include "core/input_error.hpp"
 #include "python/actuator.hpp"
 #include "python/analytic.hpp"
+#include "python/optimize.hpp"
 #include "python/solution.hpp"
 #include "python/study.hpp"
 #include "python/sweep.hpp"
@@ -75,4 +76,5 @@ PYBIND11_MODULE(_core, m) {
   magfem::python::bind_study(m);
   magfem::python::bind_actuator(m);
   magfem::python::bind_validate(m);
+  magfem::python::bind_optimize(m);
 }

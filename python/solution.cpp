@@ -3,11 +3,14 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
 
 #include "core/input_error.hpp"
+#include "pipeline/adapt2d.hpp"
+#include "pipeline/adapt3d.hpp"
 #include "python/case_source.hpp"
 #include "python/py_progress.hpp"
 #include "python/result_tables.hpp"
@@ -35,31 +38,58 @@ template <std::size_t N> py::array_t<int> rows_of(const std::vector<std::array<i
   return out;
 }
 
-std::unique_ptr<Solution> solve_case(const std::string& path, const std::string& text,
-                                     const std::string& name,
-                                     const std::map<std::string, double>& parameters, int order,
-                                     double mesh_scale, py::object progress) {
+// The accuracy and limits of an adaptive solve as Case.solve passes them (None: the case's),
+// checked as the command line checks --accuracy, --max-passes and --max-unknowns.
+AdaptOverrides adapt_overrides(std::optional<double> accuracy_pct, std::optional<int> max_passes,
+                               std::optional<double> max_unknowns) {
+  if (accuracy_pct && !(*accuracy_pct > 0 && *accuracy_pct < 100))
+    throw InputError("<solve>", 0, "accuracy", "must be between 0 and 100 (exclusive), in percent");
+  if (max_passes && *max_passes < 1)
+    throw InputError("<solve>", 0, "max_passes", "must be a whole number >= 1");
+  if (max_unknowns && !(*max_unknowns > 0 && std::isfinite(*max_unknowns)))
+    throw InputError("<solve>", 0, "max_unknowns", "must be positive");
+  return {accuracy_pct, max_unknowns, max_passes};
+}
+
+std::unique_ptr<Solution>
+solve_case(const std::string& path, const std::string& text, const std::string& name,
+           const std::map<std::string, double>& parameters, int order, double mesh_scale,
+           py::object progress, std::optional<double> accuracy_pct, std::optional<int> max_passes,
+           std::optional<double> max_unknowns) {
   // Checked as the command line checks --order and --mesh-scale (0 would mean "as in the
   // case" to RunOverrides, so it is refused rather than passed on).
   if (order != 0 && order != 1 && order != 2)
     throw InputError("<solve>", 0, "order", "must be 1 or 2");
   if (!(mesh_scale > 0) || !std::isfinite(mesh_scale))
     throw InputError("<solve>", 0, "mesh_scale", "must be a positive number");
+  const AdaptOverrides adapt = adapt_overrides(accuracy_pct, max_passes, max_unknowns);
   CaseSpec spec = read_python_case(path, text, name, parameters);
+  apply_adapt_overrides(spec.adapt, adapt, {"<solve>", "accuracy", "max_passes", "max_unknowns"});
   PyProgress reporter(std::move(progress));
   RunOverrides overrides;
   overrides.order = order;
   overrides.mesh_scale = mesh_scale;
   overrides.progress = &reporter;
+  // Each pass of an adaptive solve as the command line prints it, as a "note" (which is also
+  // where Ctrl-C between passes is seen).
+  const char* element_word = spec.dimension == 3 ? "tetrahedra" : "triangles";
+  const auto on_pass = [&reporter, element_word](const AdaptPass& p) {
+    const std::string line = describe_adapt_pass(p, element_word);
+    reporter.note(line.substr(0, line.find_last_not_of('\n') + 1));
+  };
   std::unique_ptr<Solution> solution;
   {
     // Minutes on a large case: other Python threads run meanwhile, and PyProgress takes the
     // GIL back for a moment at each report to look for Ctrl-C.
     const py::gil_scoped_release release;
     if (spec.dimension == 3)
-      solution = std::make_unique<Solution>(run_case_3d(std::move(spec), overrides));
+      solution = std::make_unique<Solution>(spec.adapt.enabled()
+                                                ? run_adaptive_3d(spec, overrides, on_pass)
+                                                : run_case_3d(std::move(spec), overrides));
     else
-      solution = std::make_unique<Solution>(run_case_2d(std::move(spec), overrides));
+      solution = std::make_unique<Solution>(spec.adapt.enabled()
+                                                ? run_adaptive_2d(spec, overrides, on_pass)
+                                                : run_case_2d(std::move(spec), overrides));
     reporter.rethrow_pending();
   }
   return solution;
@@ -189,6 +219,11 @@ std::vector<std::string> Solution::write(const std::string& dir) const {
   return run3d_ ? write_outputs_3d(*run3d_, dir) : write_outputs_2d(*run2d_, dir);
 }
 
+std::string Solution::adapt_warning() const {
+  const auto& adapt = run3d_ ? run3d_->adapt : run2d_->adapt;
+  return adapt ? magfem::adapt_warning(*adapt) : "";
+}
+
 std::string Solution::summary_json() const {
   return (run3d_ ? summary_json_3d(*run3d_) : summary_json_2d(*run2d_)).dump();
 }
@@ -204,10 +239,14 @@ void bind_solution(py::module_& m) {
       .def("field_at", &Solution::field_at, py::arg("points_m"), py::arg("want_H"))
       .def("mesh", &Solution::mesh)
       .def("write", &Solution::write, py::arg("dir"))
-      .def("summary_json", &Solution::summary_json);
+      .def("summary_json", &Solution::summary_json)
+      .def("adapt_warning", &Solution::adapt_warning);
   m.def("solve", &solve_case, py::arg("path"), py::arg("text"), py::arg("name"),
         py::arg("parameters"), py::arg("order"), py::arg("mesh_scale"), py::arg("progress"),
-        "Reads a case (file `path`, else YAML `text` named `name`) and solves it in-process.");
+        py::arg("accuracy_pct") = py::none(), py::arg("max_passes") = py::none(),
+        py::arg("max_unknowns") = py::none(),
+        "Reads a case (file `path`, else YAML `text` named `name`) and solves it in-process, "
+        "adaptively when the case's adapt: section or `accuracy_pct` asks.");
 }
 
 } // namespace magfem::python

@@ -1,7 +1,7 @@
 #pragma once
-// magfem._core.Solution: a solved case (the Run2D or Run3D of pipeline/run2d.hpp, pipeline/run3d.hpp,
-// mesh and field kept alive) with what Python reads from it. python/magfem/solution.py wraps
-// it into the public magfem.Solution (units, dicts, docstrings).
+// magfem._core.Solution: a solved case (the Run2D or Run3D of pipeline/run2d.hpp,
+// pipeline/run3d.hpp, mesh and field kept alive) with what Python reads from it.
+// python/magfem/solution.py wraps it into the public magfem.Solution (units, dicts, docstrings).
 #include <memory>
 #include <mutex>
 #include <string>
@@ -40,6 +40,9 @@ public:
   std::vector<std::string> write(const std::string& dir) const;
   // summary.json as the command line writes it (the writer's own summary_json_2d/3d).
   std::string summary_json() const;
+  // The warning of an adaptive solve that stopped at a limit before its accuracy (the text
+  // the command line prints, adapt_loop.hpp adapt_warning); "" otherwise.
+  std::string adapt_warning() const;
 
 private:
   Eigen::Vector3d field_2d(const Eigen::Vector3d& x, bool want_H) const;

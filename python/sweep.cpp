@@ -75,13 +75,8 @@ struct SweepRequest {
   double mesh_scale = 0;
 };
 
-// The axial sweep, as `magfem sweep CASE2D --move GROUP --axis z --positions ...` runs it
-// (a planar case is refused there, naming --move).
+// The axial sweep, as `magfem sweep CASE_AXI --move GROUP --axis z --positions ...` runs it.
 py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
-  if (!spec.axisymmetric())
-    throw InputError(where, 0, "translate",
-                     "a planar 2D sweep turns a group (rotate=); translations are for "
-                     "axisymmetric and 3D cases");
   if (!q.axis.empty() && q.axis != "z")
     throw InputError(where, 0, "axis", "an axisymmetric group moves along z: give axis=\"z\"");
   // Arguments of the rotating sweeps: refused rather than ignored.
@@ -108,8 +103,8 @@ py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& 
   return out;
 }
 
-// The rotating sweep (3D or planar) and the 3D translate sweep, as `magfem sweep --rotate
-// GROUP ...` and `magfem sweep CASE3D --move GROUP ...` run them.
+// The rotating sweep (3D or planar) and the 3D or planar translate sweep, as `magfem sweep
+// --rotate GROUP ...` and `magfem sweep CASE --move GROUP ...` run them.
 py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
   const bool planar = spec.dimension == 2 && !spec.axisymmetric();
   const bool move = !q.translate.empty();
@@ -119,7 +114,7 @@ py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, Backgrou
     // As --move: the direction is asked for, never assumed; the group moves, nothing turns.
     if (q.axis.empty())
       throw InputError(where, 0, "axis", "give the direction to move along");
-    if (q.point)
+    if (q.point && !planar) // planar: the torque's point, carried with the group
       throw InputError(where, 0, "point", "not for translate sweeps (the group moves, no axis)");
     o.motion = SweepMotion::translate;
     for (const double p : q.values)
@@ -127,7 +122,7 @@ py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, Backgrou
   } else {
     o.angles_deg = q.values;
   }
-  o.axis = parse_axis(q.axis.empty() ? (planar ? "z" : "y") : q.axis);
+  o.axis = parse_axis(q.axis.empty() ? (planar ? "z" : "y") : q.axis, planar);
   const double s = spec.length_unit;
   if (q.point) {
     if (q.point->size() != 3)
@@ -170,9 +165,8 @@ py::dict sweep_case(const std::string& path, const std::string& text, const std:
     throw InputError(where, 0, "mesh_scale", "must be a positive number");
   const CaseSpec spec = read_python_case(path, text, name, parameters);
   BackgroundCall call(std::move(progress));
-  const bool axial = spec.dimension == 2;
-  return request.translate.empty() || !axial ? rotate_or_move_3d(spec, request, call)
-                                             : translate(spec, request, call);
+  return request.translate.empty() || !spec.axisymmetric() ? rotate_or_move_3d(spec, request, call)
+                                                           : translate(spec, request, call);
 }
 
 } // namespace

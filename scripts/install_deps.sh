@@ -8,14 +8,15 @@ set -euo pipefail
 # and file let CPack compute the Debian package's runtime dependencies; libnlopt-cxx-dev is
 # the bounded optimizer behind magfem optimize; libpetsc-real-dev (with hypre and Open MPI)
 # gives the 3D solver algebraic multigrid, and mpi-default-bin its mpirun; pybind11-dev and
-# python3-numpy build the Python module (python/), python3-pytest runs its tests.
+# python3-numpy build the Python module (python/), python3-pytest runs its tests, python3-scipy
+# the optimizer of examples/python/compensator_design.py and its test (skipped without it).
 packages=(cmake g++ make ccache pkg-config
           libeigen3-dev libyaml-cpp-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libsuitesparse-dev libtet1.5-dev libvtk9-dev nlohmann-json3-dev libtbb-dev
           libgtest-dev gnuplot-nox libopenblas0-pthread libnlopt-cxx-dev
           libpetsc-real-dev mpi-default-bin
           python3-jsonschema python3-yaml dpkg-dev file
-          pybind11-dev python3-numpy python3-pytest)
+          pybind11-dev python3-numpy python3-pytest python3-scipy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -135,12 +135,50 @@ FieldAtPoints fe_field(std::shared_ptr<const Run3D> run) {
   };
 }
 
+// The field at all orientations' coil points is one call, about 40 s for the design case's
+// 49 orientations x 12 coils, which left the console silent that long (issue 34 item 9). In
+// slices the console can say how far it is, at most every interval_s; every point still gets
+// the same evaluation, so the torque constants do not change.
+FieldAtPoints with_progress(FieldAtPoints field, Progress& progress, double interval_s = 2.0) {
+  return [field = std::move(field), &progress, interval_s](const std::vector<Eigen::Vector3d>& x) {
+    using Clock = std::chrono::steady_clock;
+    constexpr std::size_t n_slices = 50;
+    const std::size_t slice = std::max<std::size_t>(1, (x.size() + n_slices - 1) / n_slices);
+    std::vector<Eigen::Vector3d> b;
+    b.reserve(x.size());
+    auto last = Clock::now();
+    for (std::size_t begin = 0; begin < x.size(); begin += slice) {
+      const std::size_t end = std::min(x.size(), begin + slice);
+      const auto part = field({x.begin() + static_cast<std::ptrdiff_t>(begin),
+                               x.begin() + static_cast<std::ptrdiff_t>(end)});
+      b.insert(b.end(), part.begin(), part.end());
+      if (end < x.size() &&
+          std::chrono::duration<double>(Clock::now() - last).count() >= interval_s) {
+        last = Clock::now();
+        progress.note(std::to_string(100 * end / x.size()) + " % of the points");
+      }
+    }
+    return b;
+  };
+}
+
 std::vector<TorqueConstants> analytic_gamma(const CaseSpec& spec, const std::string& rotor,
                                             const std::vector<CoilField>& coils,
                                             const std::vector<Eigen::Matrix3d>& rotations,
-                                            const CoilRule& rule, std::vector<std::string>& notes) {
-  return torque_constants_rotating(coils, rotations, analytic_rotor_field(spec, rotor, notes),
-                                   rule);
+                                            const CoilRule& rule, std::vector<std::string>& notes,
+                                            Progress* progress) {
+  FieldAtPoints field = analytic_rotor_field(spec, rotor, notes);
+  if (progress) {
+    std::size_t points = 0;
+    for (const auto& c : coils)
+      points += torque_quadrature(c, rule).size();
+    progress->stage("torque constants: charge model at " + std::to_string(points) + " x " +
+                    std::to_string(rotations.size()) + " coil points (" +
+                    std::to_string(coils.size()) + " coils, " + std::to_string(rotations.size()) +
+                    " orientations)");
+    field = with_progress(std::move(field), *progress);
+  }
+  return torque_constants_rotating(coils, rotations, field, rule);
 }
 
 std::string number(double v) {
@@ -471,7 +509,8 @@ ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options
     rotations.push_back(rotor_rotation(o));
   const auto t0 = std::chrono::steady_clock::now();
   if (options.analytic) {
-    r.gamma = analytic_gamma(spec, options.rotor, coils, rotations, options.coil_rule, r.notes);
+    r.gamma = analytic_gamma(spec, options.rotor, coils, rotations, options.coil_rule, r.notes,
+                             options.progress);
     r.n_field_solves = 1;
   } else {
     r.gamma = fe_gamma(spec, options, orientations, coils, rotations, r.n_field_solves, r.notes);
@@ -564,7 +603,7 @@ int run_actuator_command(ActuatorOptions options) {
   if (!options.coil_pitch.empty())
     return run_coil_pitch_command(options);
   Progress progress;
-  if (!options.quiet && !options.analytic)
+  if (!options.quiet)
     options.progress = &progress;
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Orientation> orientations = parse_orientations(options.orientations);

@@ -74,7 +74,7 @@ struct ActuatorOptions {
                           // studies/actuator_coil_pitch.hpp instead of the case's coils
   std::string out_dir;
   bool quiet = false;           // --quiet: no progress lines
-  Progress* progress = nullptr; // FE runs' console progress (not owned); null = silent
+  Progress* progress = nullptr; // console progress (not owned); null = silent
 };
 
 // Parses the arguments after `actuator`; throws InputError naming the option.

@@ -176,7 +176,8 @@ OptimizeOptions parse_optimize_options(const std::vector<std::string>& args) {
   return o;
 }
 
-OptimizeResult run_optimize(const OptimizeOptions& options) {
+OptimizeResult run_optimize(const OptimizeOptions& options,
+                            const std::function<void(const OptimizeEvaluation&)>& on_evaluation) {
   OptimizeResult result;
   const auto& vars = options.variables;
   const std::size_t n = vars.size();
@@ -192,11 +193,17 @@ OptimizeResult run_optimize(const OptimizeOptions& options) {
     (void)run_study(check);
   }
   auto model = [&](const std::vector<double>& x) {
+    if (options.study.sweep.stop.stop_requested())
+      throw SolveError("optimize: stopped after " + std::to_string(result.evaluations) +
+                       " evaluations");
     const StudyDesign d = evaluate_study_design(analytic, x);
     if (!d.ok)
       throw SolveError("optimize: the model failed at a point inside the bounds: " + d.error);
     ++result.evaluations;
     result.method = d.method;
+    result.history.push_back({x, d.objectives[0]});
+    if (on_evaluation)
+      on_evaluation(result.history.back());
     return d.objectives[0];
   };
   using Model = decltype(model);
@@ -298,19 +305,14 @@ OptimizeResult run_optimize(const OptimizeOptions& options) {
   return result;
 }
 
-int run_optimize_command(const OptimizeOptions& options) {
-  const OptimizeResult r = run_optimize(options);
+nlohmann::ordered_json optimize_summary(const OptimizeOptions& options, const OptimizeResult& r) {
   const auto& vars = options.variables;
-  const std::string& objective = options.study.objectives.front().name;
-  std::filesystem::create_directories(options.study.out_dir);
-  OutputStage stage(options.study.out_dir);
   nlohmann::ordered_json j;
-  add_provenance(j);
   j["case"] = options.study.case_file;
   j["method"] = r.method;
   j["optimizer"] = "nlopt LN_COBYLA";
   j["sense"] = options.maximize ? "maximize" : "minimize";
-  j["objective"] = objective;
+  j["objective"] = options.study.objectives.front().name;
   for (std::size_t i = 0; i < vars.size(); ++i)
     j["optimum"].push_back({{"name", vars[i].name},
                             {"value", r.optimum[i]},
@@ -328,8 +330,45 @@ int run_optimize_command(const OptimizeOptions& options) {
     j["fe_relative_difference"] = (*r.fe_objective - r.objective) / std::abs(r.objective);
     j["fe_seconds"] = r.fe_seconds;
   }
+  return j;
+}
+
+std::string optimize_history_csv(const OptimizeOptions& options, const OptimizeResult& r) {
+  std::string out = "evaluation";
+  for (const auto& v : options.variables)
+    out += "," + v.name;
+  out += "," + options.study.objectives.front().name + "\n";
+  char buf[64];
+  for (std::size_t k = 0; k < r.history.size(); ++k) {
+    out += std::to_string(k + 1);
+    for (double x : r.history[k].values) {
+      std::snprintf(buf, sizeof buf, ",%.10g", x);
+      out += buf;
+    }
+    std::snprintf(buf, sizeof buf, ",%.10g\n", r.history[k].objective);
+    out += buf;
+  }
+  return out;
+}
+
+std::vector<std::string> write_optimize_outputs(const OptimizeOptions& options,
+                                                const OptimizeResult& r, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  OutputStage stage(dir);
+  nlohmann::ordered_json j;
+  add_provenance(j);
+  j.update(optimize_summary(options, r));
   stage.write_text("summary.json", j.dump(2) + "\n");
+  stage.write_text("history.csv", optimize_history_csv(options, r));
   stage.commit();
+  return {"summary.json", "history.csv"};
+}
+
+int run_optimize_command(const OptimizeOptions& options) {
+  const OptimizeResult r = run_optimize(options);
+  const auto& vars = options.variables;
+  const std::string& objective = options.study.objectives.front().name;
+  const auto written = write_optimize_outputs(options, r, options.study.out_dir);
 
   for (std::size_t i = 0; i < vars.size(); ++i)
     std::printf("optimum  %s = %.6g (bounds %g..%g)\n", vars[i].name.c_str(), r.optimum[i],
@@ -343,7 +382,8 @@ int run_optimize_command(const OptimizeOptions& options) {
     std::printf("FE       %s = %.8g, FE - analytic = %.4g (%.3g %%), %.0f s\n", objective.c_str(),
                 *r.fe_objective, *r.fe_objective - r.objective,
                 100 * (*r.fe_objective - r.objective) / std::abs(r.objective), r.fe_seconds);
-  std::printf("wrote    %s/summary.json\n", options.study.out_dir.c_str());
+  std::printf("wrote    %s/%s, %s\n", options.study.out_dir.c_str(), written[0].c_str(),
+              written[1].c_str());
   return 0;
 }
 

@@ -7,9 +7,12 @@
 // sweep at the optimum that reports the FE objective beside the analytic one. A constraint
 // is an inequality between two expressions of the varied parameters (the case file's
 // expression syntax, in the parameters' own units), e.g. "R_out - R_in >= 10".
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "studies/study.hpp"
 
@@ -36,7 +39,14 @@ struct OptimizeOptions {
   bool verify_fe = false;
 };
 
+// One model evaluation the optimizer asked for, in the order asked.
+struct OptimizeEvaluation {
+  std::vector<double> values; // parallel to variables
+  double objective = 0;       // analytic
+};
+
 struct OptimizeResult {
+  std::vector<OptimizeEvaluation> history;
   std::vector<double> optimum;    // parallel to variables
   std::vector<double> violations; // per constraint at the optimum: > 0 violated, 0 active
   double objective = 0;           // analytic, at the optimum
@@ -54,10 +64,27 @@ std::vector<OptionInfo> optimize_option_infos();
 
 // Runs the optimizer (and the FE check if asked). Throws InputError for bad options, and
 // SolveError if the model fails at a point the optimizer asks for or no point satisfies the
-// constraints.
-OptimizeResult run_optimize(const OptimizeOptions& options);
+// constraints. on_evaluation (may be empty) hears every evaluation as it ends; a stop asked
+// through options.study.sweep.stop ends the run before the next one (SolveError).
+OptimizeResult
+run_optimize(const OptimizeOptions& options,
+             const std::function<void(const OptimizeEvaluation&)>& on_evaluation = {});
 
-// The command: prints the optimum, writes summary.json (all or nothing); exit code.
+// summary.json but the provenance: case, method, optimizer, sense, objective, optimum,
+// constraints, analytic_value, evaluations, stop, and the FE check's entries. Also
+// magfem.optimize's `summary` in Python.
+nlohmann::ordered_json optimize_summary(const OptimizeOptions& options, const OptimizeResult& r);
+
+// history.csv: evaluation (1-based), the variables, the objective (its study column name), one
+// row per evaluation in the order the optimizer asked.
+std::string optimize_history_csv(const OptimizeOptions& options, const OptimizeResult& r);
+
+// summary.json (with the provenance) and history.csv into dir, all or nothing; the command's
+// and Python's writer. Returns the file names.
+std::vector<std::string> write_optimize_outputs(const OptimizeOptions& options,
+                                                const OptimizeResult& r, const std::string& dir);
+
+// The command: prints the optimum, writes its outputs (all or nothing); exit code.
 int run_optimize_command(const OptimizeOptions& options);
 
 } // namespace magfem

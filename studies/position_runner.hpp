@@ -1,5 +1,5 @@
 #pragma once
-// The one position loop of every sweep (3D rotate, axisymmetric move, planar rotate): the
+// The one position loop of every sweep (3D and planar rotate and move, axisymmetric move): the
 // positions of a sweep are independent solves, taken from the checkpoint when an earlier run
 // finished them (--resume), else computed on a pool of `workers` threads (the calling thread
 // is one of them) and recorded as each finishes; failed positions are not recorded, so that

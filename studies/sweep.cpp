@@ -440,16 +440,20 @@ Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text
   return Vec3(v[0], v[1], v[2]);
 }
 
-Eigen::Vector3d parse_axis(const std::string& text) {
+Eigen::Vector3d parse_axis(const std::string& text, bool planar) {
   if (text == "x")
     return Vec3::UnitX();
   if (text == "y")
     return Vec3::UnitY();
   if (text == "z")
     return Vec3::UnitZ();
-  const auto v = parse_list("--axis", text, ',');
+  auto v = parse_list("--axis", text, ',');
+  if (planar && v.size() == 2)
+    v.push_back(0.0); // a direction in the plane
   if (v.size() != 3 || Vec3(v[0], v[1], v[2]).norm() == 0)
-    throw InputError(cli, 0, "--axis", "expected x, y, z or a non-zero vector ax,ay,az");
+    throw InputError(cli, 0, "--axis",
+                     planar ? "expected x, y, z or a non-zero vector ax,ay[,az]"
+                            : "expected x, y, z or a non-zero vector ax,ay,az");
   return Vec3(v[0], v[1], v[2]).normalized();
 }
 

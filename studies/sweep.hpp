@@ -114,8 +114,9 @@ std::vector<double> parse_angle_list(const std::string& text,
                                      const std::string& option = "--angles");
 // Parses "x,y,z" (three numbers); throws InputError naming the option.
 Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text);
-// Parses x|y|z or "ax,ay,az"; throws InputError.
-Eigen::Vector3d parse_axis(const std::string& text);
+// Parses x|y|z or "ax,ay,az" (planar cases also "ax,ay": a direction in the plane); throws
+// InputError.
+Eigen::Vector3d parse_axis(const std::string& text, bool planar = false);
 
 // How many positions ran at once. FE positions each need their own memory: no more run at
 // once than fit together in the memory guard's limit (--max-memory, else the memory available

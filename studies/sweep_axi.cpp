@@ -5,24 +5,13 @@
 #include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "studies/group_motion2d.hpp"
 #include "studies/position_runner.hpp"
 
 namespace magfem {
 namespace {
 
 const std::string cli = "<command line>";
-
-struct Translate {
-  Vec2 d;
-  void operator()(Disk& s) const { s.center += d; }
-  void operator()(Annulus& s) const { s.center += d; }
-  void operator()(AnnularSector& s) const { s.center += d; }
-  void operator()(Rectangle& s) const { s.center += d; }
-  void operator()(Polygon& s) const {
-    for (Vec2& v : s.vertices)
-      v += d;
-  }
-};
 
 bool in_group(const CaseSpec& spec, const std::string& region, const std::string& group) {
   for (const auto& r : spec.regions)
@@ -115,19 +104,9 @@ AxiSweepRow row_from_json(const nlohmann::json& saved, double dz) {
 CaseSpec move_group_axi(const CaseSpec& spec, const std::string& group, double dz) {
   if (!spec.axisymmetric())
     throw InputError(cli, 0, "--move", "--move sweeps axisymmetric cases (dimension: axi)");
-  CaseSpec out = spec;
-  bool found = false;
-  for (std::size_t i = 0; i < out.regions.size(); ++i) {
-    if (out.regions[i].group != group)
-      continue;
-    found = true;
-    std::visit(Translate{Vec2(0, dz)}, out.geometry2d.parts[i].shape);
-    out.regions[i].magnetization.center.y() += dz;
-  }
-  if (!found)
-    throw InputError(cli, 0, "--move",
-                     "no region of " + spec.file + " is in group '" + group + "'");
-  return out;
+  RigidMotion2D along_axis;
+  along_axis.shift = Vec2(0, dz);
+  return move_group2d(spec, group, along_axis, "--move");
 }
 
 std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& o,

@@ -5,6 +5,7 @@
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
+#include "studies/group_motion2d.hpp"
 #include "studies/position_runner.hpp"
 
 namespace magfem {
@@ -12,30 +13,9 @@ namespace {
 
 const std::string cli = "<command line>";
 
-// Turns a point of the plane about c by the rotation R.
-struct Turn {
-  Eigen::Rotation2Dd R;
-  Vec2 c;
-  Vec2 at(const Vec2& x) const { return c + R * (x - c); }
-  void operator()(Disk& s) const { s.center = at(s.center); }
-  void operator()(Annulus& s) const { s.center = at(s.center); }
-  void operator()(AnnularSector& s) const {
-    s.center = at(s.center);
-    s.angle_start += R.angle();
-    s.angle_end += R.angle();
-  }
-  void operator()(Rectangle& s) const {
-    s.center = at(s.center);
-    s.rotation += R.angle();
-  }
-  void operator()(Polygon& s) const {
-    for (Vec2& v : s.vertices)
-      v = at(v);
-  }
-};
-
 // The force request on the group (see the header), with the torque about the point.
-ForceSpec group_force(const CaseSpec& spec, const std::string& group, const Vec3& point) {
+ForceSpec group_force(const CaseSpec& spec, const std::string& group, const Vec3& point,
+                      const std::string& option) {
   ForceSpec f;
   f.name = "sweep";
   f.kind = ForceSpec::Kind::lorentz;
@@ -60,7 +40,7 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, const Vec3
     }
   }
   if (f.kind == ForceSpec::Kind::lorentz && f.regions.empty())
-    throw InputError(cli, 0, "--rotate",
+    throw InputError(cli, 0, option,
                      "group '" + group + "' of " + spec.file +
                          " carries no current and the case has no `band` or `circle` force "
                          "around it: add one, e.g. forces: [{name: rotor, type: band, center: "
@@ -69,11 +49,44 @@ ForceSpec group_force(const CaseSpec& spec, const std::string& group, const Vec3
   return f;
 }
 
-void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, double angle_deg) {
-  row.angle_deg = angle_deg;
+const char* option_of(SweepMotion motion) {
+  return motion == SweepMotion::rotate ? "--rotate" : "--move";
+}
+
+// The case carried by `motion` (see move_group2d), with the stress circles and bands: they
+// surround the group (the header), so they go with it; a rotor's band, centred on the point
+// of its turn, stays put.
+CaseSpec carry_group(const CaseSpec& spec, const std::string& group, const RigidMotion2D& motion,
+                     const std::string& option) {
+  if (spec.dimension != 2 || spec.axisymmetric())
+    throw InputError(cli, 0, option, "this sweep moves groups of planar 2D cases");
+  CaseSpec out = move_group2d(spec, group, motion, option);
+  for (auto& f : out.forces)
+    if (f.kind == ForceSpec::Kind::circle || f.kind == ForceSpec::Kind::band)
+      f.center.head<2>() = motion.at(f.center.head<2>());
+  return out;
+}
+
+// One position (degrees or mm, as sweep_positions gives them): the carried case and the
+// point the torque is taken about, the sweep's point carried with the group (a translated
+// magnet's torque about its own centre stays about its centre).
+struct PlanarPosition {
+  CaseSpec spec;
+  Vec3 point;
+};
+
+PlanarPosition planar_position(const CaseSpec& base, const SweepOptions& o, double position) {
+  if (o.motion == SweepMotion::rotate)
+    return {rotate_group_planar(base, o.group, position * deg_to_rad, o.point), o.point};
+  const Vec3 d = 1e-3 * position * o.axis.normalized();
+  return {translate_group_planar(base, o.group, d), o.point + d};
+}
+
+void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, double position) {
+  row.angle_deg = position;
   row.method = "planar";
-  CaseSpec spec = rotate_group_planar(base, o.group, angle_deg * deg_to_rad, o.point);
-  const ForceSpec f = group_force(spec, o.group, o.point);
+  auto [spec, point] = planar_position(base, o, position);
+  const ForceSpec f = group_force(spec, o.group, point, option_of(o.motion));
   row.method = f.kind == ForceSpec::Kind::lorentz ? "lorentz"
                : f.kind == ForceSpec::Kind::band  ? "arkkio_band"
                                                   : "stress_circle";
@@ -93,50 +106,43 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, 
 
 CaseSpec rotate_group_planar(const CaseSpec& spec, const std::string& group, double angle_rad,
                              const Eigen::Vector3d& point) {
-  if (spec.dimension != 2 || spec.axisymmetric())
-    throw InputError(cli, 0, "--rotate", "this sweep turns groups of planar 2D cases");
-  const Turn turn{Eigen::Rotation2Dd(angle_rad), point.head<2>()};
-  const Eigen::Matrix3d R3 = Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).matrix();
-  CaseSpec out = spec;
-  bool found = false;
-  for (std::size_t i = 0; i < out.regions.size(); ++i) {
-    if (out.regions[i].group != group)
-      continue;
-    found = true;
-    std::visit(turn, out.geometry2d.parts[i].shape);
-    Magnetization& m = out.regions[i].magnetization;
-    m.direction = R3 * m.direction;
-    m.center.head<2>() = turn.at(m.center.head<2>());
-  }
-  if (!found)
-    throw InputError(cli, 0, "--rotate",
-                     "no region of " + spec.file + " is in group '" + group + "'");
-  // A stress circle or band around the group turns with it (it stays put when centred on
-  // the point, the usual rotor).
-  for (auto& f : out.forces)
-    if (f.kind == ForceSpec::Kind::circle || f.kind == ForceSpec::Kind::band)
-      f.center.head<2>() = turn.at(f.center.head<2>());
-  return out;
+  RigidMotion2D turn;
+  turn.angle_rad = angle_rad;
+  turn.center = point.head<2>();
+  return carry_group(spec, group, turn, "--rotate");
+}
+
+CaseSpec translate_group_planar(const CaseSpec& spec, const std::string& group,
+                                const Eigen::Vector3d& displacement) {
+  RigidMotion2D shift;
+  shift.shift = displacement.head<2>();
+  return carry_group(spec, group, shift, "--move");
 }
 
 std::vector<SweepRow> run_sweep_planar(const CaseSpec& spec, const SweepOptions& o,
                                        const SweepProgress& progress, SweepJobs* jobs) {
-  if ((o.axis.normalized() - Eigen::Vector3d::UnitZ()).norm() > 1e-12)
+  const Vec3 axis = o.axis.normalized();
+  if (o.motion == SweepMotion::rotate && (axis - Vec3::UnitZ()).norm() > 1e-12)
     throw InputError(cli, 0, "--axis", "a planar 2D case turns about z only");
+  if (o.motion == SweepMotion::translate && std::abs(axis.z()) > 1e-12)
+    throw InputError(cli, 0, "--axis",
+                     "a planar 2D group moves in its plane: x, y or a direction dx,dy");
   if (o.analytic)
     throw InputError(cli, 0, "--analytic", "planar 2D sweeps are FE only");
   if (o.surface_radius)
     throw InputError(cli, 0, "--surface-radius",
                      "planar 2D sweeps take the case's band or circle force");
   // Mistakes every position would repeat fail here, on the main thread.
-  group_force(rotate_group_planar(spec, o.group, 0.0, o.point), o.group, o.point);
-  const int total = static_cast<int>(o.angles_deg.size());
+  const PlanarPosition at_rest = planar_position(spec, o, 0.0);
+  group_force(at_rest.spec, o.group, at_rest.point, option_of(o.motion));
+  const std::vector<double> positions = sweep_positions(o);
+  const int total = static_cast<int>(positions.size());
   const int workers = default_position_workers(o.world, o.jobs, total);
   if (jobs)
     jobs->requested = jobs->used = workers;
   return run_positions<SweepRow>(
-      o.angles_deg, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json},
-      [&](SweepRow& row, double angle_deg) { solve_position(row, spec, o, angle_deg); }, progress,
+      positions, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json},
+      [&](SweepRow& row, double position) { solve_position(row, spec, o, position); }, progress,
       o.world, o.stop);
 }
 

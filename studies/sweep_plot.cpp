@@ -7,7 +7,8 @@
 namespace magfem {
 
 bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
-                const std::filesystem::path& png, std::string& why, SweepMotion motion) {
+                const std::filesystem::path& png, std::string& why, SweepMotion motion,
+                const SweepPlotLabels& labels) {
   if (!gnuplot_available(why))
     return false;
   const auto data = std::filesystem::path(png).replace_extension(".dat");
@@ -24,10 +25,10 @@ bool plot_sweep(const std::vector<SweepRow>& rows, const std::string& title,
       << "set multiplot layout 1,2 title \"" << gnuplot_title(title) << "\"\n"
       << "set grid\nset xlabel '"
       << (motion == SweepMotion::rotate ? "angle (deg)" : "offset along the axis (mm)") << "'\n"
-      << "set ylabel 'torque about the origin (N m)'\n"
+      << "set ylabel '" << labels.torque << "'\n"
       << "plot '" << data.string()
       << "' u 1:2 w lp t 'Tx', '' u 1:3 w lp t 'Ty', '' u 1:4 w lp t 'Tz'\n"
-      << "set ylabel 'force on the group (N)'\n"
+      << "set ylabel '" << labels.force << "'\n"
       << "plot '" << data.string()
       << "' u 1:5 w lp t 'Fx', '' u 1:6 w lp t 'Fy', '' u 1:7 w lp t 'Fz'\n"
       << "unset multiplot\n";

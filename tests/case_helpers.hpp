@@ -31,6 +31,23 @@ mesh: {size: 8.0, chord_tolerance: 0.002}
 solver: {order: 2}
 )";
 
+// A planar magnet disk (B_r 1.2 T, at x = -6 mm) beside an iron disk of `iron` (at x = 6 mm) in
+// an open boundary, meshed coarsely (seconds): the case up to its mesh, to which a test
+// appends solver, probes or forces.
+inline std::string magnet_and_iron_disks_case2d(const std::string& iron) {
+  return R"(unit: mm
+materials:
+  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
+regions:
+  - {name: magnet, shape: disk, center: [-6, 0], radius: 4, material: pm,
+     magnetization: {type: parallel, angle: 0}}
+  - {name: iron, shape: disk, center: [6, 0], radius: 5, material: )" +
+         iron + R"(}
+boundary: {type: open, radius: 30}
+mesh: {size: 3}
+)";
+}
+
 // The uniformly magnetized sphere of examples/3d/magnetized_sphere.yaml (radius 10 mm, B_r
 // 1 T, mu_r 1, magnetized along +z) with its own mesh size (mm): the case up to its
 // boundary, to which a test appends boundary, mesh, solver and what it checks. Exact: B

@@ -3,13 +3,17 @@
 So far: ``__version__``, ``Case`` (load, from_dict, with_params, to_yaml: the case read and
 validated by the same reader as ``magfem solve``), ``Case.solve`` returning a ``Solution``
 (the same in-process pipeline as ``magfem solve``), ``analytic``, ``sweep`` (``magfem sweep``
-in-process, numpy columns), ``study``, ``actuator``, ``validate`` and the exception types.
+in-process, numpy columns), ``study``, ``optimize``, ``actuator``, ``validate`` and the
+exception types.
 """
 import contextlib
+import numbers
 import os
+import warnings
 
 from . import _core
 from ._core import __version__
+from .optimize import OptimizeResult, optimize
 from .solution import AnalyticSolution, Mesh, Solution
 from .studies import (ActuatorResult, StudyResult, SweepResult, ValidationResult, actuator,
                       study, sweep, validate)
@@ -31,6 +35,11 @@ def _argument_error(field, message):
 SolveError = _core._SolveError
 SolveError.__doc__ = """A solve that did not produce a result (no convergence, a singular
 system); the message is the command line's "solver failed: ..." text."""
+
+
+class AdaptWarning(UserWarning):
+    """An adaptive solve stopped at max_passes, max_unknowns or the memory guard before its
+    accuracy; the solution of the last pass is returned (``sol.adapt["converged"]`` False)."""
 
 
 @contextlib.contextmanager
@@ -83,14 +92,25 @@ class Case:
         """A copy with more parameter overrides, e.g. ``case.with_params(gap=2.0)``."""
         return Case(self._path, self._text, self._name, {**self._params, **overrides})
 
-    def solve(self, order=None, mesh_scale=1.0, threads=None, progress=None):
+    def solve(self, order=None, mesh_scale=1.0, threads=None, progress=None, accuracy=None,
+              max_passes=None, max_unknowns=None):
         """Meshes and solves the case in-process, as ``magfem solve`` does; returns a Solution.
 
         ``order``: 1 or 2 (None: as in the case, like the command line's --order);
         ``mesh_scale``: multiplies every mesh size (--mesh-scale); ``threads``: magfem's own
         worker threads for this call (MAGFEM_THREADS; None: all cores); ``progress``: None
         (silent), True (the command line's progress lines on stderr) or a callable
-        ``progress(kind, text)`` with kind "stage", "note" or "iteration".
+        ``progress(kind, text)`` with kind "stage", "note" or "iteration" (an adaptive
+        solve's passes come as notes, "pass 1 ...", the command line's lines).
+
+        Adaptive refinement (``magfem solve --accuracy PCT --max-passes N --max-unknowns N``):
+        ``accuracy`` (percent, 0 < accuracy < 100) refines pass by pass until the estimated
+        energy error and the estimated errors of the case's ``adapt: quantities`` are below
+        it; ``max_passes`` and ``max_unknowns`` bound the loop. None keeps the case's
+        ``adapt:`` section (a case with one solves adaptively without ``accuracy``); limits
+        without any accuracy raise InputError. A limit reached first is not an error: the
+        last pass is returned, ``sol.adapt["converged"]`` is False and an AdaptWarning (a
+        UserWarning) says why. ``sol.adapt`` holds the passes and estimates.
 
         The GIL is released while solving. Ctrl-C raises KeyboardInterrupt at the next
         stage or Newton step (meshing, a direct factorization and an AMG-preconditioned
@@ -98,10 +118,17 @@ class Case:
         same way. Raises InputError (bad case or argument, a geometry the mesher rejects)
         and SolveError (no convergence).
         """
+        if max_passes is not None and (isinstance(max_passes, bool)
+                                       or not isinstance(max_passes, numbers.Integral)):
+            raise _argument_error("max_passes", "must be a whole number >= 1, not %r"
+                                  % (max_passes,))
         with _thread_limit(threads):
             core = _core.solve(self._path or "", self._text or "", self._name or "",
                                self._params, 0 if order is None else order, mesh_scale,
-                               progress)
+                               progress, accuracy, max_passes, max_unknowns)
+        warning = core.adapt_warning()
+        if warning:
+            warnings.warn(warning, AdaptWarning, stacklevel=2)
         return Solution(core)
 
     def to_yaml(self):
@@ -128,6 +155,7 @@ def analytic(case, model="charge", tolerance=1e-6, n_max=150):
     return AnalyticSolution(core)
 
 
-__all__ = ["__version__", "ActuatorResult", "AnalyticSolution", "Case", "InputError", "Mesh", "Solution",
-           "SolveError", "StudyResult", "SweepResult", "ValidationResult", "actuator", "analytic",
-           "study", "sweep", "validate"]
+__all__ = ["__version__", "ActuatorResult", "AdaptWarning", "AnalyticSolution", "Case",
+           "InputError", "Mesh", "OptimizeResult", "Solution", "SolveError", "StudyResult",
+           "SweepResult", "ValidationResult", "actuator", "analytic", "optimize", "study",
+           "sweep", "validate"]

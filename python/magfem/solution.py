@@ -90,10 +90,25 @@ class AnalyticSolution(_Result):
         return "<magfem.AnalyticSolution: %s>" % self.summary.get("model")
 
 
+def _adapt_estimates(adapt):
+    """quantity -> {"value", "error_pct"} of the last pass of summary.json's adapt block (the
+    loop's stopping test: the estimator's for energy, the extrapolated change for the others;
+    None where not known yet, i.e. after a single pass)."""
+    last = adapt["passes"][-1]
+    # The energy's estimate always counts (an accuracy without quantities stops on it alone).
+    out = {"energy": {"value": last["energy_J"], "error_pct": last["energy_error_pct"]}}
+    out.update({q: {"value": v, "error_pct": last["quantity_error_pct"][q]}
+                for q, v in last["quantities"].items()})
+    return out
+
+
 class Solution(_Result):
     """A solved case (returned by Case.solve); everything is in SI units.
 
     ``energy`` (J; 2D planar: J/m, or J for the stack when the case gives one),
+    ``energy_error_pct`` (the estimated relative error of ``energy``, %), ``adapt`` (the passes
+    of an adaptive solve, else None), ``probe_error_pct`` (adaptive solves: probe -> the
+    estimated error of its rms field, %),
     ``forces`` (name -> dict with ``force_N``, ``torque_Nm`` numpy vectors, the method, and
     the check-surface and error-estimate entries when the run has them), ``coils`` (name ->
     dict: turns, current_A, flux_linkage_Wb, ...), ``inductance_H`` (numpy matrix in the
@@ -108,6 +123,49 @@ class Solution(_Result):
         """"2d" (planar), "axi" (axisymmetric) or "3d"."""
         self.energy = core.energy_J
         self._mesh = None
+
+    @property
+    def energy_error_pct(self):
+        """The estimated relative error of ``energy`` in percent (summary.json's
+        error_estimate.energy_error_pct: 100 eta^2 / (2 W), every solve has it)."""
+        return self.summary["error_estimate"]["energy_error_pct"]
+
+    @property
+    def adapt(self):
+        """The adaptive loop of a solve with an accuracy (``Case.solve(accuracy=...)`` or the
+        case's ``adapt:`` section), else None: summary.json's ``adapt`` block (accuracy_pct,
+        converged, stop_reason when not converged, passes: one dict per pass) and
+        ``estimates``: quantity ("energy", "forces.NAME.COMPONENT", "probes.NAME") ->
+        {"value", "error_pct"} at the last pass, the figures the loop stopped on."""
+        adapt = self.summary.get("adapt")
+        if adapt is None:
+            return None
+        return {**adapt, "estimates": _adapt_estimates(adapt)}
+
+    @property
+    def forces(self):
+        """name -> dict: ``force_N`` and ``torque_Nm`` (numpy vectors), ``method``, the
+        check-surface and ``error_estimate`` entries when the run has them (summary.json's),
+        and, in an adaptive solve naming components of the force as quantities,
+        ``error_pct``: component ("Fx" .. "Tz", "force", "torque") -> its estimated error (%)
+        at the last pass (None after a single pass)."""
+        forces = super().forces
+        adapt = self.summary.get("adapt")
+        for quantity, e in (_adapt_estimates(adapt) if adapt else {}).items():
+            kind, _, rest = quantity.partition(".")
+            name, _, component = rest.rpartition(".")
+            if kind == "forces" and name in forces:
+                forces[name].setdefault("error_pct", {})[component] = e["error_pct"]
+        return forces
+
+    @property
+    def probe_error_pct(self):
+        """Adaptive solves naming probes as quantities: probe name -> the estimated error (%)
+        of its rms field at the last pass (None after a single pass); else empty."""
+        adapt = self.summary.get("adapt")
+        return {q[len("probes."):]: e["error_pct"]
+                for q, e in (_adapt_estimates(adapt) if adapt else {}).items()
+                if q.startswith("probes.")}
 
     @property
     def coils(self):

@@ -42,7 +42,7 @@ class _Table(dict):
 class SweepResult(_Table):
     """A sweep's table: a dict of numpy columns named as the command line's sweep.csv
     (``angle_deg, Tx, Ty, Tz, Fx, Fy, Fz`` for rotating sweeps, N m and N; ``position_mm, Tx,
-    ..., Fz`` for 3D translate sweeps; ``position_mm, Fz_N`` for axisymmetric ones), successful
+    ..., Fz`` for 3D and planar translate sweeps; ``position_mm, Fz_N`` for axisymmetric ones), successful
     positions only, in the order given.
 
     ``summary``: summary.json as ``magfem sweep`` writes it, but the provenance and the peak
@@ -67,8 +67,9 @@ def _axis_text(axis):
     if isinstance(axis, str):
         return axis
     a = np.asarray(axis, dtype=float).ravel()
-    if a.size != 3:
-        raise _argument_error("axis", "x, y, z or three numbers, not %r" % (axis,))
+    if a.size not in (2, 3):  # two: a direction in a planar case's plane
+        raise _argument_error("axis", "x, y, z or three numbers (two in a planar case), not %r"
+                              % (axis,))
     return ",".join(repr(float(x)) for x in a)
 
 
@@ -85,9 +86,11 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     radius in the case's length unit; default mid-gap). Translate sweeps: ``translate`` names
     the group moved, ``positions`` its offsets in mm (as the command line's --positions);
     axisymmetric cases move it along z (FE, force Fz), 3D cases along ``axis`` (required; FE
-    or ``analytic``; the rotating sweep's columns with ``position_mm`` first); planar cases do
-    not translate. FE positions take ``order`` (1 or 2; None: as in the case) and
-    ``mesh_scale``. ``jobs``: positions at once (None: one per core).
+    or ``analytic``; the rotating sweep's columns with ``position_mm`` first), planar cases
+    along ``axis`` in their plane ("x", "y" or two numbers; FE; the same columns, force per
+    metre, Tz about ``point`` carried with the group). FE positions take ``order`` (1 or 2;
+    None: as in the case) and ``mesh_scale``. ``jobs``: positions at once (None: one per
+    core).
 
     ``progress``: None, True (a "position i/n done" line on stderr per position) or a
     callable ``progress(done, total)``, called on the calling thread. The GIL is released

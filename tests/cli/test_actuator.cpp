@@ -23,12 +23,13 @@
 
 #include <Eigen/SVD>
 
+#include "core/constants.hpp"
+#include "core/input_error.hpp"
+#include "core/progress.hpp"
 #include "studies/actuator.hpp"
 #include "studies/actuator_plot.hpp"
 #include "studies/sweep.hpp"
 #include "tests/case_helpers.hpp"
-#include "core/constants.hpp"
-#include "core/input_error.hpp"
 #include "tests/run_cli.hpp"
 #include "tests/test_paths.hpp"
 
@@ -192,6 +193,32 @@ TEST(Actuator, OrientationMatchesTheTurnedCase) {
   const auto& c = a.demands[0].commutations[0];
   ASSERT_TRUE(c.ok) << c.warning;
   EXPECT_LT((a.gamma[0] * c.currents - a.demands[0].torque_Nm).norm(), 1e-12);
+}
+
+// The analytic run's console progress (issue 34 item 9: 41 s without a word): a stage line
+// naming what is computed, and the field evaluated in slices (to report between them) gives
+// torque constants identical to the bit with those of one call.
+TEST(Actuator, AnalyticProgressSaysWhatItComputesAndChangesNoNumber) {
+  struct Captured : Progress {
+    std::vector<std::string> lines;
+    Captured() : Progress(nullptr) {}
+    void stage(const std::string& what) override { lines.push_back(what); }
+    void note(const std::string& what) override { lines.push_back(what); }
+  } progress;
+  const CaseSpec spec = read_case(design);
+  const std::vector<Orientation> grid = {{0, 0, 0}, {10, -20, 5}, {45, 30, -15}};
+  const auto silent = run_actuator(spec, analytic_options(), grid);
+  ActuatorOptions o = analytic_options();
+  o.progress = &progress;
+  const auto told = run_actuator(spec, o, grid);
+  ASSERT_EQ(told.gamma.size(), grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    EXPECT_EQ(told.gamma[i], silent.gamma[i]) << "orientation " << i;
+  ASSERT_FALSE(progress.lines.empty());
+  EXPECT_EQ(progress.lines.front().rfind("torque constants: charge model at ", 0), 0u)
+      << progress.lines.front();
+  EXPECT_NE(progress.lines.front().find("(12 coils, 3 orientations)"), std::string::npos)
+      << progress.lines.front();
 }
 
 TEST(Actuator, OrientationGridAndCsv) {

@@ -7,8 +7,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -52,18 +54,9 @@ std::string read_text(const fs::path& p) {
 }
 
 // A 2D case with nonlinear iron that Newton cannot finish in one iteration.
-const char* nonlinear_case = R"(title: magnet and nonlinear iron disk
-unit: mm
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.05}
-regions:
-  - {name: magnet, shape: disk, center: [-6, 0], radius: 4, material: pm,
-     magnetization: {type: parallel, angle: 0}}
-  - {name: iron, shape: disk, center: [6, 0], radius: 5, material: steel_1010}
-boundary: {type: open, radius: 30}
-mesh: {size: 3}
-solver: {order: 1, max_iterations: 1, tolerance: 1e-12}
-)";
+const std::string nonlinear_case = "title: magnet and nonlinear iron disk\n" +
+                                   magfem::test::magnet_and_iron_disks_case2d("steel_1010") +
+                                   "solver: {order: 1, max_iterations: 1, tolerance: 1e-12}\n";
 
 } // namespace
 
@@ -135,12 +128,40 @@ TEST(Cli, SolveWritesEveryOutputAndTheVtuHoldsTheField) {
               max_deviation, mean_bx / magnet_cells);
 }
 
+// The console's "wrote" line names every file the solve left in its folder, forces.csv too
+// (issue 34 item 9: it was missing), and nothing it did not write.
+TEST(Cli, WroteLineListsEveryFileInTheOutputFolder) {
+  const auto out = fresh_dir("wrote_line");
+  const fs::path case_file = out.parent_path() / "wrote_line.yaml";
+  std::ofstream(case_file) << magfem::test::magnet_and_iron_disks_case2d("steel_1010") +
+                                  R"(probes:
+  - {name: axis, type: line, start: [-20, 0], end: [20, 0], points: 11}
+forces:
+  - {name: on_iron, type: circle, center: [6, 0], radius: 5.5}
+)";
+  const auto r = run("solve " + case_file.string() + " --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const std::string prefix = "wrote    " + out.string() + "/";
+  const auto at = r.out.find(prefix);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const auto begin = at + prefix.size();
+  std::stringstream listed(r.out.substr(begin, r.out.find('\n', begin) - begin));
+  std::set<std::string> named, present;
+  for (std::string name; std::getline(listed, name, ',');)
+    named.insert(name.substr(name.find_first_not_of(' ')));
+  for (const auto& f : fs::directory_iterator(out))
+    if (f.path().filename().string()[0] != '.') // the output stage's own marker
+      present.insert(f.path().filename().string());
+  EXPECT_EQ(named, present) << r.out;
+  EXPECT_TRUE(named.count("forces.csv")) << r.out;
+}
+
 TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
   const auto out = fresh_dir("options");
   const std::string c = magfem::test::example("2d/diametric_cylinder.yaml");
   const std::string o = " --out " + out.string();
   const std::string s3 = magfem::test::example("3d/two_spheres.yaml");
-  const std::array<std::pair<std::string, std::string>, 13> cases{{
+  const std::array<std::pair<std::string, std::string>, 14> cases{{
       {"solve " + c + o + " --order 3", "--order"},
       {"solve " + c + o + " --order 1.5", "--order"}, // was truncated to 1
       {"solve " + c + o + " --order 0", "--order"},   // was "as in the case", silently
@@ -150,8 +171,9 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
       {"solve " + c + o + " --frobnicate 2", "--frobnicate"},
       {"solve" + o, "wrong number of arguments"},
       {"sweep " + c + o + " --rotate arm --axis z --angles 0:10:20 --jobs 0", "--jobs"},
-      // A planar case turns; a translation is for axisymmetric and 3D cases.
+      // A planar case moves in its plane, and only groups it has.
       {"sweep " + c + o + " --move magnet --axis x --positions 0,1", "--move"},
+      {"sweep " + c + o + " --move magnet --axis z --positions 0,1", "--axis"},
       {"sweep " + s3 + o + " --move arm --rotate arm --axis z --positions 0,1", "not both"},
       {"sweep " + s3 + o + " --move arm --axis z --angles 0,1", "--angles"},
       {"transmogrify " + c, "unknown command"},
@@ -522,4 +544,49 @@ TEST(Cli, MaterialsExportReadsBackAsTheLibraryCurve) {
   const Outcome list = magfem::test::run_cli("materials");
   EXPECT_EQ(list.status, 0);
   EXPECT_NE(list.out.find("steel_1010    soft"), std::string::npos) << list.out;
+}
+
+// `magfem materials` shows the knee data the demagnetization check uses: the listing gives a
+// magnet's H_cJ (kA/m) and its coefficient, or says it has none; `magfem materials N42` its
+// knee at 20..150 C, checked here against B_r(T) - mu0 mu_r H_cJ(T) evaluated from the
+// library's 20 C numbers and coefficients (printed to 1 mT: tolerance 0.5 mT), and its source.
+TEST(Cli, MaterialsShowsAMagnetGradesKneeData) {
+  const Outcome list = magfem::test::run_cli("materials");
+  ASSERT_EQ(list.status, 0) << list.out;
+  EXPECT_NE(list.out.find("N42           magnet  B_r 1.31 T, H_cJ 955 kA/m (-0.75 %/K)\n"),
+            std::string::npos)
+      << list.out;
+  EXPECT_NE(list.out.find("ferrite_Y30   magnet  B_r 0.39 T, no knee data"), std::string::npos)
+      << list.out;
+
+  const Outcome one = magfem::test::run_cli("materials N42");
+  ASSERT_EQ(one.status, 0) << one.out;
+  const magfem::Material& n42 = *magfem::MaterialLibrary::bundled().find("N42");
+  EXPECT_NE(one.out.find("H_cJ   955 kA/m at 20 C, -0.75 %/K"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("  source " + n42.source), std::string::npos) << one.out;
+  EXPECT_NE(n42.source.find("Arnold"), std::string::npos);
+  int rows = 0;
+  for (const double T : {20.0, 60.0, 80.0, 100.0, 120.0, 150.0}) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%5.0f C", T);
+    const auto at = one.out.find(label);
+    ASSERT_NE(at, std::string::npos) << label << "\n" << one.out;
+    const double printed = std::stod(one.out.substr(at + std::strlen(label)));
+    const double dT = T - 20;
+    const double br = 1.31 * (1 - 0.12e-2 * dT), hcj = 955e3 * (1 - 0.75e-2 * dT);
+    EXPECT_NEAR(printed, br - magfem::mu0 * 1.11 * hcj, 5e-4) << label;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 6);
+
+  const Outcome none = magfem::test::run_cli("materials ferrite");
+  ASSERT_EQ(none.status, 0) << none.out;
+  EXPECT_NE(none.out.find("H_cJ   unknown: the demagnetization check reports knee_T null"),
+            std::string::npos)
+      << none.out;
+  const Outcome slip = magfem::test::run_cli("materials M19");
+  EXPECT_EQ(slip.status, 2) << slip.out;
+  EXPECT_NE(slip.out.find("unknown library material 'M19' (did you mean 'M-19'?)"),
+            std::string::npos)
+      << slip.out;
 }

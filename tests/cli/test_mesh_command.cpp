@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/case_helpers.hpp"
 #include "cli/mesh_command.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
+#include "tests/case_helpers.hpp"
 
 using namespace magfem;
 
@@ -24,7 +24,13 @@ nlohmann::json mesh_summary(const std::vector<std::string>& args, const std::str
   std::vector<std::string> all = args;
   all.insert(all.end(), {"--out", dir.string()});
   EXPECT_EQ(run_mesh_command(all), 0);
-  EXPECT_TRUE(std::filesystem::exists(dir / "mesh.vtu"));
+  // mesh.vtu's XML: region_id stored as the integer it is, and the regions named (per cell
+  // for ParaView's legend, and as a table indexed by region_id).
+  std::ifstream vtu(dir / "mesh.vtu");
+  const std::string xml((std::istreambuf_iterator<char>(vtu)), std::istreambuf_iterator<char>());
+  EXPECT_NE(xml.find(R"(<DataArray type="Int32" Name="region_id")"), std::string::npos);
+  EXPECT_NE(xml.find(R"(<Array type="String" Name="region" )"), std::string::npos);
+  EXPECT_NE(xml.find(R"(<Array type="String" Name="region_names" )"), std::string::npos);
   return nlohmann::json::parse(std::ifstream(dir / "summary.json"));
 }
 

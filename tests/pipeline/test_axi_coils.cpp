@@ -276,7 +276,7 @@ TEST(AxiCoils, RevolvedVtuSweepsTheWindingIntoItsRing) {
   // 1e-9), and B at a revolved point is (B_r cos phi, B_r sin phi, B_z).
   const auto run = run_case_2d(read_case(test::example("axi/solenoid.yaml")));
   const int n_phi = 36;
-  const VtuGrid g = make_vtu_revolved(*run->field, {1}, 0, {"air", "copper"}, n_phi);
+  const VtuGrid g = make_vtu_revolved(*run->field, {1}, 0, {"air", "copper"}, {"winding"}, n_phi);
   ASSERT_EQ(g.points.size(), n_phi * run->mesh.n_nodes());
   double volume = 0;
   int start = 0;

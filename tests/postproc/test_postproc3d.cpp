@@ -205,7 +205,8 @@ TEST(Energy3D, UniformFieldEnergyPerRegion) {
 TEST(VtuExport3D, QuadraticTetsWithAllArrays) {
   BoxField box(2, true);
   const auto rec = RecoveredB3D(*box.field).dof_average();
-  const VtuGrid g = make_vtu_3d(*box.field, rec, {0, 1}, 2, {"magnet", "iron", "air"});
+  const VtuGrid g =
+      make_vtu_3d(*box.field, rec, {0, 1}, 2, {"magnet", "iron", "air"}, {"pm", "core"});
   EXPECT_EQ(g.points.size(), static_cast<std::size_t>(box.dofs->n_dofs()));
   EXPECT_EQ(g.cell_types.size(), box.mesh.n_tets());
   EXPECT_EQ(g.cell_types[0], 24);

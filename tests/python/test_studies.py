@@ -102,6 +102,22 @@ class AgainstCommandLine(unittest.TestCase):
         self.assertEqual(result.columns, ["position_mm", "Fz_N"])
 
 
+    def test_planar_fe_translation(self):
+        # Two line-dipole cylinders pulled apart along x: the planar translate sweep, the
+        # same library call as `magfem sweep --move`, so the same bytes; the direction given
+        # as two numbers in the plane, the torque point (case unit) carried with the group.
+        path = example("2d/diametric_pair_translate.yaml")
+        files = cli("sweep", path, "--move", "mover", "--axis", "2,0", "--positions", "0,5",
+                    "--point", "15,0,0", "--mesh-scale", "3", "--jobs", "1", "--quiet")
+        result = magfem.sweep(magfem.Case.load(path), translate="mover", axis=[2, 0],
+                              positions=[0, 5], point=[15, 0, 0], mesh_scale=3.0, jobs=1)
+        self.check_same(result, files)
+        self.assertEqual(result.columns[0], "position_mm")
+        self.assertEqual(result.summary["motion"], "translate")
+        # F ~ 1/r^3: from r = 15 to 20 mm the attraction falls to (15/20)^3 = 0.42 (within
+        # the coarse mesh's few per cent): the positions were taken in mm.
+        self.assertAlmostEqual(result["Fx"][1] / result["Fx"][0], 0.4219, delta=0.02)
+
     def test_3d_translation(self):
         # The 3D translate sweep (two dipole spheres pulled apart along z), analytic and FE:
         # the same library call as `magfem sweep --move`, so the same bytes.
@@ -205,9 +221,11 @@ class Arguments(unittest.TestCase):
                 magfem.sweep(case, **kwargs)
             self.assertEqual(err.exception.field, field)
         planar = magfem.Case.load(example("2d/re25_motor_torque.yaml"))
-        with self.assertRaises(magfem.InputError) as err:
-            magfem.sweep(planar, translate="rotor", axis="x", positions=[0])
-        self.assertEqual(err.exception.field, "translate")
+        for kwargs, field in [(dict(axis="z"), "--axis"),  # out of the plane
+                              (dict(axis="x", analytic=True), "--analytic")]:
+            with self.assertRaises(magfem.InputError, msg=str(kwargs)) as err:
+                magfem.sweep(planar, translate="rotor", positions=[0], **kwargs)
+            self.assertEqual(err.exception.field, field)
         axi = magfem.Case.load(example("axi/voice_coil_magnet.yaml"))
         with self.assertRaises(magfem.InputError) as err:
             magfem.sweep(axi, translate="coil", positions=[0], analytic=True)

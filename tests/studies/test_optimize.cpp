@@ -5,14 +5,15 @@
 // maximal where d/da [a^3 ln(R/(a+g))] = 0, i.e. 3 ln(R/(a+g)) = a/(a+g).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
-#include "studies/optimize.hpp"
 #include "core/input_error.hpp"
+#include "studies/optimize.hpp"
 
 using namespace magfem;
 
@@ -67,6 +68,16 @@ TEST(Optimize, FindsTheClosedFormOptimumOfTheDipoleInAShell) {
   const double expected =
       4e-7 * M_PI * 4.0 / 3.0 * M_PI * a * a * a * M * 0.5 * M * std::log(0.050 / (a + 0.001));
   EXPECT_NEAR(r.objective, expected, 1e-9 * expected);
+  // The history holds every evaluation in order; the optimum is its best (COBYLA's value
+  // agrees to round-off, 1e-12: it is not recomputed), and history.csv has one row each.
+  ASSERT_EQ(r.history.size(), static_cast<std::size_t>(r.evaluations));
+  double best = -1;
+  for (const auto& e : r.history)
+    best = std::max(best, e.objective);
+  EXPECT_NEAR(best, r.objective, 1e-12 * best);
+  const std::string csv = optimize_history_csv(options, r);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "evaluation,a,peak_torque_Nm");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), r.evaluations + 1);
   RecordProperty("optimum_a_mm", std::to_string(r.optimum[0]));
   RecordProperty("closed_form_a_mm", std::to_string(lo));
   RecordProperty("evaluations", r.evaluations);
@@ -164,5 +175,6 @@ TEST(Optimize, VerifyFeSolvesTheOptimumAndReportsTheDifference) {
   const double analytic = j["analytic_value"].get<double>(), fe = j["fe_value"].get<double>();
   EXPECT_NEAR(fe, analytic, 0.02 * analytic);
   EXPECT_DOUBLE_EQ(j["fe_minus_analytic"].get<double>(), fe - analytic);
+  EXPECT_TRUE(std::filesystem::exists(dir / "history.csv"));
   RecordProperty("fe_relative_difference", std::to_string((fe - analytic) / analytic));
 }
