@@ -224,6 +224,8 @@ int run_sweep_axi(const Args& args) {
       std::printf("%12.4f %14.6g %9.2f\n", 1e3 * r.position_m, r.fz_N, r.seconds);
     else
       std::printf("%12.4f FAILED: %s\n", 1e3 * r.position_m, r.error.c_str());
+  for (const auto& w : magfem::sweep_axi_warnings(rows))
+    std::printf("warning  %s\n", w.c_str());
   std::printf("wrote    %s/sweep.csv, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), total_s);
   std::fflush(stdout);

@@ -234,9 +234,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
     // An adaptive sweep refines each position for what the sweep reports: the torque of a
     // rotation, the force of a translation (the case's own quantities may name forces or
     // probes a sweep does not compute).
-    if (position.adapt.enabled())
-      position.adapt.quantities = {std::string("forces.sweep.") +
-                                   (o.motion == SweepMotion::translate ? "force" : "torque")};
+    aim_adapt_at(position, "sweep", o.motion == SweepMotion::translate ? "force" : "torque");
     const auto run = solve_case_3d(std::move(position), fe);
     const ForceResult& inside = run->forces.back();
     // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
@@ -248,11 +246,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
     row.method = "maxwell_stress_sphere";
     if (inside.estimated)
       row.torque_bound = inside.torque_err.norm(), row.force_bound = inside.force_err.norm();
-    if (run->adapt) {
-      row.adapt_passes = static_cast<int>(run->adapt->passes.size());
-      row.adapt_converged = run->adapt->converged;
-      row.adapt_error_pct = run->adapt->passes.back().quantity_error_pct.front();
-    }
+    row.adapt = position_adapt(run->adapt);
   }
   row.force = on_group.force;
   row.torque = on_group.torque;
@@ -458,19 +452,17 @@ Eigen::Vector3d parse_axis(const std::string& text, bool planar) {
 }
 
 nlohmann::json sweep_row_to_json(const SweepRow& r) {
-  return {{"angle_deg", r.angle_deg},
-          {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
-          {"force", {r.force.x(), r.force.y(), r.force.z()}},
-          {"seconds", r.seconds},
-          {"unknowns", r.unknowns},
-          {"method", r.method},
-          {"n_max", r.n_max},
-          {"torque_bound", r.torque_bound},
-          {"force_bound", r.force_bound},
-          {"adapt_passes", r.adapt_passes},
-          {"adapt_converged", r.adapt_converged},
-          {"adapt_error_pct", std::isfinite(r.adapt_error_pct) ? nlohmann::json(r.adapt_error_pct)
-                                                               : nlohmann::json(nullptr)}};
+  nlohmann::json j = {{"angle_deg", r.angle_deg},
+                      {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
+                      {"force", {r.force.x(), r.force.y(), r.force.z()}},
+                      {"seconds", r.seconds},
+                      {"unknowns", r.unknowns},
+                      {"method", r.method},
+                      {"n_max", r.n_max},
+                      {"torque_bound", r.torque_bound},
+                      {"force_bound", r.force_bound}};
+  add_position_adapt(j, r.adapt);
+  return j;
 }
 
 SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored in j*/) {
@@ -485,13 +477,7 @@ SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored
   r.n_max = j.at("n_max").get<int>();
   r.torque_bound = j.at("torque_bound").get<double>();
   r.force_bound = j.at("force_bound").get<double>();
-  // Checkpoints written before adaptive sweeps lack these: a one-mesh position.
-  r.adapt_passes = j.value("adapt_passes", 0);
-  r.adapt_converged = j.value("adapt_converged", false);
-  const auto pct = j.find("adapt_error_pct");
-  r.adapt_error_pct = pct == j.end()     ? 0.0
-                      : pct->is_number() ? pct->get<double>()
-                                         : std::numeric_limits<double>::quiet_NaN();
+  r.adapt = position_adapt_from_json(j);
   r.ok = true;
   return r;
 }
@@ -553,16 +539,11 @@ std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& 
 std::vector<std::string> sweep_warnings(const std::vector<SweepRow>& rows,
                                         const SweepOptions& options) {
   std::vector<std::string> out;
-  const std::string key = sweep_position_key(options.motion);
   for (const auto& r : rows)
-    if (r.ok && r.adapt_passes && !r.adapt_converged) {
-      char line[240];
-      std::snprintf(line, sizeof line,
-                    "%s %g: adaptive refinement stopped after %d pass(es) before reaching its "
-                    "accuracy (estimated error %.3g %%)",
-                    key.c_str(), r.angle_deg, r.adapt_passes, r.adapt_error_pct);
-      out.emplace_back(line);
-    }
+    if (const std::string w =
+            position_adapt_warning(sweep_position_key(options.motion), r.angle_deg, r.adapt);
+        r.ok && !w.empty())
+      out.push_back(w);
   return out;
 }
 
@@ -633,12 +614,8 @@ nlohmann::ordered_json sweep_summary(const std::string& case_file,
       p["force_bound_N"] = r.force_bound;
     else if (r.torque_bound > 0 || r.force_bound > 0) // the other analytic forms, FE
       p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
-    if (r.adapt_passes)
-      p["adapt"] = {{"passes", r.adapt_passes},
-                    {"converged", r.adapt_converged},
-                    {"estimated_error_pct", std::isfinite(r.adapt_error_pct)
-                                                ? nlohmann::ordered_json(r.adapt_error_pct)
-                                                : nlohmann::ordered_json(nullptr)}};
+    if (r.adapt.passes)
+      p["adapt"] = position_adapt_summary(r.adapt);
     if (!r.ok)
       p["error"] = r.error, ++failed;
     j["positions"].push_back(p);

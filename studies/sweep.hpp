@@ -23,6 +23,7 @@
 
 #include "casefile/case_spec.hpp"
 #include "solver/mpi_context.hpp"
+#include "studies/position_adapt.hpp"
 
 namespace magfem {
 
@@ -72,12 +73,9 @@ struct SweepRow {
   std::string method;
   int n_max = 0;
   double torque_bound = 0, force_bound = 0; // N m, N (FE: the stress sphere's estimate)
-  // FE with an `adapt:` section: the passes this position took, whether its output (torque of
-  // a rotation, force of a translation) reached the accuracy, and that output's estimated
-  // relative error from the passes (%, NaN when one pass could not tell).
-  int adapt_passes = 0;
-  bool adapt_converged = false;
-  double adapt_error_pct = 0;
+  // FE with an `adapt:` section: the passes, and whether the sweep's output (torque of a
+  // rotation, force of a translation) reached the accuracy.
+  PositionAdapt adapt;
 };
 
 // The case with every part of `group` rotated by angle (radians, right-hand rule) about the

@@ -275,8 +275,8 @@ TEST(Sweep, AdaptiveTranslationRefinesEachPositionForItsForce) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const SweepRow& row = rows[i];
     ASSERT_TRUE(row.ok) << row.error;
-    EXPECT_GE(row.adapt_passes, 2) << row.angle_deg;
-    EXPECT_TRUE(row.adapt_converged) << row.angle_deg;
+    EXPECT_GE(row.adapt.passes, 2) << row.angle_deg;
+    EXPECT_TRUE(row.adapt.converged) << row.angle_deg;
     EXPECT_GT(row.force_bound, 0) << row.angle_deg;
     const Dipole a{moment(0.005, 1.2) * Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Zero()};
     const Dipole b{moment(0.004, 1.2) * Eigen::Vector3d::UnitX(),
@@ -286,10 +286,10 @@ TEST(Sweep, AdaptiveTranslationRefinesEachPositionForItsForce) {
     const double error_pct = 100 * (row.force - f).norm() / f.norm();
     const double coarse_pct = 100 * (coarse[i].force - f).norm() / f.norm();
     EXPECT_LT(error_pct, 1.0) << row.angle_deg;
-    EXPECT_LT(error_pct, 3 * row.adapt_error_pct) << row.angle_deg;
+    EXPECT_LT(error_pct, 3 * row.adapt.error_pct) << row.angle_deg;
     EXPECT_LT(error_pct, coarse_pct) << row.angle_deg << " mm: coarse " << coarse_pct << " %";
-    std::cout << row.angle_deg << " mm: " << row.adapt_passes << " passes, " << row.unknowns
-              << " unknowns, force error " << error_pct << " % (estimated " << row.adapt_error_pct
+    std::cout << row.angle_deg << " mm: " << row.adapt.passes << " passes, " << row.unknowns
+              << " unknowns, force error " << error_pct << " % (estimated " << row.adapt.error_pct
               << " %, the last mesh's own " << 100 * row.force_bound / row.force.norm()
               << " %), one mesh at scale 3: " << coarse_pct << " % (" << coarse[i].unknowns
               << " unknowns)\n";
