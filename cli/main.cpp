@@ -26,14 +26,13 @@
 #include "core/interrupt.hpp"
 #include "core/output_stage.hpp"
 #include "core/thread_count.hpp"
-#include "pipeline/adapt2d.hpp"
-#include "pipeline/adapt3d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_analytic.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "pipeline/solve_case.hpp"
 #include "postproc/probe_compare.hpp"
 #include "solver/mpi_context.hpp"
 #include "studies/actuator.hpp"
@@ -65,9 +64,7 @@ std::function<void(const magfem::AdaptPass&)> print_pass(const char* element_wor
 }
 
 int run_solve_3d(const Args& args, magfem::CaseSpec spec, magfem::RunOverrides overrides) {
-  auto run = spec.adapt.enabled()
-                 ? magfem::run_adaptive_3d(spec, overrides, print_pass("tetrahedra"))
-                 : magfem::run_case_3d(std::move(spec), overrides);
+  auto run = magfem::solve_case_3d(std::move(spec), overrides, print_pass("tetrahedra"));
   if (!overrides.world.is_root()) { // rank 0 reports and writes, once
     magfem::idle_barrier();
     return 0;
@@ -106,9 +103,7 @@ int run_solve(const Args& args) {
   }
   if (spec.dimension == 3)
     return run_solve_3d(args, std::move(spec), overrides);
-  auto run = spec.adapt.enabled()
-                 ? magfem::run_adaptive_2d(spec, overrides, print_pass("triangles"))
-                 : magfem::run_case_2d(std::move(spec), overrides);
+  auto run = magfem::solve_case_2d(std::move(spec), overrides, print_pass("triangles"));
   std::cout << magfem::describe_run_2d(*run);
   print_written(args.out_dir, magfem::write_outputs_2d(*run, args.out_dir));
   return 0;
@@ -237,6 +232,8 @@ int run_sweep_axi(const Args& args) {
       std::printf("%12.4f %14.6g %9.2f\n", 1e3 * r.position_m, r.fz_N, r.seconds);
     else
       std::printf("%12.4f FAILED: %s\n", 1e3 * r.position_m, r.error.c_str());
+  for (const auto& w : magfem::sweep_axi_warnings(rows))
+    std::printf("warning  %s\n", w.c_str());
   std::printf("wrote    %s/sweep.csv, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), total_s);
   std::fflush(stdout);
@@ -340,6 +337,8 @@ int run_sweep(const Args& args) {
     else
       std::printf("%10.3f FAILED: %s\n", r.angle_deg, r.error.c_str());
   std::printf("%s\n", magfem::sweep_method_note(rows, o).c_str());
+  for (const auto& w : magfem::sweep_warnings(rows, o))
+    std::printf("warning  %s\n", w.c_str());
   std::printf("wrote    %s/sweep.csv%s, summary.json (%.1f s of position time)\n",
               args.out_dir.c_str(), plotted ? ", sweep.png" : "", total_s);
   std::fflush(stdout);

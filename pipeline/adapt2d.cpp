@@ -44,10 +44,13 @@ std::unique_ptr<Run2D> run_adaptive_2d(const CaseSpec& spec, const RunOverrides&
                    run->dofs->n_dofs(),
                    run->energy.total_J_per_m * length_factor(run->spec),
                    run->error.energy_error_pct,
+                   {},
                    {}};
-    for (const auto& q : quantities)
+    for (const auto& q : quantities) {
       m.quantities.push_back(
           adapt_quantity_value(q, m.energy_J, run->forces, run->probes, b_columns));
+      m.quantity_mesh_error_pct.push_back(adapt_quantity_mesh_error_pct(q, run->forces));
+    }
     return m;
   };
   steps.plan = [&](double target_pct, bool coarsen) {

@@ -93,10 +93,13 @@ std::unique_ptr<Run3D> run_adaptive_3d(const CaseSpec& spec, const RunOverrides&
                    run->dofs->n_dofs(),
                    run->energy.total_J,
                    run->error_estimate.energy_error_pct,
+                   {},
                    {}};
-    for (const auto& q : quantities)
+    for (const auto& q : quantities) {
       m.quantities.push_back(
           adapt_quantity_value(q, m.energy_J, run->forces, run->probes, b_columns));
+      m.quantity_mesh_error_pct.push_back(adapt_quantity_mesh_error_pct(q, run->forces));
+    }
     return m;
   };
   steps.plan = [&](double target_pct, bool coarsen) {

@@ -51,6 +51,9 @@ struct AdaptMeasure {
   double energy_J = 0;
   double energy_error_pct = 0;
   std::vector<double> quantities; // parallel to the resolved quantities
+  // Their relative errors (%) estimated from this mesh alone where the result has one (the 3D
+  // stress tensor's force estimate), else NaN: a floor under the estimate from the passes.
+  std::vector<double> quantity_mesh_error_pct;
 };
 
 // The next mesh as planned: its predicted unknowns, or why it cannot be made (the memory
@@ -78,6 +81,11 @@ double adapt_quantity_value(const AdaptQuantity& q, double energy_J,
                             const std::vector<ForceResult>& forces,
                             const std::vector<ProbeTable>& probes,
                             const std::vector<std::string>& b_columns);
+
+// A force quantity's relative error (%) as the force's own one-mesh estimate gives it
+// (ForceResult::force_err, torque_err), or NaN (energy, probes, a force without an estimate).
+double adapt_quantity_mesh_error_pct(const AdaptQuantity& q,
+                                     const std::vector<ForceResult>& forces);
 
 // Runs the loop to convergence or a limit; on_pass (may be empty) hears every pass as it
 // ends. The caller's last solve is the last pass.

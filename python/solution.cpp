@@ -9,8 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "core/input_error.hpp"
-#include "pipeline/adapt2d.hpp"
-#include "pipeline/adapt3d.hpp"
+#include "pipeline/solve_case.hpp"
 #include "python/case_source.hpp"
 #include "python/py_progress.hpp"
 #include "python/result_tables.hpp"
@@ -83,13 +82,9 @@ solve_case(const std::string& path, const std::string& text, const std::string& 
     // GIL back for a moment at each report to look for Ctrl-C.
     const py::gil_scoped_release release;
     if (spec.dimension == 3)
-      solution = std::make_unique<Solution>(spec.adapt.enabled()
-                                                ? run_adaptive_3d(spec, overrides, on_pass)
-                                                : run_case_3d(std::move(spec), overrides));
+      solution = std::make_unique<Solution>(solve_case_3d(std::move(spec), overrides, on_pass));
     else
-      solution = std::make_unique<Solution>(spec.adapt.enabled()
-                                                ? run_adaptive_2d(spec, overrides, on_pass)
-                                                : run_case_2d(std::move(spec), overrides));
+      solution = std::make_unique<Solution>(solve_case_2d(std::move(spec), overrides, on_pass));
     reporter.rethrow_pending();
   }
   return solution;

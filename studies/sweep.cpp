@@ -17,6 +17,7 @@
 #include "pipeline/memory_guard.hpp"
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "pipeline/solve_case.hpp"
 #include "studies/position_runner.hpp"
 
 namespace magfem {
@@ -229,7 +230,12 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
     }
   } else {
     const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
-    const auto run = run_case_3d(fe_position_case(std::move(spec), surface), fe);
+    CaseSpec position = fe_position_case(std::move(spec), surface);
+    // An adaptive sweep refines each position for what the sweep reports: the torque of a
+    // rotation, the force of a translation (the case's own quantities may name forces or
+    // probes a sweep does not compute).
+    aim_adapt_at(position, "sweep", o.motion == SweepMotion::translate ? "force" : "torque");
+    const auto run = solve_case_3d(std::move(position), fe);
     const ForceResult& inside = run->forces.back();
     // Newton's third law: what acts on the contents of the sphere acts, reversed, on the
     // rest of the (isolated) system, torque about the same point included.
@@ -238,6 +244,9 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
       on_group.force = -inside.force, on_group.torque = -inside.torque;
     row.unknowns = static_cast<long>(run->dofs->n_dofs());
     row.method = "maxwell_stress_sphere";
+    if (inside.estimated)
+      row.torque_bound = inside.torque_err.norm(), row.force_bound = inside.force_err.norm();
+    row.adapt = position_adapt(run->adapt);
   }
   row.force = on_group.force;
   row.torque = on_group.torque;
@@ -443,15 +452,17 @@ Eigen::Vector3d parse_axis(const std::string& text, bool planar) {
 }
 
 nlohmann::json sweep_row_to_json(const SweepRow& r) {
-  return {{"angle_deg", r.angle_deg},
-          {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
-          {"force", {r.force.x(), r.force.y(), r.force.z()}},
-          {"seconds", r.seconds},
-          {"unknowns", r.unknowns},
-          {"method", r.method},
-          {"n_max", r.n_max},
-          {"torque_bound", r.torque_bound},
-          {"force_bound", r.force_bound}};
+  nlohmann::json j = {{"angle_deg", r.angle_deg},
+                      {"torque", {r.torque.x(), r.torque.y(), r.torque.z()}},
+                      {"force", {r.force.x(), r.force.y(), r.force.z()}},
+                      {"seconds", r.seconds},
+                      {"unknowns", r.unknowns},
+                      {"method", r.method},
+                      {"n_max", r.n_max},
+                      {"torque_bound", r.torque_bound},
+                      {"force_bound", r.force_bound}};
+  add_position_adapt(j, r.adapt);
+  return j;
 }
 
 SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored in j*/) {
@@ -466,6 +477,7 @@ SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored
   r.n_max = j.at("n_max").get<int>();
   r.torque_bound = j.at("torque_bound").get<double>();
   r.force_bound = j.at("force_bound").get<double>();
+  r.adapt = position_adapt_from_json(j);
   r.ok = true;
   return r;
 }
@@ -524,18 +536,38 @@ std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& 
   return method;
 }
 
+std::vector<std::string> sweep_warnings(const std::vector<SweepRow>& rows,
+                                        const SweepOptions& options) {
+  std::vector<std::string> out;
+  for (const auto& r : rows)
+    if (const std::string w =
+            position_adapt_warning(sweep_position_key(options.motion), r.angle_deg, r.adapt);
+        r.ok && !w.empty())
+      out.push_back(w);
+  return out;
+}
+
 std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOptions& options) {
   const std::string method = sweep_method(rows, options);
-  if (method != "harmonic_interaction" && method != "charge_pair_interaction" &&
-      method != "exterior_field_interaction")
-    return "method   " + method;
-  double peak = 0, bound = 0;
+  double peak = 0, bound = 0, force_peak = 0, force_bound = 0;
   int n_max = 0;
   for (const auto& r : rows)
     if (r.ok)
       peak = std::max(peak, r.torque.norm()), bound = std::max(bound, r.torque_bound),
-      n_max = std::max(n_max, r.n_max);
-  char line[200];
+      n_max = std::max(n_max, r.n_max), force_peak = std::max(force_peak, r.force.norm()),
+      force_bound = std::max(force_bound, r.force_bound);
+  char line[240];
+  if (method == "maxwell_stress_sphere" && (bound > 0 || force_bound > 0)) {
+    std::snprintf(line, sizeof line,
+                  "method   maxwell_stress_sphere: estimated error up to %.2g N m in the torque "
+                  "(%.2g of the peak), %.2g N in the force (%.2g of the peak)",
+                  bound, peak > 0 ? bound / peak : 0.0, force_bound,
+                  force_peak > 0 ? force_bound / force_peak : 0.0);
+    return line;
+  }
+  if (method != "harmonic_interaction" && method != "charge_pair_interaction" &&
+      method != "exterior_field_interaction")
+    return "method   " + method;
   if (method != "harmonic_interaction")
     std::snprintf(line, sizeof line,
                   "method   %s: estimated torque error %.2g N m (%.2g of the peak)", method.c_str(),
@@ -580,13 +612,18 @@ nlohmann::ordered_json sweep_summary(const std::string& case_file,
     if (r.n_max) // harmonic interaction: the series' length and rigorous truncation bounds
       p["n_max"] = r.n_max, p["torque_bound_Nm"] = r.torque_bound,
       p["force_bound_N"] = r.force_bound;
-    else if (r.method == "charge_pair_interaction" || r.method == "exterior_field_interaction")
+    else if (r.torque_bound > 0 || r.force_bound > 0) // the other analytic forms, FE
       p["torque_error_estimate_Nm"] = r.torque_bound, p["force_error_estimate_N"] = r.force_bound;
+    if (r.adapt.passes)
+      p["adapt"] = position_adapt_summary(r.adapt);
     if (!r.ok)
       p["error"] = r.error, ++failed;
     j["positions"].push_back(p);
   }
   j["failed_positions"] = failed;
+  const std::vector<std::string> warnings = sweep_warnings(rows, options);
+  if (!warnings.empty())
+    j["warnings"] = warnings;
   j["jobs"] = {{"requested", jobs.requested}, {"used", jobs.used}};
   // The memory estimate when this process's positions shared the limit (as a serial run
   // records it; under mpirun with one position at a time per process the file stays the

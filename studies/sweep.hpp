@@ -23,6 +23,7 @@
 
 #include "casefile/case_spec.hpp"
 #include "solver/mpi_context.hpp"
+#include "studies/position_adapt.hpp"
 
 namespace magfem {
 
@@ -71,7 +72,10 @@ struct SweepRow {
   // (analytic/exterior_field_interaction.hpp, pair_interaction.hpp).
   std::string method;
   int n_max = 0;
-  double torque_bound = 0, force_bound = 0; // N m, N
+  double torque_bound = 0, force_bound = 0; // N m, N (FE: the stress sphere's estimate)
+  // FE with an `adapt:` section: the passes, and whether the sweep's output (torque of a
+  // rotation, force of a translation) reached the accuracy.
+  PositionAdapt adapt;
 };
 
 // The case with every part of `group` rotated by angle (radians, right-hand rule) about the
@@ -136,8 +140,13 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
 // The method of the rows ("mixed" if they differ; failed rows do not count; if none
 // succeeded, the one the options ask for), and a line for the terminal on what it was
 // (harmonic: degrees and worst truncation bound against the peak).
+// (FE: the stress sphere's largest estimated torque and force errors against the peaks.)
 std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& options);
 std::string sweep_method_note(const std::vector<SweepRow>& rows, const SweepOptions& options);
+
+// One warning per position whose adaptive refinement stopped at a limit before its accuracy.
+std::vector<std::string> sweep_warnings(const std::vector<SweepRow>& rows,
+                                        const SweepOptions& options);
 
 // sweep.csv: angle_deg,Tx,Ty,Tz,Fx,Fy,Fz (successful positions only, in the order given);
 // position_mm,... for a translation.

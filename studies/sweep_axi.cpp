@@ -5,6 +5,7 @@
 #include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
 #include "pipeline/run_checkpoint.hpp"
+#include "pipeline/solve_case.hpp"
 #include "studies/group_motion2d.hpp"
 #include "studies/position_runner.hpp"
 
@@ -77,16 +78,20 @@ void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOption
   spec.forces = {group_force(spec, o.group, reversed)};
   spec.probes.clear(); // a sweep wants the force only
   spec.write_vtu = false;
+  aim_adapt_at(spec, spec.forces.front().name, "Fz");
   RunOverrides ov;
   ov.order = o.order;
   ov.mesh_scale = o.mesh_scale;
-  const auto run = run_case_2d(std::move(spec), ov);
+  const auto run = solve_case_2d(std::move(spec), ov);
   row.fz_N = (reversed ? -1.0 : 1.0) * run->forces.front().force.z();
   row.unknowns = static_cast<long>(run->dofs->n_dofs());
+  row.adapt = position_adapt(run->adapt);
 }
 
 nlohmann::json row_to_json(const AxiSweepRow& row) {
-  return {{"fz_N", row.fz_N}, {"seconds", row.seconds}, {"unknowns", row.unknowns}};
+  nlohmann::json j = {{"fz_N", row.fz_N}, {"seconds", row.seconds}, {"unknowns", row.unknowns}};
+  add_position_adapt(j, row.adapt);
+  return j;
 }
 
 AxiSweepRow row_from_json(const nlohmann::json& saved, double dz) {
@@ -95,6 +100,7 @@ AxiSweepRow row_from_json(const nlohmann::json& saved, double dz) {
   row.fz_N = saved.at("fz_N").get<double>();
   row.seconds = saved.at("seconds").get<double>();
   row.unknowns = saved.at("unknowns").get<long>();
+  row.adapt = position_adapt_from_json(saved);
   row.ok = true;
   return row;
 }
@@ -145,12 +151,25 @@ nlohmann::ordered_json sweep_axi_summary(const CaseSpec& spec, const std::vector
                                 {"ok", r.ok},
                                 {"seconds", r.seconds},
                                 {"unknowns", r.unknowns}};
+    if (r.adapt.passes)
+      p["adapt"] = position_adapt_summary(r.adapt);
     if (!r.ok)
       p["error"] = r.error, ++failed;
     j["positions"].push_back(p);
   }
   j["failed_positions"] = failed;
+  if (const auto warnings = sweep_axi_warnings(rows); !warnings.empty())
+    j["warnings"] = warnings;
   return j;
+}
+
+std::vector<std::string> sweep_axi_warnings(const std::vector<AxiSweepRow>& rows) {
+  std::vector<std::string> out;
+  for (const auto& r : rows)
+    if (const std::string w = position_adapt_warning("position_mm", 1e3 * r.position_m, r.adapt);
+        r.ok && !w.empty())
+      out.push_back(w);
+  return out;
 }
 
 } // namespace magfem

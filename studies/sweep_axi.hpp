@@ -18,6 +18,7 @@
 
 #include "casefile/case_spec.hpp"
 #include "solver/mpi_context.hpp"
+#include "studies/position_adapt.hpp"
 
 namespace magfem {
 
@@ -44,6 +45,7 @@ struct AxiSweepRow {
   std::string error;
   double seconds = 0;
   long unknowns = 0;
+  PositionAdapt adapt; // with an adapt: section (refined for Fz)
 };
 
 // The case with every region of `group` moved by dz (metres) along the axis; radial
@@ -68,8 +70,10 @@ std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows);
 // summary.json of the sweep but the peak memory the command line adds: case, method, group,
 // positions (position_mm, ok, seconds, unknowns, error of a failed one), failed_positions.
 // Also magfem.sweep's `summary` in Python.
-nlohmann::ordered_json sweep_axi_summary(const CaseSpec& spec,
-                                         const std::vector<AxiSweepRow>& rows,
+// One warning per position whose adaptive refinement stopped at a limit.
+std::vector<std::string> sweep_axi_warnings(const std::vector<AxiSweepRow>& rows);
+
+nlohmann::ordered_json sweep_axi_summary(const CaseSpec& spec, const std::vector<AxiSweepRow>& rows,
                                          const AxiSweepOptions& options);
 
 } // namespace magfem

@@ -5,6 +5,7 @@
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "pipeline/run2d.hpp"
+#include "pipeline/solve_case.hpp"
 #include "studies/group_motion2d.hpp"
 #include "studies/position_runner.hpp"
 
@@ -93,13 +94,15 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, 
   spec.forces = {f};
   spec.probes.clear(); // a sweep wants the force only
   spec.write_vtu = false;
+  aim_adapt_at(spec, f.name, o.motion == SweepMotion::translate ? "force" : "torque");
   RunOverrides ov;
   ov.order = o.order;
   ov.mesh_scale = o.mesh_scale;
-  const auto run = run_case_2d(std::move(spec), ov);
+  const auto run = solve_case_2d(std::move(spec), ov);
   row.torque = run->forces.front().torque;
   row.force = run->forces.front().force;
   row.unknowns = static_cast<long>(run->dofs->n_dofs());
+  row.adapt = position_adapt(run->adapt);
 }
 
 } // namespace
