@@ -8,7 +8,7 @@ namespace magfem {
 
 void aim_adapt_at(CaseSpec& spec, const std::string& force_name, const std::string& component) {
   if (spec.adapt.enabled())
-    spec.adapt.quantities = {}; (void)force_name; (void)component;
+    spec.adapt.quantities = {"forces." + force_name + "." + component};
 }
 
 PositionAdapt position_adapt(const std::optional<AdaptHistory>& history) {
