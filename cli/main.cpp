@@ -248,7 +248,15 @@ int run_sweep(const Args& args) {
   if (!args.move.empty() && !args.rotate.empty())
     throw InputError(cli, 0, "--move", "give --rotate GROUP or --move GROUP, not both");
   const bool translate = !args.move.empty();
-  if (translate && magfem::read_case(args.case_file).axisymmetric())
+  const auto spec = magfem::read_case(args.case_file);
+  const bool axisymmetric = spec.axisymmetric();
+  // --point is the point a rotation turns about (and the planar torque's point): a 3D or
+  // axisymmetric translation has none, and an ignored option would look as if it had worked.
+  if (translate && !args.point.empty() && (axisymmetric || spec.dimension == 3))
+    throw InputError(cli, 0, "--point",
+                     "a 3D or axisymmetric --move sweep has no point (3D torques are about the "
+                     "origin); --point goes with --rotate, or a planar --move");
+  if (translate && axisymmetric)
     return run_sweep_axi(args);
   if (!translate && args.rotate.empty())
     throw InputError(cli, 0, "--rotate", "name the group to rotate (or --move GROUP)");
@@ -260,7 +268,6 @@ int run_sweep(const Args& args) {
     throw InputError(cli, 0, "--positions", "give the positions (mm)");
   if (!translate && args.angles.empty())
     throw InputError(cli, 0, "--angles", "give the angles");
-  const auto spec = magfem::read_case(args.case_file);
   const double s = spec.length_unit;
   const bool planar = spec.dimension == 2 && !spec.axisymmetric();
   magfem::SweepOptions o;

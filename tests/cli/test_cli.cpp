@@ -161,7 +161,7 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
   const std::string c = magfem::test::example("2d/diametric_cylinder.yaml");
   const std::string o = " --out " + out.string();
   const std::string s3 = magfem::test::example("3d/two_spheres.yaml");
-  const std::array<std::pair<std::string, std::string>, 14> cases{{
+  const std::array<std::pair<std::string, std::string>, 15> cases{{
       {"solve " + c + o + " --order 3", "--order"},
       {"solve " + c + o + " --order 1.5", "--order"}, // was truncated to 1
       {"solve " + c + o + " --order 0", "--order"},   // was "as in the case", silently
@@ -176,6 +176,8 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
       {"sweep " + c + o + " --move magnet --axis z --positions 0,1", "--axis"},
       {"sweep " + s3 + o + " --move arm --rotate arm --axis z --positions 0,1", "not both"},
       {"sweep " + s3 + o + " --move arm --axis z --angles 0,1", "--angles"},
+      // A 3D translation's torque is about the origin: a --point would be ignored.
+      {"sweep " + s3 + o + " --move arm --axis z --positions 0,1 --point 0,0,1", "--point"},
       {"transmogrify " + c, "unknown command"},
   }};
   for (const auto& [args, named] : cases) {
