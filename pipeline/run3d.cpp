@@ -277,7 +277,10 @@ public:
     if (world_.distributed())
       return solve_linear_distributed(assembler, *run_.dofs, run_.mesh.n_tets(), world_.rank,
                                       world_.size, run_.spec.newton.linear, u);
-    return solve_nonlinear(assembler, u, run_.spec.newton);
+    NewtonOptions newton = run_.spec.newton;
+    // The coils' sensitivity solves reuse a linear system's matrix and preconditioner.
+    newton.keep_linear_factorization = run_.coils && run_.spec.coil_inductance;
+    return solve_nonlinear(assembler, u, newton);
   }
   // Rank 0 holds the solution and alone post-processes.
   bool post_processes() const { return world_.is_root(); }
@@ -303,6 +306,7 @@ public:
   }
   void coil_results(const Assembler3D& assembler, const Eigen::VectorXd& u) const {
     run_.coil_results = compute_coil_results(run_, assembler, u);
+    run_.report.factorized.reset(); // its memory is not needed after the sensitivity solves
   }
   // The energy-norm estimate and one for each stress-tensor force, from one patch recovery.
   void estimate_error() const {

@@ -67,13 +67,15 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
                              const NewtonOptions& options) {
   NewtonReport report;
   report.linear = system.is_linear();
-  LinearSolver linear(options.linear);
+  // The matrix and its solver live together so that a linear system's can be handed back.
+  const auto factorized = std::make_shared<FactorizedMatrix>(options.linear);
+  LinearSolver& linear = factorized->solver;
   if (u.size() != system.n_unknowns())
     u = Eigen::VectorXd::Zero(system.n_unknowns());
   const double scale = system.load_norm() > 0 ? system.load_norm() : 1.0;
 
   Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> k;
+  Eigen::SparseMatrix<double>& k = factorized->lower;
   auto t0 = Clock::now();
   system.evaluate(u, r, &k, options.method);
   report.assemble_s += seconds_since(t0);
@@ -210,6 +212,8 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
   report.linear_setup_s = linear.setup_seconds();
   report.linear_solve_s = linear.solve_seconds();
   report.notes = linear.notes();
+  if (options.keep_linear_factorization && system.is_linear() && report.converged)
+    report.factorized = factorized;
   if (!report.converged && report.message.empty())
     report.message = "no convergence in " + std::to_string(options.max_iterations) +
                      " iterations (relative residual " +
