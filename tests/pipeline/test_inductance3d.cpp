@@ -101,21 +101,10 @@ output: {vtu: false}
 // secant operator is tens of percent off (measured: L_11 5 times too large). Tolerance 1e-6:
 // both by CHOLMOD here, they agree to round-off.
 TEST(Inductance3D, NonlinearPicardSolveDoesNotLendItsSecantOperator) {
-  const auto path = test::write_temp_case("inductance3d_picard.yaml", R"(unit: mm
-dimension: 3
-regions:
-  - {name: rod, shape: cylinder, r_outer: 4, height: 16, material: steel_1010,
-     placement: {translate: [0, 0, -8]}, mesh_size: 3}
-coils:
-  - {name: coil, shape: solenoid, r_inner: 5, r_outer: 8, length: 12, center: [0, 0, 0],
-     axis: [0, 0, 1], turns: 1000, current: 3}
-  - {name: pickup, shape: solenoid, r_inner: 9, r_outer: 10, length: 4, center: [0, 0, 3],
-     axis: [0, 0, 1], turns: 30, current: 0}
-boundary: {type: open, radius: 20}
-mesh: {size: 12, chord_tolerance: 0.3}
-solver: {order: 1, method: picard, max_iterations: 300, tolerance: 1e-8}
-output: {vtu: false}
-)");
+  const auto path = test::write_temp_case(
+      "inductance3d_picard.yaml",
+      test::rod_in_solenoid_case3d(
+          3, "{order: 1, method: picard, max_iterations: 300, tolerance: 1e-8}"));
   const auto run = run_case_3d(read_case(path));
   ASSERT_TRUE(run->report.converged) << run->report.message;
   const Eigen::MatrixXd& l = run->coil_results.inductance_H;
