@@ -263,16 +263,20 @@ public:
                             [&](std::size_t t) { return run_.problem.is_shell(t); }));
   }
   NewtonReport solve(Assembler3D& assembler, Eigen::VectorXd& u) const {
-    if (!world_.distributed())
-      return solve_nonlinear(assembler, u, run_.spec.newton);
+    if (!world_.distributed()) {
+      NewtonOptions newton = run_.spec.newton;
+      // The coils' sensitivity solves reuse a linear system's matrix and preconditioner.
+      newton.keep_linear_factorization = run_.coils && run_.spec.coil_inductance;
+      return solve_nonlinear(assembler, u, newton);
+    }
     NewtonReport report = solve_distributed(assembler, world_.size, run_.spec.newton, u);
     // The inductance matrix's solves need every process: done here, before rank 0 goes on
     // alone. (A Newton that did not converge ends the run on every process anyway.)
     if (report.converged && run_.coils && run_.spec.coil_inductance) {
       const auto t0 = std::chrono::steady_clock::now();
-      run_.coil_sensitivities =
-          current_sensitivities_distributed(assembler, world_.size, u, run_.coils->n_coils(),
-                                            sensitivity_solver_options(run_.spec.newton.linear));
+      run_.coil_sensitivities = current_sensitivities_distributed(
+          assembler, world_.size, u, run_.coils->n_coils(),
+          uncorrected_sensitivity_solver_options(run_.spec.newton.linear));
       run_.coil_sensitivity_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
@@ -302,6 +306,7 @@ public:
   }
   void coil_results(const Assembler3D& assembler, const Eigen::VectorXd& u) const {
     run_.coil_results = compute_coil_results(run_, assembler, u);
+    run_.report.factorized.reset(); // its memory is not needed after the sensitivity solves
   }
   // The energy-norm estimate and one for each stress-tensor force, from one patch recovery.
   void estimate_error() const {

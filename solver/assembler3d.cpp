@@ -255,11 +255,11 @@ void Assembler3D::assemble(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
       });
 }
 
-void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
+void Assembler3D::element_source(std::size_t t, int coil, int n_coils, double* re) const {
   const auto& mesh = *problem_.mesh;
   const CoilSource3D& src = *problem_.source;
   const int n = dofs_.dofs_per_element();
-  std::fill(re, re + n, 0.0);
+  std::fill(re, re + n * n_coils, 0.0);
   const Material& mat = *problem_.physics(mesh.tet_part[t]).material;
   const bool in_shell = problem_.is_shell(t);
   if (src.is_total(t) || (!in_shell && mat.is_nonlinear()))
@@ -294,12 +294,15 @@ void Assembler3D::element_source(std::size_t t, int coil, double* re) const {
     }
     // The table holds H_s at the mapped point shell_.map(x) in shell tets.
     const int qn = static_cast<int>(qi);
-    const Eigen::Vector3d hs = coil < 0 ? src.table.H(t, qn) : src.table.H_per_ampere(t, qn, coil);
-    const Eigen::Vector3d b =
-        in_shell ? Eigen::Vector3d(mu0 * (shell_.det_times_inverse_jacobian(x) * hs))
-                 : Eigen::Vector3d(mu * hs);
-    for (int i = 0; i < n; ++i)
-      re[i] -= w * grad[i].dot(b);
+    const Eigen::Matrix3d d = in_shell ? Eigen::Matrix3d(mu0 * shell_.det_times_inverse_jacobian(x))
+                                       : Eigen::Matrix3d(mu * Eigen::Matrix3d::Identity());
+    for (int c = 0; c < n_coils; ++c) {
+      const Eigen::Vector3d hs =
+          coil < 0 ? src.table.H(t, qn) : src.table.H_per_ampere(t, qn, coil + c);
+      const Eigen::Vector3d b = d * hs;
+      for (int i = 0; i < n; ++i)
+        re[c * n + i] -= w * grad[i].dot(b);
+    }
   }
 }
 
@@ -309,7 +312,7 @@ Eigen::VectorXd Assembler3D::source_load(int coil) const {
   const std::size_t first = share_first();
   parallel_element_scatter(
       share_count(), n, n_eqs_, loop_threads(),
-      [&](std::size_t e, double* re) { element_source(first + e, coil, re); },
+      [&](std::size_t e, double* re) { element_source(first + e, coil, 1, re); },
       [&](std::size_t e, const double* re, std::size_t lo, std::size_t hi) {
         const int* eq = &element_eqs_[(first + e) * n];
         for (int i = 0; i < n; ++i)
@@ -322,37 +325,49 @@ Eigen::VectorXd Assembler3D::source_load(int coil) const {
 
 Eigen::VectorXd Assembler3D::current_derivative(const Eigen::VectorXd& u, int coil,
                                                 TangentKind kind) const {
-  Eigen::VectorXd out = source_load(coil);
+  return current_derivative_columns(u, coil, 1, kind).col(0);
+}
+
+Eigen::MatrixXd Assembler3D::current_derivatives(const Eigen::VectorXd& u, TangentKind kind) const {
+  return current_derivative_columns(u, 0, problem_.source->field->n_coils(), kind);
+}
+
+Eigen::MatrixXd Assembler3D::current_derivative_columns(const Eigen::VectorXd& u, int first,
+                                                        int count, TangentKind kind) const {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n_eqs_, count);
   const CoilSource3D& src = *problem_.source;
   const Eigen::VectorXd phi_full = expand(u);
-  const Eigen::VectorXd& per_ampere = src.offset_per_ampere[coil];
   const int n = dofs_.dofs_per_element();
-  // Total regions: r depends on the current through u + I Phi_s, so dr/dI = K_e Phi_s.
-  const std::size_t first = share_first();
+  // Reduced regions: the source field's load per ampere. Total regions: r depends on the
+  // current through u + I Phi_s, so dr/dI = K_e Phi_s, one element tangent for every coil.
+  const std::size_t share = share_first();
   parallel_element_scatter(
-      share_count(), n, n_eqs_, loop_threads(),
+      share_count(), static_cast<std::size_t>(n * count), n_eqs_, loop_threads(),
       [&](std::size_t e, double* sum) {
-        const std::size_t t = first + e;
-        std::fill(sum, sum + n, 0.0);
-        if (!src.is_total(t))
+        const std::size_t t = share + e;
+        if (!src.is_total(t)) {
+          element_source(t, first, count, sum);
           return;
+        }
+        std::fill(sum, sum + n * count, 0.0);
         std::array<double, 10> re{};
         std::array<double, 100> ke{};
         element(t, phi_full, re.data(), ke.data(), kind);
         const int* dof = dofs_.element_dofs(t);
-        for (int i = 0; i < n; ++i)
-          for (int j = 0; j < n; ++j)
-            sum[i] += ke[i * n + j] * per_ampere[dof[j]];
+        for (int c = 0; c < count; ++c) {
+          const Eigen::VectorXd& per_ampere = src.offset_per_ampere[first + c];
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+              sum[c * n + i] += ke[i * n + j] * per_ampere[dof[j]];
+        }
       },
       [&](std::size_t e, const double* sum, std::size_t lo, std::size_t hi) {
-        const std::size_t t = first + e;
-        if (!src.is_total(t))
-          return;
-        const int* eq = &element_eqs_[t * n];
+        const int* eq = &element_eqs_[(share + e) * n];
         for (int i = 0; i < n; ++i)
           if (eq[i] >= 0 && static_cast<std::size_t>(eq[i]) >= lo &&
               static_cast<std::size_t>(eq[i]) < hi)
-            out[eq[i]] += sum[i];
+            for (int c = 0; c < count; ++c)
+              out(eq[i], c) += sum[c * n + i];
       });
   return out;
 }

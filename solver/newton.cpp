@@ -61,16 +61,11 @@ double energy_line_search(const NonlinearSystem& system, const Eigen::VectorXd& 
   }
   return a; // u_try, r_try belong to the last evaluation
 }
-} // namespace
 
-NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
-                             const NewtonOptions& options) {
-  LinearSolver linear(options.linear);
-  return solve_nonlinear(system, u, options, linear);
-}
-
-NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
-                             const NewtonOptions& options, TangentSolver& linear) {
+// Newton's iteration with `linear` for the tangent systems, the tangent assembled into k.
+NewtonReport newton_iterations(const NonlinearSystem& system, Eigen::VectorXd& u,
+                               const NewtonOptions& options, TangentSolver& linear,
+                               Eigen::SparseMatrix<double>& k) {
   NewtonReport report;
   report.linear = system.is_linear();
   if (u.size() != system.n_unknowns())
@@ -78,7 +73,6 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
   const double scale = system.load_norm() > 0 ? system.load_norm() : 1.0;
 
   Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> k;
   auto t0 = Clock::now();
   system.evaluate(u, r, &k, options.method);
   report.assemble_s += seconds_since(t0);
@@ -220,6 +214,25 @@ NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
                      " iterations (relative residual " +
                      std::to_string(report.residual_history.back()) + ")";
   return report;
+}
+
+} // namespace
+
+NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
+                             const NewtonOptions& options) {
+  // The matrix and its solver live together so that a linear system's can be handed back.
+  const auto factorized = std::make_shared<FactorizedMatrix>(options.linear);
+  NewtonReport report =
+      newton_iterations(system, u, options, factorized->solver, factorized->lower);
+  if (options.keep_linear_factorization && system.is_linear() && report.converged)
+    report.factorized = factorized;
+  return report;
+}
+
+NewtonReport solve_nonlinear(const NonlinearSystem& system, Eigen::VectorXd& u,
+                             const NewtonOptions& options, TangentSolver& linear) {
+  Eigen::SparseMatrix<double> k;
+  return newton_iterations(system, u, options, linear, k);
 }
 
 } // namespace magfem

@@ -4,11 +4,13 @@
 // BOTH the relative residual and the relative update are below their tolerances. A linear
 // problem takes exactly one step. The outcome is a report the caller must check; nothing
 // here throws for non-convergence.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "solver/factorized_matrix.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/nonlinear_system.hpp"
 
@@ -35,6 +37,10 @@ struct NewtonOptions {
   // linear.cg_tolerance and this ceiling; the last steps, where Newton is quadratic, solve to
   // linear.cg_tolerance. 0 = every step to linear.cg_tolerance. No effect on direct solves.
   double forcing_max = 0.1;
+  // Linear systems: hand the factorized matrix back (NewtonReport::factorized) for further
+  // solves with the same operator. Off by default: it keeps the matrix and the preconditioner
+  // in memory after the solve.
+  bool keep_linear_factorization = false;
   LinearSolverOptions linear;
 };
 
@@ -52,6 +58,11 @@ struct NewtonReport {
   double linear_setup_s = 0, linear_solve_s = 0;
   std::vector<std::string> notes; // the linear solver's change of course (AMG fallback)
   std::string message;
+  // The linear system's matrix, factorized, when keep_linear_factorization asked for it and
+  // the system is linear and converged; null otherwise. For a linear system it is the tangent
+  // at the solution; for a nonlinear one no factorized matrix is (the last is at the previous
+  // iterate, or a Picard secant), hence none is handed back.
+  std::shared_ptr<FactorizedMatrix> factorized;
 };
 
 // With a LinearSolver on options.linear.

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers for app-level tests: run example cases in-process and compare probes with exact
 // fields.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -88,6 +89,31 @@ regions:
   - {name: sphere, shape: spherical_segment, r_inner: 0, r_outer: 10, material: pm,
      magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: )" +
          mesh_size + "}\n";
+}
+
+// A steel_1010 rod (r 0..4 mm, z -8..8 mm, mesh size 3) inside a solenoid (r 5..8 mm, z -6..6
+// mm, 1000 turns at `current` A) in an open boundary at 20 mm, coarse (seconds at order 1):
+// at 3 A the rod's middle reaches ~1.7 T, the knee and beyond. The rod does not encircle the
+// coil's current: a total-potential region, whose H is -grad(u + Phi_s). `solver`: the
+// solver block's YAML flow map, e.g. "{order: 1}"; a test may append probes.
+inline std::string rod_in_solenoid_case3d(double current, const std::string& solver) {
+  char amperes[32];
+  std::snprintf(amperes, sizeof amperes, "%.17g", current);
+  return std::string(R"(unit: mm
+dimension: 3
+regions:
+  - {name: rod, shape: cylinder, r_outer: 4, height: 16, material: steel_1010,
+     placement: {translate: [0, 0, -8]}, mesh_size: 3}
+coils:
+  - {name: coil, shape: solenoid, r_inner: 5, r_outer: 8, length: 12, center: [0, 0, 0],
+     axis: [0, 0, 1], turns: 1000, current: )") +
+         amperes + R"(}
+boundary: {type: open, radius: 20}
+mesh: {size: 12, chord_tolerance: 0.3}
+solver: )" +
+         solver + R"(
+output: {vtu: false}
+)";
 }
 
 inline std::string write_temp_case(const std::string& name, const std::string& text) {

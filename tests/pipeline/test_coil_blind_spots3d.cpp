@@ -18,13 +18,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analytic/coil_closed_forms.hpp"
+#include "core/constants.hpp"
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_analytic.hpp"
-#include "tests/case_helpers.hpp"
-#include "core/constants.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "sources/coil_field.hpp"
-#include "analytic/coil_closed_forms.hpp"
+#include "tests/case_helpers.hpp"
 
 using namespace magfem;
 
@@ -153,26 +153,12 @@ TEST(CoilBlindSpots3D, RacetrackForcesBalanceAndInductanceMatchesNeumann) {
 
 namespace {
 
-// Rod: steel_1010, r 0..4 mm, z -8..8 mm. Coil: r 5..8 mm, z -6..6 mm, 1000 turns. At 3 A the
-// rod's middle reaches ~1.7 T (the knee and beyond). The rod does not encircle the coil's
-// current: a total-potential region, whose H is -grad(u + Phi_s).
+// The steel rod in its solenoid (test::rod_in_solenoid_case3d: ~1.7 T in the rod at 3 A, a
+// total-potential region) with a probe along the axis.
 std::string rod_case_3d(double current, int order) {
-  return format(R"(unit: mm
-dimension: 3
-regions:
-  - {name: rod, shape: cylinder, r_outer: 4, height: 16, material: steel_1010,
-     placement: {translate: [0, 0, -8]}, mesh_size: 3}
-coils:
-  - {name: coil, shape: solenoid, r_inner: 5, r_outer: 8, length: 12, center: [0, 0, 0],
-     axis: [0, 0, 1], turns: 1000, current: %.17g}
-boundary: {type: open, radius: 20}
-mesh: {size: 12, chord_tolerance: 0.3}
-solver: {order: %g}
-output: {vtu: false}
-probes:
+  return test::rod_in_solenoid_case3d(current, format("{order: %g}", order)) + R"(probes:
   - {name: axis, type: line, start: [0, 0, 0], end: [0, 0, 14], points: 8}
-)",
-                current, order);
+)";
 }
 
 // The same in the axisymmetric solver (fine: ~31k P2 unknowns, 1 s).

@@ -123,9 +123,10 @@ output: {vtu: false}
 // inductance matrix from the block solve (both coils' sensitivities in one simultaneous CG,
 // solver/simultaneous_pcg.hpp). Checked by
 //   - reciprocity, L_12 = L_21: an identity of the symmetric tangent, exact but for the
-//     sensitivity solves' residual (relative 1e-9), which the tangent's condition (iron at
-//     mu_r 1000) amplifies: 1e-6 of the largest entry (measured 1.4e-8; a column swapped or
-//     dropped breaks it by O(1));
+//     sensitivity solves' error (relative residual 1e-5, with the variational correction of
+//     solver/current_sensitivity3d.hpp) and the plate's total-potential discretization:
+//     1e-6 of the largest entry (measured 1.6e-8; a column swapped or dropped breaks it by
+//     O(1));
 //   - the image solution: over a half-space of mu_r 1000, L_ij = M(i, j) + k M(i, j'),
 //     j' the image of coil j, k = (mu_r - 1)/(mu_r + 1) (self terms with Maxwell's thick-coil
 //     formula). 0.5 %: the finite plate and the coarse mesh's error in the plate's part, a
@@ -173,6 +174,8 @@ output: {vtu: false}
                   exact(i, j), 100 * (l(i, j) - exact(i, j)) / exact(i, j));
       EXPECT_NEAR(l(i, j), exact(i, j), 5e-3 * exact(i, j));
     }
+  std::printf("reciprocity: |L_12 - L_21| %.2e of the largest entry\n",
+              std::abs(l(0, 1) - l(1, 0)) / l.cwiseAbs().maxCoeff());
   EXPECT_NEAR(l(0, 1), l(1, 0), 1e-6 * l.cwiseAbs().maxCoeff());
 }
 

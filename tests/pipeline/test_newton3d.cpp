@@ -9,36 +9,20 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pipeline/run3d.hpp"
-#include "tests/case_helpers.hpp"
 #include "casefile/case_spec.hpp"
+#include "pipeline/run3d.hpp"
 #include "solver/assembler3d.hpp"
 #include "solver/newton.hpp"
+#include "tests/case_helpers.hpp"
 
 using namespace magfem;
 
 namespace {
 
-// Rod: steel_1010, r 0..4 mm, z -8..8 mm, inside a solenoid (r 5..8 mm, z -6..6 mm, 1000
-// turns): at 3 A the rod's middle reaches ~1.7 T, the knee and beyond (as in
-// test_coil_blind_spots3d.cpp). The rod is a total-potential region.
+// The steel rod in its solenoid (test::rod_in_solenoid_case3d): at 3 A the rod's middle
+// reaches ~1.7 T, the knee and beyond. The rod is a total-potential region.
 std::string rod_case(double current) {
-  char buf[2048];
-  std::snprintf(buf, sizeof buf, R"(unit: mm
-dimension: 3
-regions:
-  - {name: rod, shape: cylinder, r_outer: 4, height: 16, material: steel_1010,
-     placement: {translate: [0, 0, -8]}, mesh_size: 3}
-coils:
-  - {name: coil, shape: solenoid, r_inner: 5, r_outer: 8, length: 12, center: [0, 0, 0],
-     axis: [0, 0, 1], turns: 1000, current: %.17g}
-boundary: {type: open, radius: 20}
-mesh: {size: 12, chord_tolerance: 0.3}
-solver: {order: 1}
-output: {vtu: false}
-)",
-                current);
-  return buf;
+  return test::rod_in_solenoid_case3d(current, "{order: 1}");
 }
 
 std::unique_ptr<Run3D> run_rod(double current, bool linear_start) {
