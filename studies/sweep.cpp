@@ -234,7 +234,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
     // An adaptive sweep refines each position for what the sweep reports: the torque of a
     // rotation, the force of a translation (the case's own quantities may name forces or
     // probes a sweep does not compute).
-    aim_adapt_at(position, "sweep", o.motion == SweepMotion::translate ? "force" : "torque");
+    aim_adapt_at(position, "sweep", sweep_output(o.motion));
     const auto run = solve_case_3d(std::move(position), fe);
     const ForceResult& inside = run->forces.back();
     // Newton's third law: what acts on the contents of the sphere acts, reversed, on the

@@ -35,6 +35,12 @@ enum class SweepMotion {
   translate // along `axis` by each of offsets_m (the force surface is chosen at each position)
 };
 
+// What a sweep reports and an adaptive sweep refines each position for (position_adapt.hpp):
+// the torque of a rotation, the force of a translation.
+inline const char* sweep_output(SweepMotion m) {
+  return m == SweepMotion::translate ? "force" : "torque";
+}
+
 struct SweepOptions {
   std::string group; // Part3D::group to move
   SweepMotion motion = SweepMotion::rotate;

@@ -94,7 +94,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, 
   spec.forces = {f};
   spec.probes.clear(); // a sweep wants the force only
   spec.write_vtu = false;
-  aim_adapt_at(spec, f.name, o.motion == SweepMotion::translate ? "force" : "torque");
+  aim_adapt_at(spec, f.name, sweep_output(o.motion));
   RunOverrides ov;
   ov.order = o.order;
   ov.mesh_scale = o.mesh_scale;
