@@ -32,13 +32,6 @@ LinearSolverOptions sensitivity_solver_options(LinearSolverOptions options) {
   return options;
 }
 
-// Without the correction (the distributed path) the matrix's error is about the tolerance
-// itself: 1e-9 (1.6e-9 of the largest entry on the actuator), as before the correction.
-LinearSolverOptions uncorrected_sensitivity_solver_options(LinearSolverOptions options) {
-  options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
-  return options;
-}
-
 namespace {
 
 // Gauss order of the coil volume quadrature for the Lorentz force: B is smooth across the
@@ -195,20 +188,18 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
   }
   if (run.spec.coil_inductance) {
     const auto t0 = std::chrono::steady_clock::now();
-    // Distributed: solved on every process beforehand (run3d.cpp), without the correction.
-    CurrentSensitivities3D sens;
-    if (!run.coil_sensitivities.empty())
-      sens.du = run.coil_sensitivities;
-    else
-      sens = current_sensitivities_with_correction_3d(
-          assembler, u, nc, sensitivity_solver_options(run.spec.newton.linear),
-          run.report.factorized.get());
+    // Distributed: solved on every process beforehand (run3d.cpp).
+    const CurrentSensitivities3D sens =
+        !run.coil_sensitivities.du.empty()
+            ? run.coil_sensitivities
+            : current_sensitivities_with_correction_3d(
+                  assembler, u, nc, sensitivity_solver_options(run.spec.newton.linear),
+                  run.report.factorized.get());
     std::vector<Eigen::VectorXd> full;
     for (const auto& s : sens.du)
       full.push_back(assembler.expand(s));
     out.inductance_H = inductance_matrix_3d(*run.field, full);
-    if (sens.correction.size())
-      out.inductance_H -= sens.correction;
+    out.inductance_H -= sens.correction;
     out.inductance_s = run.coil_sensitivity_s +
                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }

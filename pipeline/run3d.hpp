@@ -21,6 +21,7 @@
 #include "postproc/recovered_b3d.hpp"
 #include "postproc/section_flux3d.hpp"
 #include "solver/coil_source3d.hpp"
+#include "solver/current_sensitivity3d.hpp"
 #include "solver/dof_map3d.hpp"
 #include "solver/problem3d.hpp"
 
@@ -42,10 +43,11 @@ struct Run3D {
   std::vector<SectionFlux> sections; // parallel to spec.sections
   std::vector<ForceResult> forces;
   CoilResults coil_results;
-  // A distributed run: du/dI per coil (free DOFs), solved by all processes together right after
-  // the solve (the inductance matrix needs them; rank 0 alone post-processes), and the seconds
-  // that took. Empty otherwise: the post-processing solves for them.
-  std::vector<Eigen::VectorXd> coil_sensitivities;
+  // A distributed run: du/dI per coil (free DOFs) with their variational correction, solved by
+  // all processes together right after the solve (the inductance matrix needs them; rank 0
+  // alone post-processes), and the seconds that took. Empty otherwise: the post-processing
+  // solves for them.
+  CurrentSensitivities3D coil_sensitivities;
   double coil_sensitivity_s = 0;
   ErrorEstimate3D error_estimate;        // energy-norm indicator per tet and in all
   std::vector<std::string> warnings;     // pipeline/result_checks.hpp

@@ -38,33 +38,15 @@ CurrentSensitivities3D current_sensitivities_with_correction_3d(const Assembler3
   const Eigen::MatrixXd rhs = -assembler.current_derivatives(u);
   const Eigen::MatrixXd du = f->solver.solve_many(rhs);
   // Each column's true residual, for the variational correction (header).
-  const Eigen::MatrixXd residual = rhs - f->lower.selfadjointView<Eigen::Lower>() * du;
-  out.correction = du.transpose() * residual;
+  out.correction = variational_correction(du, rhs, f->lower.selfadjointView<Eigen::Lower>() * du);
   for (int j = 0; j < n_coils; ++j)
     out.du.push_back(du.col(j));
   return out;
 }
 
-std::vector<Eigen::VectorXd>
-current_sensitivities_3d(const NonlinearSystem& system,
-                         const std::function<Eigen::VectorXd(int coil)>& load_derivative,
-                         const Eigen::VectorXd& u, int n_coils, TangentSolver& solver) {
-  std::vector<Eigen::VectorXd> out;
-  if (n_coils == 0)
-    return out;
-  Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> k;
-  system.evaluate(u, r, &k, TangentKind::newton);
-  solver.factorize(k);
-  // All coils in one block solve, as above (without the main solve's operator or the
-  // correction: the distributed path).
-  Eigen::MatrixXd rhs(k.rows(), n_coils);
-  for (int j = 0; j < n_coils; ++j)
-    rhs.col(j) = -load_derivative(j);
-  const Eigen::MatrixXd du = solver.solve_many(rhs);
-  for (int j = 0; j < n_coils; ++j)
-    out.push_back(du.col(j));
-  return out;
+Eigen::MatrixXd variational_correction(const Eigen::MatrixXd& du, const Eigen::MatrixXd& rhs,
+                                       const Eigen::MatrixXd& k_du) {
+  return du.transpose() * (rhs - k_du);
 }
 
 } // namespace magfem

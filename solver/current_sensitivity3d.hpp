@@ -3,7 +3,6 @@
 // K du_j = -dr/dI_j with K the Newton tangent there. For linear problems du_j is the
 // potential of coil j alone at 1 A; for nonlinear iron it is the small-signal response, from
 // which the incremental (differential) inductance follows.
-#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,13 +18,6 @@ namespace magfem {
 std::vector<Eigen::VectorXd> current_sensitivities_3d(const Assembler3D& assembler,
                                                       const Eigen::VectorXd& u, int n_coils,
                                                       const LinearSolverOptions& options);
-// The same for any system and tangent solver: `load_derivative(j)` is dr/dI_j at u (a
-// distributed solve: DistributedSystem3D's, with DistributedLinearSolver).
-std::vector<Eigen::VectorXd>
-current_sensitivities_3d(const NonlinearSystem& system,
-                         const std::function<Eigen::VectorXd(int coil)>& load_derivative,
-                         const Eigen::VectorXd& u, int n_coils, TangentSolver& solver);
-
 struct CurrentSensitivities3D {
   std::vector<Eigen::VectorXd> du; // du/dI_j, free DOFs
   // n_coils x n_coils: du_i . (f_j - K du_j), f_j = -dr/dI_j: each solve's residual weighed
@@ -37,6 +29,11 @@ struct CurrentSensitivities3D {
   // pipeline/coil_run3d.cpp and tests/pipeline/test_inductance3d.cpp).
   Eigen::MatrixXd correction;
 };
+
+// The correction above from the solutions (columns du_j), the right-hand sides f_j and the
+// products K du_j.
+Eigen::MatrixXd variational_correction(const Eigen::MatrixXd& du, const Eigen::MatrixXd& rhs,
+                                       const Eigen::MatrixXd& k_du);
 
 // The same with the correction, and with `same_operator` (may be null): the main solve's
 // factorized matrix, used instead of assembling and setting up the tangent again when the

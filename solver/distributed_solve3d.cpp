@@ -6,6 +6,7 @@
 #include "solver/current_sensitivity3d.hpp"
 #include "solver/distributed_linear_solver.hpp"
 #include "solver/distributed_system3d.hpp"
+#include "solver/mpi_context.hpp"
 
 namespace magfem {
 namespace {
@@ -64,14 +65,30 @@ NewtonReport solve_distributed(const Assembler3D& share, int size, const NewtonO
   return report;
 }
 
-std::vector<Eigen::VectorXd> current_sensitivities_distributed(const Assembler3D& share, int size,
-                                                               const Eigen::VectorXd& u,
-                                                               int n_coils,
-                                                               const LinearSolverOptions& options) {
+CurrentSensitivities3D current_sensitivities_distributed(const Assembler3D& share, int size,
+                                                         const Eigen::VectorXd& u, int n_coils,
+                                                         const LinearSolverOptions& options) {
+  CurrentSensitivities3D out;
+  if (n_coils == 0)
+    return out;
   const DistributedSystem3D system(share);
   DistributedLinearSolver solver(options, size);
-  return current_sensitivities_3d(
-      system, [&](int coil) { return system.current_derivative(u, coil); }, u, n_coils, solver);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> part; // this process's part of the tangent
+  system.evaluate(u, r, &part, TangentKind::newton);
+  solver.factorize(part);
+  // All coils in one block solve (current_sensitivity3d.cpp).
+  Eigen::MatrixXd rhs(part.rows(), n_coils);
+  for (int j = 0; j < n_coils; ++j)
+    rhs.col(j) = -system.current_derivative(u, j);
+  const Eigen::MatrixXd du = solver.solve_many(rhs);
+  // The whole K du: each process's part's product, summed as the residuals are.
+  Eigen::MatrixXd k_du = part.selfadjointView<Eigen::Lower>() * du;
+  sum_on_every_rank(k_du.data(), static_cast<std::size_t>(k_du.size()));
+  out.correction = variational_correction(du, rhs, k_du);
+  for (int j = 0; j < n_coils; ++j)
+    out.du.push_back(du.col(j));
+  return out;
 }
 
 } // namespace magfem

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "solver/assembler3d.hpp"
+#include "solver/current_sensitivity3d.hpp"
 #include "solver/element_range.hpp"
 #include "solver/newton.hpp"
 
@@ -29,12 +30,11 @@ namespace magfem {
 NewtonReport solve_distributed(const Assembler3D& share, int size, const NewtonOptions& options,
                                Eigen::VectorXd& u);
 
-// Collective: du/dI_j for every coil j at the converged u (current_sensitivity3d.hpp), the
-// tangent assembled by shares, one preconditioner set-up for all coils; every process gets
-// them whole.
-std::vector<Eigen::VectorXd> current_sensitivities_distributed(const Assembler3D& share, int size,
-                                                               const Eigen::VectorXd& u,
-                                                               int n_coils,
-                                                               const LinearSolverOptions& options);
+// Collective: du/dI_j for every coil j at the converged u with the variational correction
+// (current_sensitivity3d.hpp), the tangent assembled by shares, one preconditioner set-up for
+// all coils, the products K du_j summed over the processes; every process gets them whole.
+CurrentSensitivities3D current_sensitivities_distributed(const Assembler3D& share, int size,
+                                                         const Eigen::VectorXd& u, int n_coils,
+                                                         const LinearSolverOptions& options);
 
 } // namespace magfem

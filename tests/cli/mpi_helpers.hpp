@@ -40,8 +40,11 @@ inline std::string mpirun_path() {
 
 // `mpirun -n <n> magfem <args>`, stdout and stderr together. Open MPI refuses to run as root
 // unless told twice: the option (1.x-4.x) and the environment (4.x and later) cover both. A
-// process left waiting for another would hang the test: `timeout` ends it (exit 124).
-inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 120) {
+// process left waiting for another would hang the test: `timeout` ends it (exit 124). The
+// default catches a hang, not slowness: it stays inside ctest's 600 s, and leaves room for a
+// machine whose cores builds share (CI saw an FE study that takes 15 s alone take over 120 s
+// under a load of 16).
+inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400) {
   std::string cmd = "timeout " + std::to_string(timeout_s) + " " + mpirun_path() + " -n " +
                     std::to_string(n) + " --oversubscribe ";
   if (geteuid() == 0) {

@@ -2,8 +2,9 @@
 // solve` against the serial run of the same case, for a coil over a permeable plate (the coil
 // source field evaluated per process, the inductance's sensitivity solve distributed) and a
 // magnet over a saturable steel plate (Newton with distributed residuals and tangents).
-// The energy, the coil's flux linkage and inductance agree to 1e-8 and every probe value to
-// 1e-6 of the largest |B|; a Newton that does not converge ends every process with exit 3 and
+// The energy and the coil's flux linkage agree to 1e-8, the inductance to 1e-6 (both runs'
+// sensitivity solves are loose and corrected), and every probe value to 1e-6 of the largest
+// |B|; a Newton that does not converge ends every process with exit 3 and
 // writes nothing.
 #include <gtest/gtest.h>
 
@@ -33,6 +34,12 @@ namespace {
 // share of the source load or of the matrix lost changes these by percents.
 constexpr double energy_tol = 1e-8;
 constexpr double probe_tol = 1e-6;
+// The inductance's sensitivity solves stop at 1e-5 in both runs (pmg serially, BoomerAMG
+// distributed) and the matrix takes the variational correction (current_sensitivity3d.hpp),
+// which leaves the product of two solve errors: 3.4e-7 of the largest entry serially against
+// solves to 1e-12 (test_inductance3d), 4.0e-7 between the two runs here. Without the
+// correction the distributed matrix is off by CG's own 1e-5.
+constexpr double inductance_tol = 1e-6;
 
 // `example` with `solver:` replaced (tolerances tight enough to compare runs), written to
 // `dir`.
@@ -57,7 +64,7 @@ double relative(double a, double b) {
 // The serial run of `args` (its outputs in dir/serial), then `mpirun -n <n>` of it (dir/ranks_n),
 // and every comparison: ranks, energy, each region's energy, coils' linkage and inductance,
 // probes.
-void expect_serial_field(const fs::path& dir, const std::string& args, int n, int timeout_s = 120) {
+void expect_serial_field(const fs::path& dir, const std::string& args, int n, int timeout_s = 400) {
   const fs::path serial_dir = dir / "serial", mpi_dir = dir / ("ranks_" + std::to_string(n));
   if (!fs::exists(serial_dir / "summary.json")) {
     const CliOutcome serial =
@@ -86,7 +93,7 @@ void expect_serial_field(const fs::path& dir, const std::string& args, int n, in
       const double l = relative(s["coils"][k]["flux_linkage_Wb"], m["coils"][k]["flux_linkage_Wb"]);
       const double ind = relative(s["coils"][k]["inductance_H"], m["coils"][k]["inductance_H"]);
       EXPECT_LE(l, energy_tol) << "linkage of coil " << k;
-      EXPECT_LE(ind, energy_tol) << "inductance of coil " << k;
+      EXPECT_LE(ind, inductance_tol) << "inductance of coil " << k;
       std::printf("coil %zu: linkage differs by %.2e, inductance by %.2e\n", k, l, ind);
     }
   }
