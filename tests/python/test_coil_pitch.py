@@ -25,7 +25,9 @@ CASE = os.path.join(SOURCE, "examples", "3d", "spherical_actuator_topology.yaml"
 ORIENTATIONS = "rx=0,20"
 PITCHES = "50:10:60"
 QUADRATURE = "1,3,2,32"
-TIMES = ("seconds", "table_seconds", "study_seconds")
+# What differs between two runs of the same study: times, and the provenance (the executable
+# and the module may be built at different commits).
+TIMES = ("seconds", "table_seconds", "study_seconds", "magfem_version", "git_commit")
 
 
 def cli(*args):

@@ -7,7 +7,8 @@ from Python it gives sweep.csv byte for byte as an uninterrupted run and as `mag
 That the resumed call takes the finished positions from the checkpoint (rather than solving
 all again, which would give the same bytes) is shown by a record altered on disk, whose
 value the resumed result carries. A resume on another case is refused with the command
-line's message, the checkpoint left as it was. A study resumes alike. Run by ctest
+line's message, the checkpoint left as it was. A study resumes alike, and `magfem validate
+--resume` continues a validation a Python call left. Run by ctest
 `python_resume` with MAGFEM_EXE and PYTHONPATH=build/python (~15 s)."""
 import json
 import os
@@ -188,6 +189,27 @@ class StudyResume(unittest.TestCase):
             f.write("\n".join([lines[0], json.dumps(entry)]) + "\n")
         resumed = magfem.study(case, checkpoint_dir=directory, resume=True, **self.ARGS)
         self.assertEqual(np.count_nonzero(resumed["torque_at_90deg_Nm"] == 4.25), 1)
+
+
+class ValidateResume(unittest.TestCase):
+    """validate's checkpoint is the command line's, identity and all: an entry finished by an
+    interrupted Python call is restored by `magfem validate --out DIR --resume`."""
+    ENTRY = "harwin.t1.paper.max_ratio_4"
+
+    def test_the_command_line_continues_a_python_run(self):
+        directory = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, directory)
+        with self.assertRaises(KeyboardInterrupt):
+            magfem.validate(entries=[self.ENTRY], jobs=1, checkpoint_dir=directory,
+                            progress=stop_after(1))
+        self.assertEqual([r["key"] for r in records(directory)], [self.ENTRY])
+        run = subprocess.run([EXE, "validate", "--only", self.ENTRY, "--jobs", "1", "--resume",
+                              "--out", directory], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn(self.ENTRY, run.stderr)
+        self.assertIn(" resumed", run.stderr)
+        self.assertFalse(os.path.exists(os.path.join(directory, CHECKPOINT)))
 
 
 if __name__ == "__main__":
