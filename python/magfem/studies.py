@@ -45,6 +45,12 @@ _CHECKPOINT_DOC = """
     from the beginning. The call removes the checkpoint once its result is complete."""
 
 
+def _document_checkpoint(function, item):
+    """Appends the checkpoint arguments' text to a study call's docstring (none under -OO)."""
+    if function.__doc__:
+        function.__doc__ += _CHECKPOINT_DOC % {"item": item}
+
+
 class _Table(dict):
     """A result table: a dict of numpy columns in the command line's CSV order."""
 
@@ -153,7 +159,7 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     return SweepResult(out["columns"], json.loads(out["summary"]))
 
 
-sweep.__doc__ += _CHECKPOINT_DOC % {"item": "position"}
+_document_checkpoint(sweep, "position")
 
 
 class StudyResult(_Table):
@@ -213,7 +219,7 @@ def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jo
     return StudyResult(out["columns"], json.loads(out["summary"]))
 
 
-study.__doc__ += _CHECKPOINT_DOC % {"item": "design"}
+_document_checkpoint(study, "design")
 
 
 class ActuatorResult:
@@ -394,4 +400,4 @@ def validate(tier="quick", entries=None, source=None, jobs=None, progress=None,
     return ValidationResult(json.loads(out))
 
 
-validate.__doc__ += _CHECKPOINT_DOC % {"item": "entry"}
+_document_checkpoint(validate, "entry")
