@@ -205,11 +205,10 @@ int run_sweep_axi(const Args& args) {
   o.order = args.overrides.order;
   o.mesh_scale = args.overrides.mesh_scale;
   o.world = sweep_world(args);
-  const auto checkpoint = sweep_checkpoint(
-      o.world, args,
-      magfem::checkpoint_identity("sweep --move", args.case_file,
-                                  o.group + " order " + std::to_string(o.order) + " mesh-scale " +
-                                      magfem::RunCheckpoint::key_of(o.mesh_scale)));
+  const auto checkpoint =
+      sweep_checkpoint(o.world, args,
+                       magfem::checkpoint_identity("sweep --move", args.case_file,
+                                                   magfem::sweep_axi_checkpoint_options(o)));
   o.checkpoint = checkpoint.get();
   const bool quiet = args.quiet || !o.world.is_root();
   const auto rows =
@@ -292,12 +291,9 @@ int run_sweep(const Args& args) {
   o.world = sweep_world(args);
   const auto checkpoint = sweep_checkpoint(
       o.world, args,
-      magfem::checkpoint_identity(translate ? "sweep --move" : "sweep --rotate", args.case_file,
-                                  o.group + " axis " + args.axis + " point " + args.point +
-                                      " surface-radius " + args.surface_radius +
-                                      (o.analytic ? " analytic" : " fe") + " order " +
-                                      std::to_string(o.order) + " mesh-scale " +
-                                      magfem::RunCheckpoint::key_of(o.mesh_scale)));
+      magfem::checkpoint_identity(
+          translate ? "sweep --move" : "sweep --rotate", args.case_file,
+          magfem::sweep_checkpoint_options(o, args.axis, args.point, args.surface_radius)));
   o.checkpoint = checkpoint.get();
 
   magfem::SweepJobs jobs;

@@ -5,8 +5,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "pipeline/build_info.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/build_info.hpp"
 
 namespace magfem {
 
@@ -26,8 +26,13 @@ std::string checkpoint_identity(const std::string& command, const std::string& c
                                 const std::string& options) {
   std::stringstream text;
   text << std::ifstream(case_file, std::ios::binary).rdbuf();
+  return checkpoint_identity_of_text(command, text.str(), options);
+}
+
+std::string checkpoint_identity_of_text(const std::string& command, const std::string& case_text,
+                                        const std::string& options) {
   char hash[32];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(text.str())));
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(case_text)));
   return command + " " + options + " case " + hash + " commit " + magfem_git_commit();
 }
 

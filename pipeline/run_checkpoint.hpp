@@ -56,5 +56,9 @@ private:
 // Identity text of a run: the words given, plus the case file's contents hash and the commit.
 std::string checkpoint_identity(const std::string& command, const std::string& case_file,
                                 const std::string& options);
+// The same for a case given as its text (Python's Case.from_dict has no file): a file with
+// that text gives the same identity.
+std::string checkpoint_identity_of_text(const std::string& command, const std::string& case_text,
+                                        const std::string& options);
 
 } // namespace magfem

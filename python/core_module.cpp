@@ -10,6 +10,8 @@
 #include "core/input_error.hpp"
 #include "python/actuator.hpp"
 #include "python/analytic.hpp"
+#include "python/call_checkpoint.hpp"
+#include "python/coil_pitch.hpp"
 #include "python/optimize.hpp"
 #include "python/solution.hpp"
 #include "python/study.hpp"
@@ -72,9 +74,11 @@ PYBIND11_MODULE(_core, m) {
         "Reads and validates a case file; returns [(parameter, value), ...].");
   magfem::python::bind_solution(m);
   magfem::python::bind_analytic(m);
+  magfem::python::bind_checkpoint_request(m);
   magfem::python::bind_sweep(m);
   magfem::python::bind_study(m);
   magfem::python::bind_actuator(m);
+  magfem::python::bind_coil_pitch(m);
   magfem::python::bind_validate(m);
   magfem::python::bind_optimize(m);
 }

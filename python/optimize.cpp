@@ -1,6 +1,5 @@
 #include "python/optimize.hpp"
 
-#include <cstdio>
 #include <map>
 #include <string>
 #include <tuple>
@@ -13,6 +12,7 @@
 #include "core/input_error.hpp"
 #include "python/background_call.hpp"
 #include "python/case_source.hpp"
+#include "python/option_arguments.hpp"
 #include "studies/optimize.hpp"
 
 namespace py = pybind11;
@@ -37,12 +37,6 @@ struct OptimizeRequest {
   double mesh_scale = 1.0;
 };
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 // The command line's argument list for the request, so that parse_optimize_options checks
 // and reads it exactly as `magfem optimize` does.
 std::vector<std::string> optimize_args(const std::string& case_name, const OptimizeRequest& q) {
@@ -50,12 +44,12 @@ std::vector<std::string> optimize_args(const std::string& case_name, const Optim
                              q.maximize ? "--maximize" : "--minimize",
                              q.objective,
                              "--xtol",
-                             number(q.xtol),
+                             option_number(q.xtol),
                              "--mesh-scale",
-                             number(q.mesh_scale),
+                             option_number(q.mesh_scale),
                              "--quiet"};
   for (const auto& [name, lower, upper] : q.vary)
-    a.insert(a.end(), {"--vary", name + "=" + number(lower) + ":" + number(upper)});
+    a.insert(a.end(), {"--vary", name + "=" + option_number(lower) + ":" + option_number(upper)});
   if (!q.rotate.empty())
     a.insert(a.end(), {"--rotate", q.rotate});
   if (!q.axis.empty())
@@ -63,7 +57,7 @@ std::vector<std::string> optimize_args(const std::string& case_name, const Optim
   if (!q.angles.empty()) {
     std::string list;
     for (double v : q.angles)
-      list += (list.empty() ? "" : ",") + number(v);
+      list += (list.empty() ? "" : ",") + option_number(v);
     a.insert(a.end(), {"--angles", list});
   }
   for (const auto& c : q.constraints)
@@ -75,9 +69,9 @@ std::vector<std::string> optimize_args(const std::string& case_name, const Optim
   return a;
 }
 
-// An InputError of the option parser with the argument's Python name in place of the option
-// (the objective is study's --objective to the parser).
-InputError as_argument_error(const InputError& e, bool maximize) {
+// The parser's errors with the arguments' Python names (the objective is study's
+// --objective to the parser, and maximize or minimize here).
+InputError optimize_argument_error(const InputError& e, bool maximize) {
   static const std::map<std::string, std::string> names = {{"--vary", "vary"},
                                                            {"--xtol", "xtol"},
                                                            {"--constraint", "constraints"},
@@ -87,12 +81,10 @@ InputError as_argument_error(const InputError& e, bool maximize) {
                                                            {"--order", "order"},
                                                            {"--mesh-scale", "mesh_scale"}};
   const std::string sense = maximize ? "maximize" : "minimize";
-  if (e.file() != "<command line>")
-    return e;
-  if (e.field() == "--objective" || e.field() == "--maximize" || e.field() == "--minimize")
+  if (e.file() == "<command line>" &&
+      (e.field() == "--objective" || e.field() == "--maximize" || e.field() == "--minimize"))
     return InputError(where, 0, sense, e.reason());
-  const auto it = names.find(e.field());
-  return it == names.end() ? e : InputError(where, 0, it->second, e.reason());
+  return as_argument_error(e, where, names);
 }
 
 // An optimization run: its options (for the writers) and result.
@@ -142,7 +134,7 @@ OptimizeRun optimize_case(const std::string& path, const std::string& text, cons
   try {
     o = parse_optimize_options(optimize_args(path.empty() ? name : path, request));
   } catch (const InputError& e) {
-    throw as_argument_error(e, request.maximize);
+    throw optimize_argument_error(e, request.maximize);
   }
   // The case's own parameter overrides, under each evaluation's values.
   o.study.read = [&](const ParameterOverrides& design) {

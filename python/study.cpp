@@ -10,6 +10,7 @@
 
 #include "core/input_error.hpp"
 #include "python/background_call.hpp"
+#include "python/call_checkpoint.hpp"
 #include "python/case_source.hpp"
 #include "studies/study.hpp"
 
@@ -28,6 +29,7 @@ struct StudyRequest {
   bool analytic = true;
   int jobs = 0, order = 0;
   double mesh_scale = 0;
+  CheckpointRequest checkpoint;
 };
 
 StudyOptions study_options(const std::string& file, const StudyRequest& q) {
@@ -102,10 +104,16 @@ py::dict study_case(const std::string& path, const std::string& text, const std:
   };
   BackgroundCall call(std::move(progress), "design");
   o.sweep.stop = call.stop_token();
+  const auto checkpoint = open_call_checkpoint(
+      request.checkpoint, where,
+      case_call_identity("study", study_checkpoint_options(o), path, text, parameters));
   std::vector<StudyDesign> designs;
   call.run([&] {
-    designs = run_study(o, nullptr, [&](int done, int total) { call.report(done, total); });
+    designs =
+        run_study(o, checkpoint.get(), [&](int done, int total) { call.report(done, total); });
   });
+  if (checkpoint)
+    checkpoint->remove(); // the result is complete
   py::dict out;
   out["columns"] = study_columns(o, designs);
   out["summary"] = study_summary(o, designs).dump();
@@ -125,7 +133,8 @@ void bind_study(py::module_& m) {
       .def_readwrite("analytic", &StudyRequest::analytic)
       .def_readwrite("jobs", &StudyRequest::jobs)
       .def_readwrite("order", &StudyRequest::order)
-      .def_readwrite("mesh_scale", &StudyRequest::mesh_scale);
+      .def_readwrite("mesh_scale", &StudyRequest::mesh_scale)
+      .def_readwrite("checkpoint", &StudyRequest::checkpoint);
   m.def("study", &study_case, py::arg("path"), py::arg("text"), py::arg("name"),
         py::arg("parameters"), py::arg("request"), py::arg("progress"),
         "Runs `magfem study` in-process; returns {'columns': {name: array}, 'summary': json}.");

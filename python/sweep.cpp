@@ -12,7 +12,9 @@
 
 #include "core/input_error.hpp"
 #include "python/background_call.hpp"
+#include "python/call_checkpoint.hpp"
 #include "python/case_source.hpp"
+#include "python/option_arguments.hpp"
 #include "studies/sweep.hpp"
 #include "studies/sweep_axi.hpp"
 #include "studies/sweep_planar.hpp"
@@ -73,10 +75,19 @@ struct SweepRequest {
   std::optional<double> surface_radius;     // case length unit
   int jobs = 0, order = 0;
   double mesh_scale = 0;
+  CheckpointRequest checkpoint;
+};
+
+// The case a sweep runs on, as the call names it (for the checkpoint's identity).
+struct SweepCase {
+  const CaseSpec& spec;
+  const std::string &path, &text;
+  const std::map<std::string, double>& parameters;
 };
 
 // The axial sweep, as `magfem sweep CASE_AXI --move GROUP --axis z --positions ...` runs it.
-py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
+py::dict translate(const SweepCase& c, const SweepRequest& q, BackgroundCall& call) {
+  const CaseSpec& spec = c.spec;
   if (!q.axis.empty() && q.axis != "z")
     throw InputError(where, 0, "axis", "an axisymmetric group moves along z: give axis=\"z\"");
   // Arguments of the rotating sweeps: refused rather than ignored.
@@ -93,10 +104,17 @@ py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& 
   o.order = q.order;
   o.mesh_scale = q.mesh_scale;
   o.stop = call.stop_token();
+  const auto checkpoint =
+      open_call_checkpoint(q.checkpoint, where,
+                           case_call_identity("sweep --move", sweep_axi_checkpoint_options(o),
+                                              c.path, c.text, c.parameters));
+  o.checkpoint = checkpoint.get();
   std::vector<AxiSweepRow> rows;
   call.run([&] {
     rows = run_sweep_axi(spec, o, [&](int done, int total) { call.report(done, total); });
   });
+  if (checkpoint)
+    checkpoint->remove(); // the result is complete
   py::dict out;
   out["columns"] = translation_columns(rows);
   out["summary"] = sweep_axi_summary(spec, rows, o).dump();
@@ -105,7 +123,8 @@ py::dict translate(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& 
 
 // The rotating sweep (3D or planar) and the 3D or planar translate sweep, as `magfem sweep
 // --rotate GROUP ...` and `magfem sweep CASE --move GROUP ...` run them.
-py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, BackgroundCall& call) {
+py::dict rotate_or_move_3d(const SweepCase& c, const SweepRequest& q, BackgroundCall& call) {
+  const CaseSpec& spec = c.spec;
   const bool planar = spec.dimension == 2 && !spec.axisymmetric();
   const bool move = !q.translate.empty();
   SweepOptions o;
@@ -122,7 +141,8 @@ py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, Backgrou
   } else {
     o.angles_deg = q.values;
   }
-  o.axis = parse_axis(q.axis.empty() ? (planar ? "z" : "y") : q.axis, planar);
+  const std::string axis = q.axis.empty() ? (planar ? "z" : "y") : q.axis;
+  o.axis = parse_axis(axis, planar);
   const double s = spec.length_unit;
   if (q.point) {
     if (q.point->size() != 3)
@@ -136,12 +156,26 @@ py::dict rotate_or_move_3d(const CaseSpec& spec, const SweepRequest& q, Backgrou
   o.order = q.order;
   o.mesh_scale = q.mesh_scale;
   o.stop = call.stop_token();
+  // The point and the surface radius as the command line's text would give them.
+  std::string point, radius;
+  for (std::size_t k = 0; q.point && k < q.point->size(); ++k)
+    point.append(k ? "," : "").append(option_number((*q.point)[k]));
+  if (q.surface_radius)
+    radius = option_number(*q.surface_radius);
+  const auto checkpoint =
+      open_call_checkpoint(q.checkpoint, where,
+                           case_call_identity(move ? "sweep --move" : "sweep --rotate",
+                                              sweep_checkpoint_options(o, axis, point, radius),
+                                              c.path, c.text, c.parameters));
+  o.checkpoint = checkpoint.get();
   SweepJobs jobs;
   std::vector<SweepRow> rows;
   call.run([&] {
     const auto report = [&](int done, int total) { call.report(done, total); };
     rows = planar ? run_sweep_planar(spec, o, report, &jobs) : run_sweep(spec, o, report, &jobs);
   });
+  if (checkpoint)
+    checkpoint->remove(); // the result is complete
   py::dict out;
   out["columns"] = rotation_columns(rows, o.motion);
   out["summary"] = sweep_summary(spec.file, rows, o, jobs).dump();
@@ -165,8 +199,9 @@ py::dict sweep_case(const std::string& path, const std::string& text, const std:
     throw InputError(where, 0, "mesh_scale", "must be a positive number");
   const CaseSpec spec = read_python_case(path, text, name, parameters);
   BackgroundCall call(std::move(progress));
-  return request.translate.empty() || !spec.axisymmetric() ? rotate_or_move_3d(spec, request, call)
-                                                           : translate(spec, request, call);
+  const SweepCase c{spec, path, text, parameters};
+  return request.translate.empty() || !spec.axisymmetric() ? rotate_or_move_3d(c, request, call)
+                                                           : translate(c, request, call);
 }
 
 } // namespace
@@ -183,7 +218,8 @@ void bind_sweep(py::module_& m) {
       .def_readwrite("surface_radius", &SweepRequest::surface_radius)
       .def_readwrite("jobs", &SweepRequest::jobs)
       .def_readwrite("order", &SweepRequest::order)
-      .def_readwrite("mesh_scale", &SweepRequest::mesh_scale);
+      .def_readwrite("mesh_scale", &SweepRequest::mesh_scale)
+      .def_readwrite("checkpoint", &SweepRequest::checkpoint);
   m.def("sweep", &sweep_case, py::arg("path"), py::arg("text"), py::arg("name"),
         py::arg("parameters"), py::arg("request"), py::arg("progress"),
         "Runs `magfem sweep` in-process; returns {'columns': {name: array}, 'summary': json}.");

@@ -7,6 +7,7 @@
 
 #include "core/input_error.hpp"
 #include "python/background_call.hpp"
+#include "python/call_checkpoint.hpp"
 #include "validation/validate.hpp"
 #include "validation/validate_report.hpp"
 
@@ -17,7 +18,7 @@ namespace {
 
 std::string validate_entries(const std::string& tier, const std::vector<std::string>& entries,
                              const std::string& source, int jobs, const std::string& catalogue,
-                             py::object progress) {
+                             const CheckpointRequest& checkpoint_request, py::object progress) {
   ValidateOptions o;
   if (tier != "quick" && tier != "full")
     throw InputError("<validate>", 0, "tier", "must be 'quick' or 'full', not '" + tier + "'");
@@ -31,13 +32,20 @@ std::string validate_entries(const std::string& tier, const std::vector<std::str
   o.jobs = jobs;
   o.catalogue = catalogue;
   ValidationRun run = select_validation(o);
+  // The command line's checkpoint, identity and all: a Python call and `magfem validate
+  // --out DIR --resume` continue each other's runs.
+  const auto checkpoint =
+      open_call_checkpoint(checkpoint_request, "<validate>", validation_checkpoint_identity(run));
   BackgroundCall call(std::move(progress), "entry");
   const auto total = static_cast<int>(run.results.size());
   call.run([&] {
     evaluate_validation(
-        run, nullptr, [&](const EntryResult&, int done, double, bool) { call.report(done, total); },
+        run, checkpoint.get(),
+        [&](const EntryResult&, int done, double, bool) { call.report(done, total); },
         call.stop_token());
   });
+  if (checkpoint)
+    checkpoint->remove(); // the result is complete
   return validation_json(run);
 }
 
@@ -45,7 +53,7 @@ std::string validate_entries(const std::string& tier, const std::vector<std::str
 
 void bind_validate(py::module_& m) {
   m.def("validate", &validate_entries, py::arg("tier"), py::arg("entries"), py::arg("source"),
-        py::arg("jobs"), py::arg("catalogue"), py::arg("progress"),
+        py::arg("jobs"), py::arg("catalogue"), py::arg("checkpoint"), py::arg("progress"),
         "Runs `magfem validate` in-process; returns results.json's text.");
 }
 

@@ -408,19 +408,6 @@ Eigen::Vector3d parse_demanded_torque(const std::string& option, const std::stri
   return v;
 }
 
-CoilRule parse_coil_rule(const std::string& option, const std::string& text) {
-  const auto parts = split(text, ',');
-  int n[4] = {0, 0, 0, 0};
-  for (std::size_t k = 0; k < parts.size() && k < 4; ++k)
-    n[k] = static_cast<int>(parse_cli_number(option, parts[k]));
-  if (parts.size() != 4 || n[0] < 1 || n[1] < 1 || n[2] < 1 || n[3] < 4 || n[0] > 64 || n[1] > 64)
-    throw InputError(cli, 0, option,
-                     "expected N_R,N_ALPHA,ALPHA_PANELS,N_AZIMUTH (Gauss orders 1..64, at "
-                     "least 4 azimuths), got '" +
-                         text + "'");
-  return {n[0], n[1], n[2], n[3]};
-}
-
 const OptionTable<ActuatorOptions>& actuator_option_table() {
   using O = ActuatorOptions;
   using S = const std::string&;
@@ -446,6 +433,19 @@ const OptionTable<ActuatorOptions>& actuator_option_table() {
 }
 
 } // namespace
+
+CoilRule parse_coil_rule(const std::string& option, const std::string& text) {
+  const auto parts = split(text, ',');
+  int n[4] = {0, 0, 0, 0};
+  for (std::size_t k = 0; k < parts.size() && k < 4; ++k)
+    n[k] = static_cast<int>(parse_cli_number(option, parts[k]));
+  if (parts.size() != 4 || n[0] < 1 || n[1] < 1 || n[2] < 1 || n[3] < 4 || n[0] > 64 || n[1] > 64)
+    throw InputError(cli, 0, option,
+                     "expected N_R,N_ALPHA,ALPHA_PANELS,N_AZIMUTH (Gauss orders 1..64, at "
+                     "least 4 azimuths), got '" +
+                         text + "'");
+  return {n[0], n[1], n[2], n[3]};
+}
 
 std::vector<OptionInfo> actuator_option_infos() {
   return actuator_option_table().options();

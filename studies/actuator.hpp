@@ -83,6 +83,9 @@ struct ActuatorOptions {
   MpiWorld world{};
 };
 
+// --coil-quadrature's "N_R,N_ALPHA,ALPHA_PANELS,N_AZIMUTH"; throws InputError naming `option`.
+CoilRule parse_coil_rule(const std::string& option, const std::string& text);
+
 // Parses the arguments after `actuator`; throws InputError naming the option.
 // The command's options, one table (also what `magfem help actuator` and the completion offer).
 std::vector<OptionInfo> actuator_option_infos();

@@ -14,12 +14,12 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
-#include "studies/actuator_plot.hpp"
-#include "pipeline/build_info.hpp"
-#include "studies/sweep.hpp"
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
+#include "pipeline/build_info.hpp"
+#include "studies/actuator_plot.hpp"
+#include "studies/sweep.hpp"
 
 namespace magfem {
 namespace {
@@ -189,8 +189,7 @@ std::string coil_pitch_csv(const CoilPitchStudy& study) {
   return s;
 }
 
-int run_coil_pitch_command(const ActuatorOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+std::vector<double> coil_pitch_degrees(const ActuatorOptions& options) {
   if (!options.analytic)
     throw InputError(cli, 0, "--coil-pitch",
                      "the coil-pitch study uses the charge model: add --analytic");
@@ -200,15 +199,11 @@ int run_coil_pitch_command(const ActuatorOptions& options) {
                      "sec. 5.3.3); leave out --torque");
   if (options.verify)
     throw InputError(cli, 0, "--verify", "not available with --coil-pitch");
-  const std::vector<double> pitches = parse_angle_list(options.coil_pitch, "--coil-pitch");
-  const std::vector<Orientation> orientations = parse_orientations(options.orientations);
-  const CaseSpec spec = read_case(options.case_file, options.parameters);
-  check_actuator_case(spec, options.rotor);
-  const CoilPitchStudy study = run_coil_pitch_study(spec, options, pitches, orientations);
+  return parse_angle_list(options.coil_pitch, "--coil-pitch");
+}
 
-  std::filesystem::create_directories(options.out_dir);
-  OutputStage stage(options.out_dir);
-  stage.write_text("coil_pitch.csv", coil_pitch_csv(study));
+nlohmann::ordered_json coil_pitch_summary(const ActuatorOptions& options,
+                                          const CoilPitchStudy& study) {
   const CoilPitchRow& best = study.minimum();
   nlohmann::ordered_json j;
   j["command"] = "actuator --coil-pitch";
@@ -218,7 +213,7 @@ int run_coil_pitch_command(const ActuatorOptions& options) {
   j["method"] = "charge_model";
   j["rotor"] = options.rotor;
   j["parameters"] = options.parameters;
-  j["n_orientations"] = orientations.size();
+  j["n_orientations"] = study.n_orientations;
   j["torque_Nm"] = 1.0;
   j["table_step_deg"] = study.table_step_deg;
   j["table_points"] = study.table_points;
@@ -231,6 +226,22 @@ int run_coil_pitch_command(const ActuatorOptions& options) {
                   {"P_y_W", best.P_W[1]},
                   {"P_z_W", best.P_W[2]}};
   j["notes"] = study.notes;
+  return j;
+}
+
+int run_coil_pitch_command(const ActuatorOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<double> pitches = coil_pitch_degrees(options);
+  const std::vector<Orientation> orientations = parse_orientations(options.orientations);
+  const CaseSpec spec = read_case(options.case_file, options.parameters);
+  check_actuator_case(spec, options.rotor);
+  const CoilPitchStudy study = run_coil_pitch_study(spec, options, pitches, orientations);
+
+  std::filesystem::create_directories(options.out_dir);
+  OutputStage stage(options.out_dir);
+  stage.write_text("coil_pitch.csv", coil_pitch_csv(study));
+  const CoilPitchRow& best = study.minimum();
+  nlohmann::ordered_json j = coil_pitch_summary(options, study);
   std::string why;
   const auto scratch = std::filesystem::temp_directory_path() /
                        ("magfem_coil_pitch_" + std::to_string(::getpid()) + ".png");

@@ -27,9 +27,11 @@
 #include <string>
 #include <vector>
 
-#include "studies/actuator.hpp"
+#include <nlohmann/json.hpp>
+
 #include "analytic/radial_field_table.hpp"
 #include "mesh/coil3d.hpp"
+#include "studies/actuator.hpp"
 
 namespace magfem {
 
@@ -74,6 +76,16 @@ CoilPitchStudy run_coil_pitch_study(const CaseSpec& spec, const ActuatorOptions&
 
 // coil_pitch.csv: coil_pitch_deg,n_coils,G_w_deg,C_w_deg,P_x_W,P_y_W,P_z_W,P_mean_W,n_ill
 std::string coil_pitch_csv(const CoilPitchStudy& study);
+
+// The pitches (degrees) of the --coil-pitch options, after the checks the command makes of
+// them (the charge model, no --torque, no --verify, the pitch list): InputError naming the
+// option (exit 2).
+std::vector<double> coil_pitch_degrees(const ActuatorOptions& options);
+
+// summary.json of the study but its wall time ("seconds", which the command adds): the case,
+// the rotor, the table and the pitch of least mean loss.
+nlohmann::ordered_json coil_pitch_summary(const ActuatorOptions& options,
+                                          const CoilPitchStudy& study);
 
 // The command's --coil-pitch branch: coil_pitch.csv, coil_pitch.png and summary.json in
 // options.out_dir. Returns the exit code.

@@ -267,6 +267,10 @@ std::optional<StudyDesign> design_from_json(const nlohmann::json& j,
 } // namespace
 
 std::string study_checkpoint_identity(const StudyOptions& o) {
+  return checkpoint_identity("study", o.case_file, study_checkpoint_options(o));
+}
+
+std::string study_checkpoint_options(const StudyOptions& o) {
   const auto exact = [](double v) { return RunCheckpoint::key_of(v); };
   std::string text;
   for (const auto& p : o.parameters) {
@@ -284,7 +288,7 @@ std::string study_checkpoint_identity(const StudyOptions& o) {
   text += o.sweep.analytic ? " analytic tolerance " + exact(o.sweep.analytic_tolerance)
                            : " fe order " + std::to_string(o.sweep.order) + " mesh-scale " +
                                  exact(o.sweep.mesh_scale);
-  return checkpoint_identity("study", o.case_file, text);
+  return text;
 }
 
 std::vector<StudyDesign> run_study(const StudyOptions& options, RunCheckpoint* checkpoint,

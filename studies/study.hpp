@@ -100,6 +100,9 @@ run_study(const StudyOptions& options, RunCheckpoint* checkpoint = nullptr,
 // The identity line of a study's checkpoint: the case file's hash, the commit and every
 // option that changes a result (values with 17 significant digits; not --jobs, --quiet).
 std::string study_checkpoint_identity(const StudyOptions& options);
+// Its options part (no case, no commit), for a caller that names the case otherwise (Python's
+// cases given as text, or with parameter overrides under the grid).
+std::string study_checkpoint_options(const StudyOptions& options);
 
 // study.csv: the parameter names, then the objective names; successful designs only.
 std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs);

@@ -362,6 +362,13 @@ CaseSpec move_group(const CaseSpec& spec, const SweepOptions& o, double position
   return translate_group(spec, o.group, 1e-3 * position * o.axis.normalized());
 }
 
+std::string sweep_checkpoint_options(const SweepOptions& o, const std::string& axis,
+                                     const std::string& point, const std::string& surface_radius) {
+  return o.group + " axis " + axis + " point " + point + " surface-radius " + surface_radius +
+         (o.analytic ? " analytic" : " fe") + " order " + std::to_string(o.order) + " mesh-scale " +
+         RunCheckpoint::key_of(o.mesh_scale);
+}
+
 std::string sweep_position_key(SweepMotion motion) {
   return motion == SweepMotion::rotate ? "angle_deg" : "position_mm";
 }

@@ -133,6 +133,12 @@ struct SweepJobs {
   double memory_limit_mb = 0;    // the limit they share (0: not estimated)
 };
 
+// The options part of a sweep's checkpoint identity (pipeline/run_checkpoint.hpp): the group,
+// the axis, point and surface radius as the caller was given them (text), the method, order
+// and mesh scale. The command line and Python share it, so that each resumes the other's.
+std::string sweep_checkpoint_options(const SweepOptions& o, const std::string& axis,
+                                     const std::string& point, const std::string& surface_radius);
+
 // A finished row as the checkpoint keeps it (every field, doubles exactly), and back; shared
 // by the 3D and planar sweeps.
 nlohmann::json sweep_row_to_json(const SweepRow& row);

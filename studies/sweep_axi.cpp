@@ -128,6 +128,11 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
       o.stop);
 }
 
+std::string sweep_axi_checkpoint_options(const AxiSweepOptions& o) {
+  return o.group + " order " + std::to_string(o.order) + " mesh-scale " +
+         RunCheckpoint::key_of(o.mesh_scale);
+}
+
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {
   std::string out = "position_mm,Fz_N\n";
   char buf[128];

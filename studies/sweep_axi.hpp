@@ -64,6 +64,9 @@ using AxiSweepProgress = std::function<void(int done, int total)>;
 std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptions& options,
                                        const AxiSweepProgress& progress = {});
 
+// The options part of an axial sweep's checkpoint identity (as sweep_checkpoint_options).
+std::string sweep_axi_checkpoint_options(const AxiSweepOptions& o);
+
 // sweep.csv: position_mm,Fz_N (successful positions, in the given order).
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows);
 

@@ -256,20 +256,22 @@ void evaluate_validation(ValidationRun& run, RunCheckpoint* checkpoint,
   run.wall_seconds = since(t_start);
 }
 
+std::string validation_checkpoint_identity(const ValidationRun& run) {
+  const ValidateOptions& o = run.options;
+  std::string selection = "tier=" + to_string(o.tier) + " source=" + o.source + " only=";
+  for (const auto& id : o.only)
+    selection += id + ",";
+  return checkpoint_identity("validate", run.catalogue_file, selection);
+}
+
 int run_validate(const ValidateOptions& options) {
   ValidationRun run = select_validation(options);
   // Finished entries go to a checkpoint as they finish, so that an interrupted run continues
-  // with --resume (failed entries are evaluated again).
-  std::string selection =
-      "tier=" + to_string(options.tier) + " source=" + options.source + " only=";
-  for (const auto& id : options.only)
-    selection += id + ",";
-  // Under mpirun rank 0 alone keeps it (the other processes send it their entries).
+  // with --resume (failed entries are evaluated again). Under mpirun rank 0 alone keeps it
+  // (the other processes send it their entries).
   std::optional<RunCheckpoint> checkpoint;
   if (options.world.is_root())
-    checkpoint.emplace(options.out_dir,
-                       checkpoint_identity("validate", run.catalogue_file, selection),
-                       options.resume);
+    checkpoint.emplace(options.out_dir, validation_checkpoint_identity(run), options.resume);
   evaluate_validation(run, checkpoint ? &*checkpoint : nullptr,
                       [&](const EntryResult& r, int done, double elapsed_s, bool resumed) {
                         std::fprintf(stderr, "[%3d/%zu] %-8s %-44s %7.1f s  (elapsed %6.1f s)%s\n",

@@ -60,6 +60,10 @@ std::vector<OptionInfo> validate_option_infos();
 // jobs settled); throws InputError for bad input (unknown id, bad catalogue).
 ValidationRun select_validation(const ValidateOptions& options);
 
+// The identity of a selection's checkpoint (pipeline/run_checkpoint.hpp): the tier, the
+// selection, the catalogue file's hash and the commit; shared by the command and Python.
+std::string validation_checkpoint_identity(const ValidationRun& run);
+
 // After each entry (serialized): the entry's result, how many are done, the seconds since the
 // evaluation started and whether the checkpoint had it.
 using ValidationProgress =

@@ -4,7 +4,10 @@ milliseconds, then (with --fe) a few angles by finite elements on a coarse mesh 
 The result is a dict of numpy columns named as the command line's sweep.csv.
 
   PYTHONPATH=build/python /usr/bin/python3 examples/python/compensator_sweep.py
-      [--fe 30,90] [--mesh-scale 2] [--plot torque.png]
+      [--fe 30,90] [--mesh-scale 2] [--checkpoint DIR] [--plot torque.png]
+
+With --checkpoint DIR the FE angles are kept in DIR as they finish: after Ctrl-C, the same
+command continues where it stopped (magfem.sweep's checkpoint_dir= and resume=True).
 """
 import argparse
 import os
@@ -22,6 +25,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--fe", help="angles (deg, comma-separated) to check by FE")
     parser.add_argument("--mesh-scale", type=float, default=2.0, help="FE mesh coarseness")
+    parser.add_argument("--checkpoint", help="keep finished FE angles in this directory and "
+                        "continue from what it holds")
     parser.add_argument("--plot", help="write a PNG of the curve (needs matplotlib)")
     args = parser.parse_args()
 
@@ -41,7 +46,8 @@ def main():
         angles = [float(a) for a in args.fe.split(",")]
         t0 = time.perf_counter()
         fe = magfem.sweep(case, rotate="outer", axis="y", angles=angles,
-                          mesh_scale=args.mesh_scale, progress=True)
+                          mesh_scale=args.mesh_scale, progress=True,
+                          checkpoint_dir=args.checkpoint, resume=args.checkpoint is not None)
         print("FE (Maxwell stress on a sphere in the gap), %.1f s:" % (time.perf_counter() - t0))
         for angle, ty in zip(fe["angle_deg"], fe["Ty"]):
             exact = np.interp(angle, curve["angle_deg"], curve["Ty"])

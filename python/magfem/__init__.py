@@ -3,8 +3,9 @@
 So far: ``__version__``, ``Case`` (load, from_dict, with_params, to_yaml: the case read and
 validated by the same reader as ``magfem solve``), ``Case.solve`` returning a ``Solution``
 (the same in-process pipeline as ``magfem solve``), ``analytic``, ``sweep`` (``magfem sweep``
-in-process, numpy columns), ``study``, ``optimize``, ``actuator``, ``validate`` and the
-exception types.
+in-process, numpy columns), ``study``, ``optimize``, ``actuator``, ``coil_pitch``,
+``validate`` and the exception types; sweep, study and validate keep the command line's
+checkpoint and resume from it (``checkpoint_dir=``, ``resume=True``).
 """
 import contextlib
 import numbers
@@ -15,8 +16,8 @@ from . import _core
 from ._core import __version__
 from .optimize import OptimizeResult, optimize
 from .solution import AnalyticSolution, Mesh, Solution
-from .studies import (ActuatorResult, StudyResult, SweepResult, ValidationResult, actuator,
-                      study, sweep, validate)
+from .studies import (ActuatorResult, CoilPitchResult, StudyResult, SweepResult,
+                      ValidationResult, actuator, coil_pitch, study, sweep, validate)
 
 # The compiled reader raises this (a ValueError carrying file, line, field).
 InputError = _core._InputError
@@ -156,6 +157,6 @@ def analytic(case, model="charge", tolerance=1e-6, n_max=150):
 
 
 __all__ = ["__version__", "ActuatorResult", "AdaptWarning", "AnalyticSolution", "Case",
-           "InputError", "Mesh", "OptimizeResult", "Solution", "SolveError", "StudyResult",
-           "SweepResult", "ValidationResult", "actuator", "analytic", "optimize", "study",
-           "sweep", "validate"]
+           "CoilPitchResult", "InputError", "Mesh", "OptimizeResult", "Solution", "SolveError",
+           "StudyResult", "SweepResult", "ValidationResult", "actuator", "analytic",
+           "coil_pitch", "optimize", "study", "sweep", "validate"]

@@ -1,6 +1,7 @@
 """magfem.sweep (and the other studies): the command line's studies in-process, their tables
 as numpy columns (the compiled part is _core.sweep)."""
 import json
+import os
 
 import numpy as np
 
@@ -21,6 +22,33 @@ def _count(name, value):
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
         raise _argument_error(name, "must be a positive integer, not %r" % (value,))
     return int(value)
+
+
+def _checkpoint(checkpoint_dir, resume):
+    """The checkpoint_dir and resume arguments for the compiled call."""
+    request = _core.CheckpointRequest()
+    if checkpoint_dir is not None:
+        request.dir = os.fspath(checkpoint_dir)
+    request.resume = bool(resume)
+    return request
+
+
+_CHECKPOINT_DOC = """
+    ``checkpoint_dir``, ``resume`` (as the command line's ``--out DIR`` and ``--resume``):
+    with a directory, every finished %(item)s is kept in
+    ``checkpoint_dir/.magfem-checkpoint.jsonl`` as it finishes (the command line's file;
+    nothing else is written there). A call stopped by Ctrl-C, an exception of ``progress``,
+    kill or a crash leaves it; the same call with ``resume=True`` restores those %(item)ss
+    and runs the rest (failed ones again), giving the same table to the last bit. A
+    checkpoint of another case, other parameter overrides or other options is refused
+    (InputError, field ``resume``, the command line's message); without one, resume starts
+    from the beginning. The call removes the checkpoint once its result is complete."""
+
+
+def _document_checkpoint(function, item):
+    """Appends the checkpoint arguments' text to a study call's docstring (none under -OO)."""
+    if function.__doc__:
+        function.__doc__ += _CHECKPOINT_DOC % {"item": item}
 
 
 class _Table(dict):
@@ -75,7 +103,7 @@ def _axis_text(axis):
 
 def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, progress=None,
           *, translate=None, positions=None, point=None, surface_radius=None, order=None,
-          mesh_scale=1.0):
+          mesh_scale=1.0, checkpoint_dir=None, resume=False):
     """Runs ``magfem sweep`` on a Case in-process and returns a SweepResult (numpy columns).
 
     Rotating sweeps (3D and planar 2D cases): ``rotate`` names the group to turn, ``axis``
@@ -125,9 +153,13 @@ def sweep(case, rotate=None, axis=None, angles=None, analytic=False, jobs=None, 
     request.jobs = _count("jobs", jobs)
     request.order = _count("order", order)
     request.mesh_scale = float(mesh_scale)
+    request.checkpoint = _checkpoint(checkpoint_dir, resume)
     out = _core.sweep(case._path or "", case._text or "", case._name or "", case._params,
                       request, progress)
     return SweepResult(out["columns"], json.loads(out["summary"]))
+
+
+_document_checkpoint(sweep, "position")
 
 
 class StudyResult(_Table):
@@ -152,7 +184,7 @@ class StudyResult(_Table):
 
 
 def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jobs=None,
-          progress=None, *, order=None, mesh_scale=1.0):
+          progress=None, *, order=None, mesh_scale=1.0, checkpoint_dir=None, resume=False):
     """Runs ``magfem study`` on a Case in-process and returns a StudyResult (numpy columns).
 
     ``params``: {name: values} over the case's parameters (values in the parameter's own
@@ -181,9 +213,13 @@ def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jo
     request.jobs = _count("jobs", jobs)
     request.order = _count("order", order)
     request.mesh_scale = float(mesh_scale)
+    request.checkpoint = _checkpoint(checkpoint_dir, resume)
     out = _core.study(case._path or "", case._text or "", case._name or "", case._params,
                       request, progress)
     return StudyResult(out["columns"], json.loads(out["summary"]))
+
+
+_document_checkpoint(study, "design")
 
 
 class ActuatorResult:
@@ -213,6 +249,15 @@ class ActuatorResult:
             self.method, len(self.orientations_deg), len(self.coils))
 
 
+def _orientation_rows(orientations, call):
+    """An n x 3 array of (rx, ry, rz) in degrees as a list of tuples."""
+    rows = np.asarray(orientations, dtype=float)
+    if rows.ndim != 2 or rows.shape[1] != 3:
+        raise _argument_error("orientations", "an n x 3 array of (rx, ry, rz) in degrees "
+                              "or the command line's text, not shape %s" % (rows.shape,), call)
+    return [tuple(float(x) for x in r) for r in rows]
+
+
 def actuator(case, rotor, orientations, analytic=True, torque=None, *, order=None,
              mesh_scale=1.0, progress=None):
     """Runs ``magfem actuator`` on a Case in-process; returns an ActuatorResult.
@@ -229,12 +274,7 @@ def actuator(case, rotor, orientations, analytic=True, torque=None, *, order=Non
     if isinstance(orientations, str):
         request.orientations_text = orientations
     else:
-        rows = np.asarray(orientations, dtype=float)
-        if rows.ndim != 2 or rows.shape[1] != 3:
-            raise _argument_error("orientations", "an n x 3 array of (rx, ry, rz) in degrees "
-                                  "or the command line's text, not shape %s" % (rows.shape,),
-                                  "<actuator>")
-        request.orientations = [tuple(float(x) for x in r) for r in rows]
+        request.orientations = _orientation_rows(orientations, "<actuator>")
     if torque is not None:
         t = np.asarray(torque, dtype=float).ravel()
         if t.size != 3:
@@ -245,6 +285,73 @@ def actuator(case, rotor, orientations, analytic=True, torque=None, *, order=Non
     request.mesh_scale = float(mesh_scale)
     return ActuatorResult(_core.actuator(case._path or "", case._text or "", case._name or "",
                                          case._params, request, progress))
+
+
+class CoilPitchResult(_Table):
+    """The coil-pitch study's table (returned by magfem.coil_pitch): a dict of numpy columns
+    named as the command line's coil_pitch.csv, one row per pitch: ``coil_pitch_deg``,
+    ``n_coils`` (int), ``G_w_deg``, ``C_w_deg`` (the coils' gap and width), ``P_x_W``,
+    ``P_y_W``, ``P_z_W`` (mean copper loss over the orientations for 1 N m about x, y, z),
+    ``P_mean_W`` (their average) and ``n_ill_x``, ``n_ill_y``, ``n_ill_z`` (int: orientations
+    left out, Gamma ill-conditioned).
+
+    ``summary``: summary.json as ``magfem actuator --coil-pitch`` writes it, but its wall time
+    ``seconds``; ``minimum`` (the row of least ``P_mean_W``: coil_pitch_deg, n_coils,
+    P_mean_W, P_x_W, P_y_W, P_z_W) and ``notes`` are taken from it. ``csv()`` is
+    coil_pitch.csv's text, byte for byte the command line's."""
+
+    def __init__(self, run):
+        super().__init__(run.columns())
+        self._csv = run.csv()
+        self.summary = json.loads(run.summary_json())
+        self.minimum = self.summary["minimum"]
+        self.notes = list(self.summary["notes"])
+
+    def csv(self):
+        """coil_pitch.csv's text, as the command line writes it (ten significant digits)."""
+        return self._csv
+
+    def __repr__(self):
+        return "<magfem.CoilPitchResult %d pitches: least P_mean %.4g W at %g deg>" % (
+            len(self["coil_pitch_deg"]), self.minimum["P_mean_W"],
+            self.minimum["coil_pitch_deg"])
+
+
+def coil_pitch(case, rotor, orientations, pitches, *, coil_quadrature=None):
+    """Runs the thesis's coil-pitch study (``magfem actuator --analytic --coil-pitch``,
+    sec. 5.3) on a Case in-process; returns a CoilPitchResult.
+
+    The case's coils are replaced, pitch by pitch, by the thesis's circular-coil array
+    (sized from the case's first coil); for each pitch, the mean copper loss over the
+    orientations of the minimum-loss currents for 1 N m about x, y and z, by the charge
+    model. ``rotor``: the rotor's group. ``orientations``: as in ``actuator`` (the command
+    line's --orientations text or an n x 3 array of (rx, ry, rz) in degrees). ``pitches``:
+    the command line's --coil-pitch text ("40:1:70", degrees) or a sequence of pitches in
+    degrees. ``coil_quadrature``: the rule over each coil, the command line's
+    --coil-quadrature (N_R, N_ALPHA, ALPHA_PANELS, N_AZIMUTH), four integers or their text
+    (None: 4, 3, 2, 32; the rotor's field is tabulated on N_R spheres, most of the time).
+    A function of its own rather than an argument of ``actuator``: its table (one
+    row per pitch) is not actuator's, and its demand (unit torques) and model (the charge
+    model) are fixed. The arguments are checked by the command line's own checks, with its
+    messages (field: the argument's name). The GIL is released meanwhile; the study is not
+    interrupted by Ctrl-C (it takes seconds). Raises InputError.
+    """
+    request = _core.CoilPitchRequest()
+    request.rotor = str(rotor)
+    if isinstance(pitches, str):
+        request.pitches = pitches
+    else:
+        values = np.asarray(pitches, dtype=float).ravel()
+        request.pitches = ",".join(repr(float(v)) for v in values)
+    if isinstance(orientations, str):
+        request.orientations_text = orientations
+    else:
+        request.orientations = _orientation_rows(orientations, "<coil_pitch>")
+    if coil_quadrature is not None:
+        request.coil_quadrature = (coil_quadrature if isinstance(coil_quadrature, str) else
+                                   ",".join(str(n) for n in coil_quadrature))
+    return CoilPitchResult(_core.coil_pitch(case._path or "", case._text or "",
+                                            case._name or "", case._params, request))
 
 
 class ValidationResult:
@@ -275,8 +382,8 @@ class ValidationResult:
 
 
 def validate(tier="quick", entries=None, source=None, jobs=None, progress=None,
-             catalogue=None):
-    """Runs ``magfem validate`` in-process (nothing written); returns a ValidationResult.
+             catalogue=None, *, checkpoint_dir=None, resume=False):
+    """Runs ``magfem validate`` in-process (no report written); returns a ValidationResult.
 
     ``tier``: "quick" or "full"; ``entries``: catalogue ids (as --only; None: all of the
     tier), or ``source``: a seed file prefix (as --source); ``jobs``: entries at once (None:
@@ -288,5 +395,9 @@ def validate(tier="quick", entries=None, source=None, jobs=None, progress=None,
     if isinstance(entries, str):
         entries = [entries]
     out = _core.validate(str(tier), [str(e) for e in entries or []], source or "",
-                         _count("jobs", jobs), str(catalogue or ""), progress)
+                         _count("jobs", jobs), str(catalogue or ""),
+                         _checkpoint(checkpoint_dir, resume), progress)
     return ValidationResult(json.loads(out))
+
+
+_document_checkpoint(validate, "entry")
