@@ -190,9 +190,9 @@ void check_plane(const CaseSpec& spec, const SymmetryPlane2D& plane) {
              " (" + current_rule + ")");
       if (axi && (reg.turns != 0) != (img.turns != 0))
         fail("its mirror image is region '" + img.name +
-             "', and only one of the two has "
-             "turns: a coil's image must be a coil too (turns and current), or neither may be "
-             "(current_density), for the pair's inductance matrix");
+             "', and only one of the two has turns: a coil's image must be a coil too (turns "
+             "and current), or neither may be (current_density), for the pair's inductance "
+             "matrix");
     }
   }
 }

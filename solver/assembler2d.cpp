@@ -36,27 +36,24 @@ std::vector<int> constrained_dofs(const Problem2D& problem, const DofMap2D& dofs
 
 bool problem_is_linear(const Problem2D& problem) {
   for (const auto& p : problem.parts)
-    if (p.material->is_nonlinear())
-      return false;
+    if (p.material->is_nonlinear()) return false;
   return !problem.air.material->is_nonlinear();
 }
 
 std::vector<int> number_equations(int n_dofs, const std::vector<int>& constrained, int& n_eqs) {
   std::vector<int> map(n_dofs, 0);
-  for (int d : constrained)
-    map[d] = -1;
+  for (int d : constrained) map[d] = -1;
   n_eqs = 0;
   for (int& m : map)
-    if (m == 0)
-      m = n_eqs++;
+    if (m == 0) m = n_eqs++;
   return map;
 }
 
 } // namespace
 
 Assembler2D::Assembler2D(const Problem2D& problem, const DofMap2D& dofs)
-    : problem_(problem),
-      dofs_(dofs), shell_{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius},
+    : problem_(problem), dofs_(dofs),
+      shell_{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius},
       dof_to_eq_(number_equations(dofs.n_dofs(), constrained_dofs(problem, dofs), n_eqs_)),
       element_eqs_([&] {
         std::vector<int> eqs(problem.mesh->n_triangles() * dofs.dofs_per_element());
@@ -65,15 +62,15 @@ Assembler2D::Assembler2D(const Problem2D& problem, const DofMap2D& dofs)
             eqs[t * dofs.dofs_per_element() + i] = dof_to_eq_[dofs.element_dofs(t)[i]];
         return eqs;
       }()),
-      linear_(problem_is_linear(problem)), pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
+      linear_(problem_is_linear(problem)),
+      pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
   load_norm_ = compute_load_norm();
 }
 
 Eigen::VectorXd Assembler2D::expand(const Eigen::VectorXd& u) const {
   Eigen::VectorXd a = Eigen::VectorXd::Zero(dofs_.n_dofs());
   for (int d = 0; d < dofs_.n_dofs(); ++d)
-    if (dof_to_eq_[d] >= 0)
-      a[d] = u[dof_to_eq_[d]];
+    if (dof_to_eq_[d] >= 0) a[d] = u[dof_to_eq_[d]];
   return a;
 }
 
@@ -103,15 +100,13 @@ void Assembler2D::element(std::size_t t, const Eigen::VectorXd& a_full, double* 
   const int degree = (in_shell || axi || mat.is_nonlinear()) ? 4 : std::max(2 * (order - 1), order);
 
   std::fill(re, re + n, 0.0);
-  if (want_matrix)
-    std::fill(ke, ke + n * n, 0.0);
+  if (want_matrix) std::fill(ke, ke + n * n, 0.0);
   std::array<Eigen::Vector2d, 6> grad, c;
   std::array<double, 6> val{};
   for (const auto& q : triangle_rule(degree)) {
     triangle_gradients(order, g, q.bary, grad.data());
     Eigen::Vector2d x = Eigen::Vector2d::Zero();
-    for (int k = 0; k < 3; ++k)
-      x += q.bary[k] * nodes[tri[k]];
+    for (int k = 0; k < 3; ++k) x += q.bary[k] * nodes[tri[k]];
     const double w = q.weight * g.area * measure_2d(problem_.symmetry, x);
     if (axi || has_source)
       triangle_values(order, q.bary, val.data());
@@ -133,22 +128,17 @@ void Assembler2D::element(std::size_t t, const Eigen::VectorXd& a_full, double* 
       continue;
     }
     Eigen::Vector2d b_eff = b;
-    if (mat.is_magnet())
-      b_eff -= mat.B_r * phys.magnetization.unit_at({x.x(), x.y(), 0}).head<2>();
+    if (mat.is_magnet()) b_eff -= mat.B_r * phys.magnetization.unit_at({x.x(), x.y(), 0}).head<2>();
     double nu = 0, dnu = 0;
     mat.reluctivity(b_eff.squaredNorm(), nu, dnu);
     const Eigen::Vector2d h = nu * b_eff;
-    for (int i = 0; i < n; ++i)
-      re[i] += w * (h.dot(c[i]) - phys.current_density * val[i]);
-    if (!want_matrix)
-      continue;
+    for (int i = 0; i < n; ++i) re[i] += w * (h.dot(c[i]) - phys.current_density * val[i]);
+    if (!want_matrix) continue;
     Eigen::Matrix2d d = nu * Eigen::Matrix2d::Identity();
-    if (kind == TangentKind::newton && dnu != 0)
-      d += 2 * dnu * b_eff * b_eff.transpose();
+    if (kind == TangentKind::newton && dnu != 0) d += 2 * dnu * b_eff * b_eff.transpose();
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector2d dc = d * c[i];
-      for (int j = 0; j < n; ++j)
-        ke[i * n + j] += w * dc.dot(c[j]);
+      for (int j = 0; j < n; ++j) ke[i * n + j] += w * dc.dot(c[j]);
     }
   }
 }
@@ -170,8 +160,7 @@ void Assembler2D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
 void Assembler2D::evaluate_full(const Eigen::VectorXd& a_full, Eigen::VectorXd& residual,
                                 Eigen::SparseMatrix<double>* matrix, TangentKind kind) const {
   residual = Eigen::VectorXd::Zero(n_eqs_);
-  if (matrix)
-    *matrix = pattern_.zero_matrix();
+  if (matrix) *matrix = pattern_.zero_matrix();
   const int n = dofs_.dofs_per_element();
   std::array<double, 6> re{};
   std::array<double, 36> ke{};
@@ -179,10 +168,8 @@ void Assembler2D::evaluate_full(const Eigen::VectorXd& a_full, Eigen::VectorXd& 
     element(t, a_full, re.data(), ke.data(), kind, matrix != nullptr);
     const int* eq = &element_eqs_[t * n];
     for (int i = 0; i < n; ++i)
-      if (eq[i] >= 0)
-        residual[eq[i]] += re[i];
-    if (matrix)
-      pattern_.add(*matrix, t, ke.data());
+      if (eq[i] >= 0) residual[eq[i]] += re[i];
+    if (matrix) pattern_.add(*matrix, t, ke.data());
   }
 }
 
