@@ -300,11 +300,13 @@ public:
                     "linkage / I = %.6g H (apparent)\n",
                     c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
       s += buf;
-      if (!c.mirror_image.empty())
-        s += "         " + c.name + " and " + c.mirror_image +
+    }
+    // Once per mirrored pair, after the coils.
+    for (std::size_t i = 0; i < run.coils.size(); ++i)
+      if (const auto& c = run.coils[i]; !c.mirror_image.empty() && c.name < c.mirror_image)
+        s += "pair     " + c.name + " and " + c.mirror_image +
              " are mirror images: the share drives both; their self and mutual inductance "
              "from a second solve with the plane's other condition\n";
-    }
     if (run.inductance_H.rows() > 1 && run.inductance_H.rows() <= 4)
       s += "L = dlambda/dI (H, differential):\n" + describe_inductance_matrix(run.inductance_H);
     return s;
