@@ -1,6 +1,7 @@
 #include "pipeline/coil_results_axi.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "casefile/symmetry_check2d.hpp"
 #include "pipeline/run2d.hpp"
@@ -62,8 +63,11 @@ void compute_coil_results_axi(Run2D& run, const Assembler2D& assembler, const Ei
     if (spec.regions[i].turns == 0 || has_elements[i])
       continue;
     // An image beyond the plane (check_symmetry_2d: its image is a meshed coil with turns).
-    const auto m = std::find_if(meshed.begin(), meshed.end(),
-                                [&](const auto& c) { return c.part == mirror.at(i); });
+    const auto m = std::find_if(meshed.begin(), meshed.end(), [&](const auto& c) {
+      return !mirror.empty() && c.part == mirror[i];
+    });
+    if (m == meshed.end()) // covered by later parts: as flux_linkage_axi says
+      throw std::invalid_argument("coil '" + spec.regions[i].name + "' has no element");
     whole.push_back({int(i), int(m - meshed.begin()), true, true});
   }
   std::stable_sort(whole.begin(), whole.end(),
