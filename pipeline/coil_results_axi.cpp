@@ -31,6 +31,44 @@ struct WholeCoil {
   bool pair = false;  // one of a mirrored pair (image or meshed)
 };
 
+// The whole device's coils in spec order, and the meshed ones with their loads per ampere.
+struct CoilLayout {
+  std::vector<WholeCoil> whole;
+  std::vector<CurrentPerAmpere2D> meshed;
+};
+
+CoilLayout coil_layout(const Run2D& run, const std::vector<int>& mirror) {
+  const CaseSpec& spec = run.spec;
+  std::vector<bool> has_elements(spec.regions.size(), false);
+  for (const int p : run.mesh.triangle_part)
+    if (p >= 0)
+      has_elements[std::size_t(p)] = true;
+  const auto areas = whole_part_areas(spec, run.mesh);
+  CoilLayout out;
+  for (std::size_t i = 0; i < spec.regions.size(); ++i) {
+    const RegionSpec& r = spec.regions[i];
+    if (r.turns == 0 || !has_elements[i])
+      continue;
+    const bool pair = !mirror.empty() && mirror[i] != int(i);
+    out.whole.push_back({int(i), int(out.meshed.size()), false, pair});
+    out.meshed.push_back({int(i), r.turns / areas[i]});
+  }
+  for (std::size_t i = 0; i < spec.regions.size(); ++i) {
+    if (spec.regions[i].turns == 0 || has_elements[i])
+      continue;
+    // An image beyond the plane (check_symmetry_2d: its image is a meshed coil with turns).
+    const auto m = std::find_if(out.meshed.begin(), out.meshed.end(), [&](const auto& c) {
+      return !mirror.empty() && c.part == mirror[i];
+    });
+    if (m == out.meshed.end()) // covered by later parts: as flux_linkage_axi says
+      throw std::invalid_argument("coil '" + spec.regions[i].name + "' has no element");
+    out.whole.push_back({int(i), int(m - out.meshed.begin()), true, true});
+  }
+  std::stable_sort(out.whole.begin(), out.whole.end(),
+                   [](const WholeCoil& a, const WholeCoil& b) { return a.region < b.region; });
+  return out;
+}
+
 } // namespace
 
 void compute_coil_results_axi(Run2D& run, const Assembler2D& assembler, const Eigen::VectorXd& u) {
@@ -43,35 +81,7 @@ void compute_coil_results_axi(Run2D& run, const Assembler2D& assembler, const Ei
   const auto& planes = spec.geometry2d.planes;
   const double s = !planes.empty() && planes[0].field == SymmetryField::parallel ? -1 : 1;
   const std::vector<int> mirror = planes.empty() ? std::vector<int>{} : mirror_parts_2d(spec)[0];
-  std::vector<bool> has_elements(spec.regions.size(), false);
-  for (const int p : run.mesh.triangle_part)
-    if (p >= 0)
-      has_elements[std::size_t(p)] = true;
-
-  const auto areas = whole_part_areas(spec, run.mesh);
-  std::vector<WholeCoil> whole;
-  std::vector<CurrentPerAmpere2D> meshed; // per meshed coil, its load per ampere
-  for (std::size_t i = 0; i < spec.regions.size(); ++i) {
-    const RegionSpec& r = spec.regions[i];
-    if (r.turns == 0 || !has_elements[i])
-      continue;
-    const bool pair = !mirror.empty() && mirror[i] != int(i);
-    whole.push_back({int(i), int(meshed.size()), false, pair});
-    meshed.push_back({int(i), r.turns / areas[i]});
-  }
-  for (std::size_t i = 0; i < spec.regions.size(); ++i) {
-    if (spec.regions[i].turns == 0 || has_elements[i])
-      continue;
-    // An image beyond the plane (check_symmetry_2d: its image is a meshed coil with turns).
-    const auto m = std::find_if(meshed.begin(), meshed.end(), [&](const auto& c) {
-      return !mirror.empty() && c.part == mirror[i];
-    });
-    if (m == meshed.end()) // covered by later parts: as flux_linkage_axi says
-      throw std::invalid_argument("coil '" + spec.regions[i].name + "' has no element");
-    whole.push_back({int(i), int(m - meshed.begin()), true, true});
-  }
-  std::stable_sort(whole.begin(), whole.end(),
-                   [](const WholeCoil& a, const WholeCoil& b) { return a.region < b.region; });
+  const auto [whole, meshed] = coil_layout(run, mirror);
 
   const LinearSolverOptions options = sensitivity_options(spec.newton.linear);
   // Per meshed coil, all-DOF sensitivities under the plane's own condition (symmetric: the
