@@ -188,11 +188,11 @@ void check_plane(const CaseSpec& spec, const SymmetryPlane2D& plane) {
              (q == int(i) ? " is not its own mirror image under this condition"
                           : " is not the mirror image of region '" + img.name + "''s") +
              " (" + current_rule + ")");
-      if (axi && reg.turns != 0 && q != int(i))
+      if (axi && (reg.turns != 0) != (img.turns != 0))
         fail("its mirror image is region '" + img.name +
-             "'; a coil with turns must be its own mirror image (its flux linkage and "
-             "inductance come from its share, and the share of a pair drives both coils at "
-             "once): give the pair as current_density, or leave the plane out");
+             "', and only one of the two has turns: a coil's image must be a coil too (turns "
+             "and current), or neither may be (current_density), for the pair's inductance "
+             "matrix");
     }
   }
 }

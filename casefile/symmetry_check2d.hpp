@@ -11,9 +11,10 @@
 //     `parallel`: a pair carrying the same current sits on a `normal` plane, a go-and-return
 //     (planar) or anti-Helmholtz (axisymmetric) pair on a `parallel` one; a uniform current
 //     region cut by the plane is its own image under `normal` only,
-//   - axisymmetric coils (regions with turns, whose linkage and inductance are reported) are
-//     their own images: the share of a coil pair would drive both coils at once, which is
-//     not either coil's inductance.
+//   - an axisymmetric coil (a region with turns, whose linkage and inductance are reported)
+//     is its own image or another coil's (turns and current too): the share of a pair drives
+//     both coils at once, and the pair's inductances need the second solve of
+//     pipeline/coil_results_axi.hpp, which only a coil image has turns for.
 // Parts are sampled at interior points (cell midpoints of a 12 x 12 grid over each part), so
 // a difference smaller than a twelfth of a part can pass unseen.
 #include <vector>

@@ -8,6 +8,7 @@
 
 #include "core/input_error.hpp"
 #include "mesh/grid_frame3d.hpp"
+#include "pipeline/inductance_matrix_output.hpp"
 #include "pipeline/run3d.hpp"
 #include "postproc/coil_linkage3d.hpp"
 #include "postproc/lorentz3d.hpp"
@@ -260,14 +261,7 @@ void add_coil_results_json(nlohmann::ordered_json& j, const CoilResults& results
     std::vector<std::string> names;
     for (const auto& c : results.coils)
       names.push_back(c.name);
-    nlohmann::ordered_json l = nlohmann::ordered_json::array();
-    for (Eigen::Index i = 0; i < results.inductance_H.rows(); ++i) {
-      std::vector<double> row;
-      for (Eigen::Index k = 0; k < results.inductance_H.cols(); ++k)
-        row.push_back(results.inductance_H(i, k));
-      l.push_back(row);
-    }
-    j["inductance_H"] = {{"names", names}, {"matrix", l}};
+    j["inductance_H"] = inductance_matrix_json(names, results.inductance_H);
   }
   j["coil_warnings"] = results.warnings;
 }
@@ -284,17 +278,9 @@ std::string describe_coils(const CoilResults& results) {
                   c.torque_Nm.y(), c.torque_Nm.z());
     s += buf;
   }
-  if (results.inductance_H.size() > 0 && results.inductance_H.rows() <= 4) {
+  if (results.inductance_H.size() > 0 && results.inductance_H.rows() <= 4)
     s += "L = dlambda/dI (H, differential; linkage / I, the apparent one, in summary.json):\n";
-    for (Eigen::Index i = 0; i < results.inductance_H.rows(); ++i) {
-      s += i == 0 ? "L (H)   " : "        ";
-      for (Eigen::Index j = 0; j < results.inductance_H.cols(); ++j) {
-        std::snprintf(buf, sizeof buf, " %12.6g", results.inductance_H(i, j));
-        s += buf;
-      }
-      s += "\n";
-    }
-  }
+  s += describe_inductance_matrix(results.inductance_H);
   for (const auto& w : results.warnings)
     s += "warning  " + w + "\n";
   return s;

@@ -1,5 +1,6 @@
 #include "pipeline/run2d.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -10,8 +11,10 @@
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesher2d.hpp"
+#include "pipeline/coil_results_axi.hpp"
 #include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force2d.hpp"
+#include "pipeline/inductance_matrix_output.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_case.hpp"
 #include "pipeline/run_report.hpp"
@@ -20,13 +23,11 @@
 #include "pipeline/solver_summary.hpp"
 #include "pipeline/symmetry2d.hpp"
 #include "pipeline/vtu_materials.hpp"
-#include "postproc/coil_linkage_axi.hpp"
 #include "postproc/point_locator2d.hpp"
 #include "postproc/probes2d.hpp"
 #include "postproc/vtu_export2d.hpp"
 #include "postproc/vtu_export_revolved.hpp"
 #include "solver/assembler2d.hpp"
-#include "solver/current_sensitivity2d.hpp"
 #include "solver/triangle_lagrange.hpp"
 
 namespace magfem {
@@ -60,56 +61,42 @@ Problem2D build_problem(const CaseSpec& spec, const Mesh2D& mesh) {
   return p;
 }
 
-// The sensitivity solves of the differential inductance stop at 1e-9 relative residual when
-// they are iterative (as in 3D, coil_run3d.cpp); direct solves are exact whatever it is.
-LinearSolverOptions sensitivity_options(LinearSolverOptions options) {
-  options.cg_tolerance = std::max(options.cg_tolerance, 1e-9);
-  // Part of post-processing: its factorization is no stage of its own on the console (it
-  // reported "factorization" after "post-processing").
-  options.progress = nullptr;
-  return options;
-}
-
-// Axisymmetric coils: the linkage with the total field (lambda / I is the apparent
-// inductance, which counts the magnets' flux) and the differential inductance d lambda / dI,
-// the linkage of the field's response to the coil's current at the operating point.
-std::vector<CoilResult2D> coil_results(const Run2D& run, const Assembler2D& assembler,
-                                       const Eigen::VectorXd& u) {
-  std::vector<CoilResult2D> out;
-  if (!run.spec.axisymmetric())
-    return out;
-  const auto areas = whole_part_areas(run.spec, run.mesh);
-  std::vector<CurrentPerAmpere2D> per_ampere;
-  for (std::size_t i = 0; i < run.spec.regions.size(); ++i) {
-    const RegionSpec& r = run.spec.regions[i];
-    if (r.turns == 0)
-      continue;
-    CoilResult2D c{r.name, r.turns, r.current};
-    c.flux_linkage_Wb = flux_linkage_axi(*run.field, static_cast<int>(i), r.turns);
-    c.linkage_per_ampere_H = r.current != 0 ? c.flux_linkage_Wb / r.current : 0.0;
-    out.push_back(c);
-    per_ampere.push_back({static_cast<int>(i), r.turns / areas[i]});
-  }
-  const auto du = current_sensitivities_2d(run.problem, *run.dofs, assembler, u, per_ampere,
-                                           sensitivity_options(run.spec.newton.linear));
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const Field2D response(run.problem, *run.dofs, assembler.expand(du[k]));
-    out[k].inductance_H = flux_linkage_axi(response, per_ampere[k].part, out[k].turns);
-  }
-  return out;
-}
-
 } // namespace
 
 nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils) {
   auto j = nlohmann::ordered_json::array();
-  for (const auto& c : coils)
+  for (const auto& c : coils) {
     j.push_back({{"name", c.name},
                  {"turns", c.turns},
                  {"current_A", c.current_A},
                  {"flux_linkage_Wb", c.flux_linkage_Wb},
                  {"inductance_H", c.inductance_H},
                  {"linkage_per_ampere_H", c.linkage_per_ampere_H}});
+    if (!c.mirror_image.empty())
+      j.back()["mirror_image"] = c.mirror_image;
+  }
+  return j;
+}
+
+nlohmann::ordered_json inductance_json_2d(const Run2D& run) {
+  std::vector<std::string> names;
+  for (const auto& c : run.coils)
+    names.push_back(c.name);
+  auto j = inductance_matrix_json(names, run.inductance_H);
+  // Entries between two coils of mirrored pairs came from the complementary solve
+  // (coil_results_axi.hpp); say which, when any did.
+  const auto paired = [&](std::size_t i) { return !run.coils[i].mirror_image.empty(); };
+  if (std::any_of(run.coils.begin(), run.coils.end(),
+                  [](const auto& c) { return !c.mirror_image.empty(); })) {
+    auto rows = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < run.coils.size(); ++i) {
+      auto row = nlohmann::ordered_json::array();
+      for (std::size_t k = 0; k < run.coils.size(); ++k)
+        row.push_back(paired(i) && paired(k));
+      rows.push_back(row);
+    }
+    j["complementary_solve"] = rows;
+  }
   return j;
 }
 
@@ -195,7 +182,7 @@ public:
   }
   std::vector<ForceResult> forces() const { return compute_forces_2d(run_); }
   void coil_results(const Assembler2D& assembler, const Eigen::VectorXd& u) const {
-    run_.coils = magfem::coil_results(run_, assembler, u);
+    compute_coil_results_axi(run_, assembler, u);
   }
   void estimate_error() const {
     run_.error = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
@@ -253,8 +240,10 @@ public:
     }
     if (!run.sections.empty())
       j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-    if (!run.coils.empty())
+    if (!run.coils.empty()) {
       j["coils"] = coils_json_2d(run.coils);
+      j["inductance_H"] = inductance_json_2d(run);
+    }
   }
   static void stage_vtu(OutputStage& stage, const Run2D& run, const VtuMaterials& materials) {
     VtuGrid grid =
@@ -312,6 +301,14 @@ public:
                     c.name.c_str(), c.flux_linkage_Wb, c.inductance_H, c.linkage_per_ampere_H);
       s += buf;
     }
+    // Once per mirrored pair, after the coils.
+    for (std::size_t i = 0; i < run.coils.size(); ++i)
+      if (const auto& c = run.coils[i]; !c.mirror_image.empty() && c.name < c.mirror_image)
+        s += "pair     " + c.name + " and " + c.mirror_image +
+             " are mirror images: the share drives both; their self and mutual inductance "
+             "from a second solve with the plane's other condition\n";
+    if (run.inductance_H.rows() > 1 && run.inductance_H.rows() <= 4)
+      s += "L = dlambda/dI (H, differential):\n" + describe_inductance_matrix(run.inductance_H);
     return s;
   }
   static std::string describe_time(const Run2D& run) {

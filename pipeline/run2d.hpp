@@ -57,9 +57,15 @@ struct CoilResult2D {
   double turns = 0, current_A = 0, flux_linkage_Wb = 0;
   double inductance_H = 0;         // d lambda / dI
   double linkage_per_ampere_H = 0; // lambda / I (0 at zero current)
+  // The other coil of a mirrored pair about the plane z = 0 (coil_results_axi.hpp), else empty.
+  std::string mirror_image;
 };
 // summary.json's "coils" (also the Python module's Solution.coils).
 nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils);
+struct Run2D;
+// summary.json's "inductance_H": the matrix and, when mirrored pairs are present, which
+// entries came from the complementary solve.
+nlohmann::ordered_json inductance_json_2d(const Run2D& run);
 
 struct Run2D {
   CaseSpec spec;
@@ -72,9 +78,10 @@ struct Run2D {
   ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
-  std::vector<SectionFlux> sections; // parallel to spec.sections (per energy_per)
-  std::vector<CoilResult2D> coils;   // axisymmetric only
-  std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  std::vector<SectionFlux> sections;     // parallel to spec.sections (per energy_per)
+  std::vector<CoilResult2D> coils;       // axisymmetric only
+  Eigen::MatrixXd inductance_H;          // d lambda / dI between run.coils (H), axisymmetric only
+  std::vector<std::string> warnings;     // pipeline/result_checks.hpp
   DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;
   std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)

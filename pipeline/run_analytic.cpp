@@ -15,6 +15,7 @@
 #include "pipeline/analytic_coils3d.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/coil_run3d.hpp"
+#include "pipeline/inductance_matrix_output.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "postproc/probe_rows3d.hpp"
 #include "postproc/probes3d.hpp"
@@ -205,16 +206,10 @@ nlohmann::ordered_json summary_json_analytic(const AnalyticRun& run) {
   if (!run.coils.empty())
     j["coils"] = analytic_coils_json(run);
   if (run.inductance_H.size() > 0) {
-    nlohmann::ordered_json names = nlohmann::ordered_json::array(),
-                           l = nlohmann::ordered_json::array();
-    for (Eigen::Index i = 0; i < run.inductance_H.rows(); ++i) {
+    std::vector<std::string> names;
+    for (Eigen::Index i = 0; i < run.inductance_H.rows(); ++i)
       names.push_back(run.coils[static_cast<std::size_t>(i)].name);
-      nlohmann::ordered_json row = nlohmann::ordered_json::array();
-      for (Eigen::Index k = 0; k < run.inductance_H.cols(); ++k)
-        row.push_back(run.inductance_H(i, k));
-      l.push_back(row);
-    }
-    j["inductance_H"] = {{"names", names}, {"matrix", l}};
+    j["inductance_H"] = inductance_matrix_json(names, run.inductance_H);
   }
   return j;
 }
@@ -269,14 +264,7 @@ std::string describe_analytic(const AnalyticRun& run) {
   }
   if (run.inductance_H.rows() > 0 && run.inductance_H.rows() <= 4)
     s += "L = dlambda/dI (H, differential):\n";
-  for (Eigen::Index i = 0; i < run.inductance_H.rows() && run.inductance_H.rows() <= 4; ++i) {
-    s += i == 0 ? "L (H)   " : "        ";
-    for (Eigen::Index k = 0; k < run.inductance_H.cols(); ++k) {
-      std::snprintf(buf, sizeof buf, " %12.6g", run.inductance_H(i, k));
-      s += buf;
-    }
-    s += "\n";
-  }
+  s += describe_inductance_matrix(run.inductance_H);
   for (const auto& n : run.scene.notes)
     s += "note     " + n + "\n";
   return s;

@@ -73,6 +73,11 @@ std::vector<double> whole_part_areas(const CaseSpec& spec, const Mesh2D& mesh) {
     const std::vector<double> factor = region_symmetry_factors_2d(spec);
     for (std::size_t i = 0; i < area.size(); ++i)
       area[i] *= factor[i];
+    // A part wholly beyond a plane is not meshed: its area is its image's.
+    for (const std::vector<int>& image : mirror_parts_2d(spec))
+      for (std::size_t i = 0; i < area.size(); ++i)
+        if (area[i] == 0 && image[i] >= 0)
+          area[i] = area[std::size_t(image[i])];
   }
   return area;
 }

@@ -5,9 +5,11 @@
 //     2 per plane that cuts it (a part on one side is whole in the model; its image beyond is
 //     another part, not meshed);
 //   - current densities from ampere-turns: over the whole coil's area, not its share;
-//   - axisymmetric coils (their own images, check_symmetry_2d): the linkage is N times the
-//     mean of 2 pi r A over the coil, the same over the share as over the whole coil (A is
-//     even about a `normal` plane), and so is the inductance: nothing to scale;
+//   - axisymmetric coils: one the plane cuts has as linkage N times the mean of 2 pi r A over
+//     the coil, the same over the share as over the whole coil (A is even about a `normal`
+//     plane), and so is the inductance: nothing to scale; a coil whose image is another coil
+//     takes its linkage from its image's and the pair's inductances from a second solve
+//     (coil_results_axi.hpp);
 //   - probes, stress circles, bands and contours sample the whole device through the mirror
 //     (PointLocator2D); line sections are cut at the planes and their pieces beyond read at
 //     their images; Lorentz forces sum the images of every meshed part: the force component
@@ -28,7 +30,8 @@ namespace magfem {
 
 struct Run2D;
 
-// m^2 per part: the meshed area times the part's symmetry factor (the whole part's area).
+// m^2 per part: the meshed area times the part's symmetry factor (the whole part's area; a
+// part beyond a plane, not meshed, has its image's).
 std::vector<double> whole_part_areas(const CaseSpec& spec, const Mesh2D& mesh);
 
 // The model's energies and error estimate -> the whole device's. No-op without planes.

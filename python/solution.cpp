@@ -119,9 +119,9 @@ std::string Solution::coils_json() const {
 }
 
 py::object Solution::inductance_H() const {
-  if (!run3d_ || run3d_->coil_results.inductance_H.size() == 0)
+  const Eigen::MatrixXd& l = run3d_ ? run3d_->coil_results.inductance_H : run2d_->inductance_H;
+  if (l.size() == 0)
     return py::none();
-  const Eigen::MatrixXd& l = run3d_->coil_results.inductance_H;
   py::array_t<double> out({static_cast<py::ssize_t>(l.rows()), static_cast<py::ssize_t>(l.cols())});
   auto a = out.mutable_unchecked<2>();
   for (Eigen::Index i = 0; i < l.rows(); ++i)

@@ -154,7 +154,11 @@ Eigen::Matrix2d Assembler2D::shell_metric(const Eigen::Vector2d& x) const {
 
 void Assembler2D::evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                            Eigen::SparseMatrix<double>* matrix, TangentKind kind) const {
-  const Eigen::VectorXd a_full = expand(u);
+  evaluate_full(expand(u), residual, matrix, kind);
+}
+
+void Assembler2D::evaluate_full(const Eigen::VectorXd& a_full, Eigen::VectorXd& residual,
+                                Eigen::SparseMatrix<double>* matrix, TangentKind kind) const {
   residual = Eigen::VectorXd::Zero(n_eqs_);
   if (matrix) *matrix = pattern_.zero_matrix();
   const int n = dofs_.dofs_per_element();

@@ -28,6 +28,11 @@ public:
   void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                 Eigen::SparseMatrix<double>* matrix, TangentKind kind) const override;
   double load_norm() const override { return load_norm_; }
+  // evaluate at a vector of all DOFs, constrained ones included: the tangent at an operating
+  // point solved under other constraints (a symmetry plane's other condition,
+  // current_sensitivity2d.hpp), whose values on the plane this assembler would drop.
+  void evaluate_full(const Eigen::VectorXd& a_full, Eigen::VectorXd& residual,
+                     Eigen::SparseMatrix<double>* matrix, TangentKind kind) const;
 
   // Free-DOF vector -> all DOFs (constrained ones are zero) and back.
   Eigen::VectorXd expand(const Eigen::VectorXd& u) const;

@@ -30,4 +30,19 @@ std::vector<Eigen::VectorXd> current_sensitivities_2d(const Problem2D& problem,
                                                       const std::vector<CurrentPerAmpere2D>& coils,
                                                       const LinearSolverOptions& options);
 
+// The same under the other condition on symmetry plane `plane` (Mesh2D::symmetry index;
+// normal <-> parallel), linearised at a_full, the operating point as all DOFs of `dofs`
+// (Assembler2D::expand of the solution). A model cut at a plane with its own condition drives
+// a coil and its mirror image together with the currents the condition gives them; the other
+// condition drives them the other way round, so the two sensitivities separate a mirrored
+// pair's self and mutual inductance (pipeline/coil_results_axi.hpp). With nonlinear iron the
+// tangent at the operating point is itself symmetric about the plane, so the response to the
+// antisymmetric excitation is the share's under the other condition. Returns all-DOF vectors
+// (constrained DOFs zero), one per entry.
+std::vector<Eigen::VectorXd>
+complementary_sensitivities_2d(const Problem2D& problem, const DofMap2D& dofs,
+                               const Eigen::VectorXd& a_full, std::size_t plane,
+                               const std::vector<CurrentPerAmpere2D>& coils,
+                               const LinearSolverOptions& options);
+
 } // namespace magfem

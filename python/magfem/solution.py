@@ -112,8 +112,8 @@ class Solution(_Result):
     ``forces`` (name -> dict with ``force_N``, ``torque_Nm`` numpy vectors, the method, and
     the check-surface and error-estimate entries when the run has them), ``coils`` (name ->
     dict: turns, current_A, flux_linkage_Wb, ...), ``inductance_H`` (numpy matrix in the
-    order of ``coils``, 3D coils only, else None), ``probes`` (name -> dict of numpy columns,
-    as the CSV files), ``summary`` (summary.json as a dict), ``mesh`` (Mesh), ``B(points)``,
+    order of ``coils``, 3D and axisymmetric coils, else None), ``probes`` (name -> dict of
+    numpy columns, as the CSV files), ``summary`` (summary.json as a dict), ``mesh`` (Mesh), ``B(points)``,
     ``H(points)`` and ``write(dir)``.
     """
 
@@ -176,8 +176,8 @@ class Solution(_Result):
 
     @property
     def inductance_H(self):
-        """The 3D inductance matrix (H) in the order of ``coils``, or None when the run did
-        not compute one (2D axisymmetric coils carry theirs in ``coils``)."""
+        """The inductance matrix (H, differential) in the order of ``coils`` (3D and
+        axisymmetric coils), or None when the run did not compute one."""
         return self._core.inductance_H()
 
     @property

@@ -12,8 +12,8 @@
 //     z = 0, attracting (`normal`) and repelling (`parallel`): energy, probes and the contour
 //     force on each magnet against the full model;
 //   - refusals before meshing, naming the region and its line: a part without its mirror, a
-//     magnetization or a current the plane's condition contradicts, an axisymmetric coil with
-//     turns whose image is another coil, a plane the dimension does not have.
+//     magnetization or a current the plane's condition contradicts, a plane the dimension
+//     does not have (coil pairs mirrored into each other: test_mirror_coils_axi.cpp).
 // Planted bugs the tests caught (see the report of branch sym2d): A = 0 on `normal` planes
 // instead of `parallel`, the energy factor dropped, the mirror map's sign flipped.
 #include <gtest/gtest.h>
@@ -328,17 +328,6 @@ TEST(Symmetry2D, RefusedWhenNotSymmetric) {
                  "region 'right' is not symmetric about the "
                  "symmetry plane x = 0 (field: normal): its "
                  "current density");
-  // A coil with turns whose image is another coil (axisymmetric Helmholtz pair).
-  const std::string pair = R"(
-dimension: axi
-unit: mm
-regions:
-  - {name: top, shape: rectangle, center: [20, 10], width: 4, height: 4, turns: 100, current: 1}
-  - {name: bottom, shape: rectangle, center: [20, -10], width: 4, height: 4, turns: 100, current: 1}
-boundary: {type: open, radius: 50, symmetry: [{plane: z, field: normal}]}
-mesh: {size: 3, chord_tolerance: 0.01}
-)";
-  expect_refused(pair, "sym2d_bad_coils.yaml", 5, "its mirror image is region 'bottom'");
   // Planes the dimension does not have.
   expect_refused(std::regex_replace(solenoid_case, std::regex("SYMMETRY"),
                                     ", symmetry: [{plane: x, field: normal}]"),

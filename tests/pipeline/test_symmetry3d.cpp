@@ -263,6 +263,40 @@ TEST(Symmetry3D, RefusesAFieldConditionThatContradictsACoilsCurrent) {
   }
 }
 
+// Two coils mirrored into each other about z = 0 (a Helmholtz pair): axisymmetric cases take
+// them (test_mirror_coils_axi.cpp), 3D refuses them before meshing, naming both coils and
+// what is missing.
+TEST(Symmetry3D, RefusesACoilPairMirroredIntoEachOther) {
+  const std::string text = R"(
+dimension: 3
+unit: mm
+coils:
+  - {name: upper, shape: solenoid, r_inner: 18, r_outer: 22, length: 4, center: [0, 0, 8],
+     turns: 100, current: 1}
+  - {name: lower, shape: solenoid, r_inner: 18, r_outer: 22, length: 4, center: [0, 0, -8],
+     turns: 100, current: 1}
+regions:
+  - {name: near, shape: cylinder, r_outer: 30, height: 30, material: air, mesh_size: 3,
+     placement: {translate: [0, 0, -15]}}
+boundary: {type: open, radius: 60, symmetry: [{plane: z, field: normal}]}
+mesh: {size: 10}
+)";
+  try {
+    run_case_3d(read_case(test::write_temp_case("sym_coil_pair.yaml", text)));
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("coil 'upper' is not symmetric about the symmetry plane z = 0"),
+              std::string::npos)
+        << why;
+    EXPECT_NE(why.find("its mirror image is another coil ('lower'); coil pairs mirrored into "
+                       "each other are supported in axisymmetric cases only"),
+              std::string::npos)
+        << why;
+    EXPECT_NE(why.find(":5:"), std::string::npos) << why; // the coil's line
+  }
+}
+
 // Reader errors name the file, line and field (exit 2).
 TEST(Symmetry3D, ReaderRefusesBadPlanes) {
   auto error_of = [](const std::string& text) -> std::string {

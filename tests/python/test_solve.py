@@ -154,6 +154,7 @@ class Axisymmetric(AgainstCommandLine, unittest.TestCase):
         for c in self.cli["coils"]:
             self.assertEqual(coils[c["name"]]["flux_linkage_Wb"], c["flux_linkage_Wb"])
             self.assertEqual(coils[c["name"]]["inductance_H"], c["inductance_H"])
+        np.testing.assert_array_equal(self.sol.inductance_H, self.cli["inductance_H"]["matrix"])
 
     def test_B_at_points_is_the_probe_field(self):
         for probe in ("bore", "arc30"):
