@@ -177,6 +177,7 @@ constexpr std::array<CommandHelp, 10> commands{{
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
      "                    [--mesh-scale S] [--coil-quadrature R,A,P,Z] [--verify] [--quiet]\n"
+     "                    [--accuracy PCT [--max-passes N] [--max-unknowns N]]\n"
      "                    [--coil-pitch START:STEP:END] [--out DIR]",
      "torque constants, commutated currents and copper loss of a multi-coil actuator",
      "  For every rotor orientation: the torque constants Gamma (3 x coils, N m/A: the\n"
@@ -198,6 +199,11 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
+     "  --accuracy PCT (with --verify; or the case's adapt:) refines each of these solves\n"
+     "  adaptively for the torque it reports, as `solve --accuracy` does, and puts its\n"
+     "  estimated error beside it (produced_error_estimate_Nm, `adapt`); one that stops\n"
+     "  at --max-passes/--max-unknowns first is a warning. The torque constants keep\n"
+     "  the case's mesh.\n"
      "  Under mpirun (mpirun -n N magfem actuator ... --verify) these FE solves are\n"
      "  dealt to the processes (each computes the constants; rank 0 writes); without\n"
      "  --verify the command is refused under mpirun.\n"

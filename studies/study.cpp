@@ -91,8 +91,8 @@ std::vector<double> design_angles(const StudyOptions& o) {
 // refined (a relative error of |T|, which bounds the error of any component), else the last
 // mesh's own (the stress sphere's); NaN if it has neither.
 double position_torque_error(const SweepRow& r) {
-  if (r.adapt.passes && std::isfinite(r.adapt.error_pct))
-    return r.adapt.error_pct / 100 * r.torque.norm();
+  if (const double adapted = position_adapt_error(r.adapt, r.torque.norm()); !std::isnan(adapted))
+    return adapted;
   return r.torque_bound > 0 ? r.torque_bound : std::numeric_limits<double>::quiet_NaN();
 }
 
