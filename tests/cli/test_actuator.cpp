@@ -327,6 +327,15 @@ std::vector<double> numbers_after(const std::string& text, const std::string& ke
   return v;
 }
 
+// The small actuator's options with the torque constants by the charge model.
+ActuatorOptions charge_model_options(const std::string& file) {
+  ActuatorOptions a;
+  a.case_file = file;
+  a.rotor = "rotor";
+  a.analytic = true;
+  return a;
+}
+
 } // namespace
 
 // The FE path end to end (the only run of it in the default suite): `actuator --verify` on the
@@ -345,10 +354,7 @@ std::vector<double> numbers_after(const std::string& text, const std::string& ke
 TEST(Actuator, FeTorqueConstantsAndVerificationOnASmallActuator) {
   const std::string file = test::write_temp_case("small_actuator.yaml", test::small_actuator_case);
   const CaseSpec spec = read_case(file);
-  ActuatorOptions a;
-  a.case_file = file;
-  a.rotor = "rotor";
-  a.analytic = true;
+  ActuatorOptions a = charge_model_options(file);
   const Orientation at{0, 20, 0};
   const auto charge = run_actuator(spec, a, {at});
   const TorqueConstants& g = charge.gamma[0];
@@ -403,10 +409,7 @@ TEST(Actuator, FeTorqueConstantsAndVerificationOnASmallActuator) {
 TEST(Actuator, AdaptiveVerificationStatesAnHonestEstimateBesideEachTorque) {
   const std::string file = test::write_temp_case("small_actuator.yaml", test::small_actuator_case);
   const CaseSpec spec = read_case(file);
-  ActuatorOptions a;
-  a.case_file = file;
-  a.rotor = "rotor";
-  a.analytic = true; // the constants by the charge model; the verification is FE
+  ActuatorOptions a = charge_model_options(file); // the verification is FE
   const Orientation at{0, 20, 0};
   const Eigen::Vector3d demand = run_actuator(spec, a, {at}).gamma[0].col(0);
   a.torque_Nm = demand;

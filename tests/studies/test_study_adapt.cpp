@@ -15,32 +15,20 @@
 #include "core/input_error.hpp"
 #include "studies/optimize.hpp"
 #include "studies/study.hpp"
+#include "studies/sweep.hpp"
 #include "tests/case_helpers.hpp"
 
 using namespace magfem;
 
 namespace {
 
-// examples/3d/two_spheres.yaml with the centre distance as a parameter and a coarser mesh: a
-// sphere of radius 5 mm (B_r 1.2 T along z) at the origin, one of radius 4 mm along x at
-// (0, 0, d) in group `arm`.
-const char* spheres_case = R"(title: two magnetized spheres at ${d} mm
-dimension: 3
-unit: mm
-parameters:
-  d: {value: 14, unit: mm, description: centre distance}
-materials:
-  pm: {kind: magnet, B_r: 1.2, mu_r: 1.0}
-regions:
-  - {name: fixed, shape: spherical_segment, r_outer: 5, material: pm,
-     magnetization: {type: parallel, direction: [0, 0, 1]}, mesh_size: 2.5}
-  - {name: moving, shape: spherical_segment, r_outer: 4, material: pm,
-     magnetization: {type: parallel, direction: [1, 0, 0]},
-     placement: {translate: [0, 0, "${d}"]}, group: arm, mesh_size: 2.5}
-boundary: {type: open, radius: 40}
-mesh: {size: 8, chord_tolerance: 0.05, probe_size: 1.2}
-solver: {order: 2}
-)";
+// examples/3d/two_spheres.yaml (a sphere of radius 5 mm, B_r 1.2 T along z, at the origin;
+// one of radius 4 mm along x at (0, 0, 14) mm in group `arm`) with the centre distance d (mm)
+// as the study's parameter: the arm moved along z to (0, 0, d).
+CaseSpec spheres_at(const ParameterOverrides& p) {
+  const CaseSpec spec = read_case(test::example("3d/two_spheres.yaml"));
+  return translate_group(spec, "arm", Eigen::Vector3d(0, 0, 1e-3 * p.at("d") - 0.014));
+}
 
 // The torque about y on the arm at angle 0, N m: m_a along z at the origin, m_b along x at
 // (0, 0, d); T = r x F + m_b x B_a = (3 - 2) mu0 m_a m_b / (4 pi d^3), about +y.
@@ -50,8 +38,8 @@ double exact_torque_y(double d_m) {
   return mu0 / (4 * pi) * m_a * m_b / std::pow(d_m, 3);
 }
 
-StudyOptions spheres_study(const std::vector<std::string>& extra) {
-  std::vector<std::string> args{test::write_temp_case("study_adapt_spheres.yaml", spheres_case),
+std::vector<std::string> spheres_args(const std::vector<std::string>& extra) {
+  std::vector<std::string> args{test::example("3d/two_spheres.yaml"),
                                 "--param",
                                 "d=14,18",
                                 "--objective",
@@ -59,12 +47,16 @@ StudyOptions spheres_study(const std::vector<std::string>& extra) {
                                 "--rotate",
                                 "arm",
                                 "--axis",
-                                "y",
-                                "--fe",
-                                "--mesh-scale",
-                                "3"};
+                                "y"};
   args.insert(args.end(), extra.begin(), extra.end());
-  StudyOptions o = parse_study_options(args);
+  return args;
+}
+
+StudyOptions spheres_study(const std::vector<std::string>& extra) {
+  std::vector<std::string> fe{"--fe", "--mesh-scale", "3"};
+  fe.insert(fe.end(), extra.begin(), extra.end());
+  StudyOptions o = parse_study_options(spheres_args(fe));
+  o.read = spheres_at;
   o.quiet = true;
   return o;
 }
@@ -150,35 +142,33 @@ TEST(StudyAdapt, ADesignStoppedAtALimitIsAWarningNotASilentPass) {
 }
 
 TEST(StudyAdapt, AccuracyOptionsAreForFeOnly) {
-  const std::string file = test::write_temp_case("study_adapt_spheres.yaml", spheres_case);
-  const auto refused = [&](std::vector<std::string> args, const std::string& option) {
+  const auto refused = [&](const std::vector<std::string>& extra, const std::string& option) {
     try {
-      (void)parse_study_options(args);
+      (void)parse_study_options(spheres_args(extra));
       ADD_FAILURE() << option << " accepted";
     } catch (const InputError& e) {
       EXPECT_EQ(e.field(), option) << e.what();
     }
   };
-  const std::vector<std::string> base{
-      file, "--param", "d=14", "--objective", "torque_at:0", "--rotate", "arm", "--axis", "y"};
+  refused({"--accuracy", "1"}, "--accuracy");             // analytic by default
+  refused({"--fe", "--accuracy", "100"}, "--accuracy");   // outside (0, 100)
+  refused({"--fe", "--max-passes", "0"}, "--max-passes"); // below 1
+  // optimize: the adaptive options refine the FE check only.
+  const std::string file = test::example("3d/two_spheres.yaml");
+  const std::vector<std::string> optimize{
+      file, "--vary", "d=12:20", "--maximize", "torque_at:0", "--rotate", "arm", "--axis", "y"};
   auto with = [&](std::vector<std::string> extra) {
-    auto args = base;
+    auto args = optimize;
     args.insert(args.end(), extra.begin(), extra.end());
     return args;
   };
-  refused(with({"--accuracy", "1"}), "--accuracy");             // analytic by default
-  refused(with({"--fe", "--accuracy", "100"}), "--accuracy");   // outside (0, 100)
-  refused(with({"--fe", "--max-passes", "0"}), "--max-passes"); // below 1
-  // optimize: the adaptive options refine the FE check only.
   try {
-    (void)parse_optimize_options({file, "--vary", "d=12:20", "--maximize", "torque_at:0",
-                                  "--rotate", "arm", "--axis", "y", "--accuracy", "1"});
+    (void)parse_optimize_options(with({"--accuracy", "1"}));
     ADD_FAILURE() << "optimize --accuracy without --verify-fe accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.field(), "--accuracy") << e.what();
   }
-  const auto o =
-      parse_optimize_options({file, "--vary", "d=12:20", "--maximize", "torque_at:0", "--rotate",
-                              "arm", "--axis", "y", "--verify-fe", "--accuracy", "1"});
-  EXPECT_EQ(o.study.adapt.accuracy_pct, 1.0);
+  EXPECT_EQ(
+      parse_optimize_options(with({"--verify-fe", "--accuracy", "1"})).study.adapt.accuracy_pct,
+      1.0);
 }
