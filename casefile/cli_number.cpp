@@ -26,6 +26,26 @@ double parse_cli_mesh_scale(const std::string& text) {
   return scale;
 }
 
+void parse_cli_adapt(const std::string& option, const std::string& text, AdaptOverrides& o) {
+  const double v = parse_cli_number(option, text);
+  const auto refuse = [&](const char* why) { throw InputError("<command line>", 0, option, why); };
+  if (option == "--accuracy") {
+    if (!(v > 0 && v < 100))
+      refuse("must be between 0 and 100 (exclusive), in percent");
+    o.accuracy_pct = v;
+  } else if (option == "--max-passes") {
+    if (!(v >= 1) || v != std::floor(v))
+      refuse("must be a whole number >= 1");
+    o.max_passes = static_cast<int>(v);
+  } else if (option == "--max-unknowns") {
+    if (!(v > 0))
+      refuse("must be positive");
+    o.max_unknowns = v;
+  } else {
+    throw std::logic_error("parse_cli_adapt: not an adaptive option: " + option);
+  }
+}
+
 int parse_cli_order(const std::string& text) {
   const double order = parse_cli_number("--order", text);
   if (order != 1 && order != 2)

@@ -3,6 +3,7 @@
 // naming the option (the command line has no file or line).
 #include <string>
 
+#include "casefile/adapt_spec.hpp"
 #include "casefile/case_parameter.hpp"
 
 namespace magfem {
@@ -13,6 +14,11 @@ double parse_cli_number(const std::string& option, const std::string& text);
 // --order (exactly 1 or 2).
 double parse_cli_mesh_scale(const std::string& text);
 int parse_cli_order(const std::string& text);
+
+// The adaptive solve's options shared by the commands that solve: --accuracy PCT (0 < PCT <
+// 100), --max-passes N (a whole number >= 1), --max-unknowns N (positive), set in `o`
+// (`option` names which; an unknown one is a programming error).
+void parse_cli_adapt(const std::string& option, const std::string& text, AdaptOverrides& o);
 
 // --param NAME=VALUE: sets parameters[NAME] (the case file's `parameters:`; read_case checks
 // that the file declares NAME).

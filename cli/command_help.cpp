@@ -128,6 +128,7 @@ constexpr std::array<CommandHelp, 10> commands{{
      "                    --objective peak_torque|torque_at:DEG [--objective ...]\n"
      "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
      "                    [--analytic|--fe] [--mesh-scale S] [--order 1|2] [--jobs N]\n"
+     "                    [--accuracy PCT [--max-passes N] [--max-unknowns N]]\n"
      "                    [--quiet] [--resume] [--out DIR]",
      "evaluate torque objectives over a grid of case-file parameters",
      "  Every combination of the --param values (the file's `parameters:`, in each one's\n"
@@ -138,6 +139,11 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  for two parameters, else lines), summary.json into DIR (default out/<case>_study).\n"
      "  --mesh-scale and --order set the --fe sweep's mesh as in `solve`. Exit 3 if a\n"
      "  design failed (listed in summary.json; the others are written).\n"
+     "  --fe: study.csv also has <objective>_err (N m) for each objective, its estimated\n"
+     "  error. With --accuracy (or the case's adapt:) every position a design needs is\n"
+     "  refined adaptively for its torque, as `solve --accuracy` does; summary.json's\n"
+     "  `adapt` lists each design's passes, unknowns and whether it converged, and a\n"
+     "  design that stopped at --max-passes/--max-unknowns first is a warning.\n"
      "  --resume   continue a study that was interrupted (Ctrl-C, kill, crash): every\n"
      "             finished design is kept in DIR/.magfem-checkpoint.jsonl as it\n"
      "             finishes, and is not evaluated again; the outputs are those of an\n"
@@ -153,21 +159,25 @@ constexpr std::array<CommandHelp, 10> commands{{
      "                    --maximize|--minimize peak_torque|torque_at:DEG\n"
      "                    --rotate GROUP --axis x|y|z|ax,ay,az [--angles LIST]\n"
      "                    [--constraint \"EXPR <= EXPR\" ...] [--xtol T] [--verify-fe]\n"
-     "                    [--mesh-scale S] [--order 1|2] [--quiet] [--out DIR]",
+     "                    [--mesh-scale S] [--order 1|2] [--accuracy PCT [--max-passes N]\n"
+     "                    [--max-unknowns N]] [--quiet] [--out DIR]",
      "bounded optimization of a torque objective over case-file parameters",
      "  NLopt's COBYLA (derivative-free, bounded) on the analytic sweep of `magfem study`;\n"
      "  --xtol is its relative tolerance on the variables (default 1e-4). --constraint is an\n"
      "  inequality (<= or >=) between expressions of the --vary names in their own units,\n"
      "  e.g. \"R_out - R_in >= 10\"; exit 3 if no point satisfies it. --verify-fe solves\n"
      "  the optimum by FE (mesh as set by --mesh-scale/--order) and reports the FE value\n"
-     "  beside the analytic one. Writes summary.json and history.csv (every evaluation:\n"
-     "  the variables and the objective) into DIR (default out/<case>_optimize).\n"
+     "  beside the analytic one, with its estimated error; --accuracy (or the case's\n"
+     "  adapt:) refines that FE check adaptively (summary.json fe_adapt). Writes\n"
+     "  summary.json and history.csv (every evaluation: the variables and the\n"
+     "  objective) into DIR (default out/<case>_optimize).\n"
      "  Refused under mpirun: each step is chosen from the ones before, so there is\n"
      "  nothing to deal; `mpirun -n N magfem study` spreads a grid of designs instead.\n"},
     {"actuator",
      "magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]\n"
      "                    [--analytic] [--param NAME=VALUE ...] [--order 1|2]\n"
      "                    [--mesh-scale S] [--coil-quadrature R,A,P,Z] [--verify] [--quiet]\n"
+     "                    [--accuracy PCT [--max-passes N] [--max-unknowns N]]\n"
      "                    [--coil-pitch START:STEP:END] [--out DIR]",
      "torque constants, commutated currents and copper loss of a multi-coil actuator",
      "  For every rotor orientation: the torque constants Gamma (3 x coils, N m/A: the\n"
@@ -189,6 +199,11 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  across the bundle, Z azimuths (default 4,3,2,32: ~1e-3 of the largest constant).\n"
      "  --verify: FE with the commutated currents at the first, middle and last\n"
      "  orientation; summary.json `verification` lists demanded and produced torque.\n"
+     "  --accuracy PCT (with --verify; or the case's adapt:) refines each of these solves\n"
+     "  adaptively for the torque it reports, as `solve --accuracy` does, and puts its\n"
+     "  estimated error beside it (produced_error_estimate_Nm, `adapt`); one that stops\n"
+     "  at --max-passes/--max-unknowns first is a warning. The torque constants keep\n"
+     "  the case's mesh.\n"
      "  Under mpirun (mpirun -n N magfem actuator ... --verify) these FE solves are\n"
      "  dealt to the processes (each computes the constants; rank 0 writes); without\n"
      "  --verify the command is refused under mpirun.\n"

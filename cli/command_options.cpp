@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "casefile/cli_number.hpp"
 #include "cli/command_help.hpp"
@@ -49,22 +50,15 @@ void add_quiet(Table& t) {
 }
 
 void add_accuracy(Table& t) {
-  t.value("--accuracy", "PCT", [](CommandArgs& a, const std::string& o, const std::string& v) {
-    a.accuracy_pct = parse_cli_number(o, v);
-    if (!(*a.accuracy_pct > 0 && *a.accuracy_pct < 100))
-      throw_option_error(o, "must be between 0 and 100 (exclusive), in percent");
-  });
-  t.value("--max-passes", "N", [](CommandArgs& a, const std::string& o, const std::string& v) {
-    const double n = parse_cli_number(o, v);
-    if (!(n >= 1) || n != std::floor(n))
-      throw_option_error(o, "must be a whole number >= 1");
-    a.max_passes = static_cast<int>(n);
-  });
-  t.value("--max-unknowns", "N", [](CommandArgs& a, const std::string& o, const std::string& v) {
-    a.max_unknowns = parse_cli_number(o, v);
-    if (!(*a.max_unknowns > 0))
-      throw_option_error(o, "must be positive");
-  });
+  for (const auto& [name, placeholder] :
+       {std::pair{"--accuracy", "PCT"}, std::pair{"--max-passes", "N"},
+        std::pair{"--max-unknowns", "N"}})
+    t.value(name, placeholder, [](CommandArgs& a, const std::string& o, const std::string& v) {
+      AdaptOverrides given{a.accuracy_pct, a.max_unknowns, a.max_passes};
+      parse_cli_adapt(o, v, given);
+      a.accuracy_pct = given.accuracy_pct, a.max_unknowns = given.max_unknowns,
+      a.max_passes = given.max_passes;
+    });
 }
 
 Table solve_table() {

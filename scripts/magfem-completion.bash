@@ -35,9 +35,9 @@ _magfem() {
     sweep) options="--rotate --move --axis --angles --positions --point --analytic --surface-radius --jobs --out --order --mesh-scale --max-memory --resume --quiet --help" ;;
     materials) options="--export --help" ;;
     validate) options="--tier --only --source --jobs --resume --catalogue --out --help" ;;
-    study) options="--param --objective --rotate --axis --angles --analytic --fe --mesh-scale --order --jobs --quiet --resume --out --help" ;;
-    actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --quiet --out --coil-pitch --help" ;;
-    optimize) options="--vary --maximize --minimize --rotate --axis --angles --constraint --xtol --verify-fe --mesh-scale --order --quiet --out --help" ;;
+    study) options="--param --objective --rotate --axis --angles --analytic --fe --mesh-scale --order --accuracy --max-passes --max-unknowns --jobs --quiet --resume --out --help" ;;
+    actuator) options="--rotor --orientations --torque --analytic --param --order --mesh-scale --coil-quadrature --verify --accuracy --max-passes --max-unknowns --quiet --out --coil-pitch --help" ;;
+    optimize) options="--vary --maximize --minimize --rotate --axis --angles --constraint --xtol --verify-fe --mesh-scale --order --accuracy --max-passes --max-unknowns --quiet --out --help" ;;
     help) COMPREPLY=($(compgen -W "${commands% help}" -- "$cur")); return ;;
   esac
   if [[ "$cur" == -* ]]; then

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include <unistd.h>
 
@@ -27,6 +28,7 @@
 #include "pipeline/analytic_scene.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/run3d.hpp"
+#include "pipeline/solve_case.hpp"
 #include "postproc/point_locator3d.hpp"
 #include "studies/actuator_coil_pitch.hpp"
 #include "studies/actuator_plot.hpp"
@@ -37,6 +39,16 @@ namespace magfem {
 namespace {
 
 const std::string cli = "<command line>";
+
+// "" or ", estimated error 0.0012 N m (3 passes)" for the console's verify line.
+std::string verified_error_text(const Verification& v) {
+  if (!std::isfinite(v.produced_error_Nm))
+    return "";
+  char text[96];
+  std::snprintf(text, sizeof text, ", estimated error %.2g N m (%d passes)", v.produced_error_Nm,
+                v.adapt.passes);
+  return text;
+}
 
 std::vector<std::string> split(const std::string& text, char sep) {
   std::vector<std::string> out;
@@ -426,6 +438,9 @@ const OptionTable<ActuatorOptions>& actuator_option_table() {
           .value("--coil-quadrature", "N_R,N_ALPHA,PANELS,N_AZIMUTH",
                  [](O& o, S opt, S v) { o.coil_rule = parse_coil_rule(opt, v); })
           .flag("--verify", [](O& o, S, S) { o.verify = true; })
+          .value("--accuracy", "PCT", [](O& o, S opt, S v) { parse_cli_adapt(opt, v, o.adapt); })
+          .value("--max-passes", "N", [](O& o, S opt, S v) { parse_cli_adapt(opt, v, o.adapt); })
+          .value("--max-unknowns", "N", [](O& o, S opt, S v) { parse_cli_adapt(opt, v, o.adapt); })
           .flag("--quiet", [](O& o, S, S) { o.quiet = true; })
           .value("--out", "DIR", [](O& o, S, S v) { o.out_dir = v; })
           .value("--coil-pitch", "SPEC", [](O& o, S, S v) { o.coil_pitch = v; });
@@ -461,6 +476,13 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
     throw InputError(cli, 0, "--rotor", "name the rotor group");
   if (o.orientations.empty())
     throw InputError(cli, 0, "--orientations", "give rx=..,ry=..,rz=.. or a CSV file");
+  // The torque-constant solves are field evaluations at the coils, not a named quantity: the
+  // adaptive options refine the verification solves only.
+  for (const auto& [given, name] : {std::pair{o.adapt.accuracy_pct.has_value(), "--accuracy"},
+                                    std::pair{o.adapt.max_passes.has_value(), "--max-passes"},
+                                    std::pair{o.adapt.max_unknowns.has_value(), "--max-unknowns"}})
+    if (given && !o.verify)
+      throw InputError(cli, 0, name, "refines the --verify solves: give --verify");
   if (o.out_dir.empty())
     o.out_dir = "out";
   return o;
@@ -515,6 +537,9 @@ ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options
     r.n_field_solves = 1;
   } else {
     r.gamma = fe_gamma(spec, options, orientations, coils, rotations, r.n_field_solves, r.notes);
+    if (spec.adapt.enabled() || options.adapt.accuracy_pct)
+      r.notes.push_back("the FE torque constants are from the case's mesh: the adaptive "
+                        "refinement is the --verify solves' (for the torque they report)");
   }
   r.gamma_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (options.torque_Nm) {
@@ -533,6 +558,19 @@ ActuatorResult run_actuator(const CaseSpec& spec, const ActuatorOptions& options
 namespace {
 
 // A verification as the item runner carries it (studies/position_runner.hpp).
+// The force entry of a verification solve: the Lorentz force and torque (about the origin) on
+// all coils together, what --verify reports and an adaptive solve refines for.
+const char* const verified_torque = "verify_coils";
+
+ForceSpec all_coils_lorentz(const CaseSpec& spec) {
+  ForceSpec f;
+  f.name = verified_torque;
+  f.kind = ForceSpec::Kind::lorentz;
+  for (const auto& c : spec.geometry3d.coils)
+    f.regions.push_back(c.name);
+  return f;
+}
+
 struct VerificationRow {
   Verification v;
   bool ok = false;
@@ -558,13 +596,16 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
   using Item = std::pair<std::size_t, std::size_t>;
   const auto planned = [&](const Item& item) {
     const ActuatorDemand& d = r.demands[item.first];
-    return Verification{d.name, r.orientations[item.second], d.torque_Nm, Eigen::Vector3d::Zero(),
-                        false};
+    Verification v;
+    v.demand = d.name, v.orientation = r.orientations[item.second], v.demanded_Nm = d.torque_Nm;
+    return v;
   };
   const PositionCodec<VerificationRow, Item> codec{
       [](const VerificationRow& row) {
         const Eigen::Vector3d& t = row.v.produced_Nm;
-        return nlohmann::json{{"produced_Nm", {t.x(), t.y(), t.z()}}, {"solved", row.v.ok}};
+        nlohmann::json j{{"produced_Nm", {t.x(), t.y(), t.z()}}, {"solved", row.v.ok}};
+        add_position_adapt(j, row.v.adapt); // its error_pct gives produced_error_Nm back
+        return j;
       },
       [&](const nlohmann::json& j, const Item& item) -> std::optional<VerificationRow> {
         VerificationRow row;
@@ -572,6 +613,8 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
         for (int k = 0; k < 3; ++k)
           row.v.produced_Nm[k] = j.at("produced_Nm").at(k).get<double>();
         row.v.ok = j.at("solved").get<bool>();
+        row.v.adapt = position_adapt_from_json(j);
+        row.v.produced_error_Nm = position_adapt_error(row.v.adapt, row.v.produced_Nm.norm());
         return row;
       },
       {}};
@@ -590,12 +633,16 @@ std::vector<Verification> verify_commutation(const CaseSpec& spec, const Actuato
           for (std::size_t k = 0; k < s.geometry3d.coils.size(); ++k)
             s.geometry3d.coils[k].current = c.currents(static_cast<Eigen::Index>(k));
           s.probes.clear();
-          s.forces.clear();
           s.write_vtu = false;
           s.coil_inductance = false;
-          const auto run = run_case_3d(std::move(s), ov);
-          for (const auto& cr : run->coil_results.coils)
-            row.v.produced_Nm += cr.torque_Nm;
+          s.forces = {all_coils_lorentz(s)};
+          apply_adapt_overrides(s.adapt, options.adapt,
+                                {cli, "--accuracy", "--max-passes", "--max-unknowns"});
+          aim_adapt_at(s, verified_torque, "torque");
+          const auto run = solve_case_3d(std::move(s), ov);
+          row.v.produced_Nm = run->forces.front().torque;
+          row.v.adapt = position_adapt(run->adapt);
+          row.v.produced_error_Nm = position_adapt_error(row.v.adapt, row.v.produced_Nm.norm());
           row.v.ok = true;
         } catch (...) { // a solve that fails ends the command, as a serial run's does
           throw EndsRun{std::current_exception()};
@@ -725,6 +772,19 @@ int run_actuator_command(ActuatorOptions options) {
         e["produced_Nm"] = {v.produced_Nm.x(), v.produced_Nm.y(), v.produced_Nm.z()};
       else
         e["produced_Nm"] = nullptr;
+      if (std::isfinite(v.produced_error_Nm))
+        e["produced_error_estimate_Nm"] = v.produced_error_Nm; // of |produced_Nm|
+      if (v.adapt.passes)
+        e["adapt"] = position_adapt_summary(v.adapt);
+      if (v.ok && v.adapt.passes && !v.adapt.converged) {
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "verify %s at (%s) deg: adaptive refinement stopped after %d pass(es) "
+                      "before reaching its accuracy (estimated error %.3g %%)",
+                      v.demand.c_str(), angles(v.orientation).c_str(), v.adapt.passes,
+                      v.adapt.error_pct);
+        warnings.push_back(line);
+      }
       j["verification"].push_back(e);
     }
   }
@@ -762,10 +822,11 @@ int run_actuator_command(ActuatorOptions options) {
   for (const auto& v : verification)
     if (v.ok)
       std::printf("verify   %s at (%g, %g, %g) deg: demanded (%.4g, %.4g, %.4g), FE produced "
-                  "(%.4g, %.4g, %.4g) N m\n",
+                  "(%.4g, %.4g, %.4g) N m%s\n",
                   v.demand.c_str(), v.orientation.rx_deg, v.orientation.ry_deg,
                   v.orientation.rz_deg, v.demanded_Nm.x(), v.demanded_Nm.y(), v.demanded_Nm.z(),
-                  v.produced_Nm.x(), v.produced_Nm.y(), v.produced_Nm.z());
+                  v.produced_Nm.x(), v.produced_Nm.y(), v.produced_Nm.z(),
+                  verified_error_text(v).c_str());
   for (const auto& w : warnings)
     std::cerr << "magfem: warning: " << w << "\n";
   std::printf("wrote    %s/summary.json, torque_constants.csv, commutation%s.csv%s\n",

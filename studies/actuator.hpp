@@ -1,6 +1,7 @@
 #pragma once
 // `magfem actuator CASE.yaml --rotor GROUP --orientations SPEC [--torque Tx,Ty,Tz]
 //  [--analytic] [--param NAME=VALUE ..] [--mesh-scale S] [--order 1|2] [--out DIR]`
+//  [--verify [--accuracy PCT [--max-passes N] [--max-unknowns N]]]
 //  [--coil-pitch START:STEP:END] (the thesis's coil-pitch study, studies/actuator_coil_pitch.hpp):
 // a multi-coil spherical actuator (thesis ch. 5-6) over a set of rotor orientations. For each
 // orientation: the torque constants Gamma of every coil (analytic/torque_constants.hpp), the
@@ -13,7 +14,9 @@
 //
 // --verify: at the first, middle and last orientation, FE with the commutated currents in the
 // coils (the rotor turned into place): the Lorentz torque on all coils together against T_d.
-// It includes what Gamma leaves out (the coils' pull on the iron, ~i^2). Under mpirun
+// It includes what Gamma leaves out (the coils' pull on the iron, ~i^2). With the case's
+// adapt: or --accuracy each of these solves refines for that torque (a `lorentz` force over
+// every coil, pipeline/solve_case.hpp), and reports its estimated error beside it. Under mpirun
 // (`mpirun -n N magfem actuator ... --verify`) these solves are dealt to the processes.
 //
 // Orientation (rx, ry, rz) in degrees: the rotor turned first by rx about the fixed x axis,
@@ -25,6 +28,7 @@
 // without coil currents, once if the field turns rigidly with the rotor (every magnetic part
 // on the rotor or a sphere about the origin), else once per orientation with the rotor turned
 // (studies/sweep.hpp rotate_group).
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,10 +38,12 @@
 
 #include "analytic/commutation.hpp"
 #include "analytic/torque_constants.hpp"
+#include "casefile/adapt_spec.hpp"
 #include "casefile/case_parameter.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/option_table.hpp"
 #include "solver/mpi_context.hpp"
+#include "studies/position_adapt.hpp"
 
 namespace magfem {
 class Progress;
@@ -71,6 +77,7 @@ struct ActuatorOptions {
   double mesh_scale = 0; // FE: RunOverrides
   int order = 0;
   bool verify = false;
+  AdaptOverrides adapt;   // --verify: --accuracy, --max-passes, --max-unknowns over adapt:
   CoilRule coil_rule;     // quadrature over each coil (analytic/torque_constants.hpp)
   std::string coil_pitch; // --coil-pitch START:STEP:END (deg): the study of
                           // studies/actuator_coil_pitch.hpp instead of the case's coils
@@ -115,10 +122,14 @@ struct Verification {
   Eigen::Vector3d demanded_Nm = Eigen::Vector3d::Zero();
   Eigen::Vector3d produced_Nm = Eigen::Vector3d::Zero(); // FE Lorentz torque on all coils
   bool ok = false;                                       // false: ill-conditioned, not solved
+  // The estimated error of |produced_Nm|, N m, from the adaptive passes (NaN without them: a
+  // Lorentz torque has no one-mesh estimate yet), and the passes.
+  double produced_error_Nm = std::numeric_limits<double>::quiet_NaN();
+  PositionAdapt adapt;
 };
 
-// The --verify solves (see above); options.mesh_scale and options.order apply. Under mpirun
-// (options.world) every process calls this; rank 0 gets the verifications, the others none.
+// The --verify solves (see above); options.mesh_scale, options.order and options.adapt apply. Under
+// mpirun (options.world) every process calls this; rank 0 gets the verifications, the others none.
 std::vector<Verification> verify_commutation(const CaseSpec& spec, const ActuatorOptions& options,
                                              const ActuatorResult& result);
 

@@ -86,8 +86,8 @@ struct OptimizeArgs {
 // --vary, its objective --maximize/--minimize, it always optimizes the analytic model, one
 // evaluation at a time, without a checkpoint.
 bool passed_to_study(const std::string& name) {
-  for (const char* n :
-       {"--rotate", "--axis", "--angles", "--mesh-scale", "--order", "--quiet", "--out"})
+  for (const char* n : {"--rotate", "--axis", "--angles", "--mesh-scale", "--order", "--accuracy",
+                        "--max-passes", "--max-unknowns", "--quiet", "--out"})
     if (name == n)
       return true;
   return false;
@@ -166,6 +166,15 @@ OptimizeOptions parse_optimize_options(const std::vector<std::string>& args) {
   if (senses != 1)
     throw InputError(cli, 0, "--maximize", "give one --maximize or --minimize OBJECTIVE");
   check_constraints(o);
+  // The adaptive options refine the FE check's mesh (study takes them with --fe; the model
+  // stays analytic, run_optimize).
+  for (const char* adaptive : {"--accuracy", "--max-passes", "--max-unknowns"})
+    if (std::find(study_args.begin(), study_args.end(), adaptive) != study_args.end()) {
+      if (!o.verify_fe)
+        throw InputError(cli, 0, adaptive, "refines the FE check's mesh: give --verify-fe");
+      if (std::find(study_args.begin(), study_args.end(), "--fe") == study_args.end())
+        study_args.push_back("--fe");
+    }
   for (const auto& v : o.variables) // study wants parameters; their values are ours
     study_args.push_back("--param"), study_args.push_back(v.name + "=" + std::to_string(v.lower));
   o.study = parse_study_options(study_args);
@@ -300,6 +309,8 @@ OptimizeResult run_optimize(const OptimizeOptions& options,
     if (!d.ok)
       throw SolveError("optimize --verify-fe: the FE check failed: " + d.error);
     result.fe_objective = d.objectives[0];
+    result.fe_error = d.objective_errors[0];
+    result.fe_adapt = d.adapt;
     result.fe_seconds = d.seconds;
   }
   return result;
@@ -328,9 +339,29 @@ nlohmann::ordered_json optimize_summary(const OptimizeOptions& options, const Op
     j["fe_value"] = *r.fe_objective;
     j["fe_minus_analytic"] = *r.fe_objective - r.objective;
     j["fe_relative_difference"] = (*r.fe_objective - r.objective) / std::abs(r.objective);
+    if (!std::isnan(r.fe_error))
+      j["fe_error_estimate"] = r.fe_error;
+    if (r.fe_adapt.passes)
+      j["fe_adapt"] = {{"converged", r.fe_adapt.converged},
+                       {"passes", r.fe_adapt.passes},
+                       {"unknowns", r.fe_adapt.unknowns},
+                       {"stopped_deg", r.fe_adapt.stopped_deg}};
+    if (const auto w = optimize_warning(r); !w.empty())
+      j["warnings"] = {w};
     j["fe_seconds"] = r.fe_seconds;
   }
   return j;
+}
+
+std::string optimize_warning(const OptimizeResult& r) {
+  if (!r.fe_adapt.passes || r.fe_adapt.converged)
+    return "";
+  std::string at;
+  char deg[32];
+  for (double a : r.fe_adapt.stopped_deg)
+    std::snprintf(deg, sizeof deg, " %g", a), at += deg;
+  return "the FE check's adaptive refinement stopped at a limit before its accuracy at" + at +
+         " deg (fe_error_estimate is the estimate reached)";
 }
 
 std::string optimize_history_csv(const OptimizeOptions& options, const OptimizeResult& r) {
@@ -379,9 +410,11 @@ int run_optimize_command(const OptimizeOptions& options) {
     std::printf("subject  %s: slack %.4g (0: the constraint is active)\n",
                 options.constraints[i].text.c_str(), 0.0 - r.violations[i]);
   if (r.fe_objective)
-    std::printf("FE       %s = %.8g, FE - analytic = %.4g (%.3g %%), %.0f s\n", objective.c_str(),
-                *r.fe_objective, *r.fe_objective - r.objective,
+    std::printf("FE       %s = %.8g +- %.2g (estimated), FE - analytic = %.4g (%.3g %%), %.0f s\n",
+                objective.c_str(), *r.fe_objective, r.fe_error, *r.fe_objective - r.objective,
                 100 * (*r.fe_objective - r.objective) / std::abs(r.objective), r.fe_seconds);
+  if (const auto w = optimize_warning(r); !w.empty())
+    std::fprintf(stderr, "magfem: warning: %s\n", w.c_str());
   std::printf("wrote    %s/%s, %s\n", options.study.out_dir.c_str(), written[0].c_str(),
               written[1].c_str());
   return 0;

@@ -1,13 +1,14 @@
 #pragma once
 // `magfem optimize CASE.yaml --vary NAME=LO:HI [--vary ..] --maximize|--minimize OBJECTIVE
 //  --rotate GROUP --axis A [--angles LIST] [--constraint "EXPR <= EXPR" ..] [--xtol T]
-//  [--verify-fe] [--out DIR]`:
+//  [--verify-fe [--accuracy PCT [--max-passes N] [--max-unknowns N]]] [--out DIR]`:
 // a bounded derivative-free optimizer (NLopt's COBYLA) over case-file parameters with the
 // analytic sweep as the model (studies/study.hpp objectives), then, with --verify-fe, one FE
 // sweep at the optimum that reports the FE objective beside the analytic one. A constraint
 // is an inequality between two expressions of the varied parameters (the case file's
 // expression syntax, in the parameters' own units), e.g. "R_out - R_in >= 10".
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,10 @@ struct OptimizeResult {
   std::string method; // of the analytic sweeps
   std::string stop;   // NLopt's reason
   std::optional<double> fe_objective;
+  // The FE check's estimated error (N m; NaN: none) and its adaptive refinement (with the
+  // case's adapt: or --accuracy).
+  double fe_error = std::numeric_limits<double>::quiet_NaN();
+  StudyDesignAdapt fe_adapt;
   double fe_seconds = 0;
 };
 
@@ -71,9 +76,13 @@ run_optimize(const OptimizeOptions& options,
              const std::function<void(const OptimizeEvaluation&)>& on_evaluation = {});
 
 // summary.json but the provenance: case, method, optimizer, sense, objective, optimum,
-// constraints, analytic_value, evaluations, stop, and the FE check's entries. Also
+// constraints, analytic_value, evaluations, stop, and the FE check's entries (fe_value,
+// fe_error_estimate, fe_adapt, warnings). Also
 // magfem.optimize's `summary` in Python.
 nlohmann::ordered_json optimize_summary(const OptimizeOptions& options, const OptimizeResult& r);
+
+// The warning of an FE check that stopped at a limit before its accuracy ("" otherwise).
+std::string optimize_warning(const OptimizeResult& r);
 
 // history.csv: evaluation (1-based), the variables, the objective (its study column name), one
 // row per evaluation in the order the optimizer asked.

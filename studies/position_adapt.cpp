@@ -20,6 +20,11 @@ PositionAdapt position_adapt(const std::optional<AdaptHistory>& history) {
                                           : last.quantity_error_pct.front()};
 }
 
+double position_adapt_error(const PositionAdapt& a, double magnitude) {
+  return a.passes && std::isfinite(a.error_pct) ? a.error_pct / 100 * std::abs(magnitude)
+                                                : std::numeric_limits<double>::quiet_NaN();
+}
+
 void add_position_adapt(nlohmann::json& row, const PositionAdapt& a) {
   row["adapt_passes"] = a.passes;
   row["adapt_converged"] = a.converged;

@@ -24,6 +24,10 @@ void aim_adapt_at(CaseSpec& spec, const std::string& force_name, const std::stri
 
 PositionAdapt position_adapt(const std::optional<AdaptHistory>& history);
 
+// The refined quantity's estimated error in its unit, from its relative estimate and its
+// magnitude; NaN when the position did not adapt or has no estimate.
+double position_adapt_error(const PositionAdapt& a, double magnitude);
+
 // The checkpoint's keys (absent in checkpoints written before adaptive sweeps: one mesh).
 void add_position_adapt(nlohmann::json& row, const PositionAdapt& a);
 PositionAdapt position_adapt_from_json(const nlohmann::json& row);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -86,6 +87,35 @@ std::vector<double> design_angles(const StudyOptions& o) {
   return angles;
 }
 
+// A position's estimated torque error, N m: the adaptive loop's estimate for the torque it
+// refined (a relative error of |T|, which bounds the error of any component), else the last
+// mesh's own (the stress sphere's); NaN if it has neither.
+double position_torque_error(const SweepRow& r) {
+  if (const double adapted = position_adapt_error(r.adapt, r.torque.norm()); !std::isnan(adapted))
+    return adapted;
+  return r.torque_bound > 0 ? r.torque_bound : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The adaptive record of a design from its positions' rows.
+StudyDesignAdapt design_adapt(const std::vector<SweepRow>& rows) {
+  StudyDesignAdapt a;
+  a.converged = true;
+  for (const auto& r : rows) {
+    a.unknowns = std::max(a.unknowns, r.unknowns);
+    if (!r.adapt.passes)
+      continue;
+    a.passes = std::max(a.passes, r.adapt.passes);
+    // NaN (no estimate) wins: the design's largest error is then unknown
+    a.error_pct = std::isnan(r.adapt.error_pct) || std::isnan(a.error_pct)
+                      ? r.adapt.error_pct + a.error_pct
+                      : std::max(a.error_pct, r.adapt.error_pct);
+    if (!r.adapt.converged)
+      a.converged = false, a.stopped_deg.push_back(r.angle_deg);
+  }
+  a.converged = a.converged && a.passes > 0;
+  return a;
+}
+
 } // namespace
 
 StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<double>& values) {
@@ -96,7 +126,10 @@ StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<doubl
     ParameterOverrides overrides;
     for (std::size_t i = 0; i < values.size(); ++i)
       overrides[o.parameters[i].name] = values[i];
-    const CaseSpec spec = o.read ? o.read(overrides) : read_case(o.case_file, overrides);
+    CaseSpec spec = o.read ? o.read(overrides) : read_case(o.case_file, overrides);
+    if (!o.sweep.analytic) // each position then refines for its torque (studies/sweep.hpp)
+      apply_adapt_overrides(spec.adapt, o.adapt,
+                            {cli, "--accuracy", "--max-passes", "--max-unknowns"});
     SweepOptions so = o.sweep;
     so.angles_deg = design_angles(o);
     // A design's sweep stays on its process (its positions on that process's threads), with
@@ -116,14 +149,26 @@ StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<doubl
     std::size_t next_at = n_peak;
     for (const auto& obj : o.objectives) {
       if (obj.kind == StudyObjective::Kind::peak_torque) {
-        double peak = 0;
-        for (std::size_t i = 0; i < n_peak; ++i)
+        // |max_i a_i - max_i b_i| <= max_i |a_i - b_i|: the peak's error is at most the
+        // largest of its positions'.
+        // A position without an estimate leaves the peak's unknown (NaN).
+        double peak = 0, error = 0;
+        for (std::size_t i = 0; i < n_peak; ++i) {
           peak = std::max(peak, std::abs(rows[i].torque.dot(axis)));
+          const double e = position_torque_error(rows[i]);
+          error = std::isnan(e) || std::isnan(error) ? e + error : std::max(error, e);
+        }
         d.objectives.push_back(peak);
+        d.objective_errors.push_back(error);
       } else {
+        d.objective_errors.push_back(position_torque_error(rows[next_at]));
         d.objectives.push_back(rows[next_at++].torque.dot(axis));
       }
     }
+    if (so.analytic) // the analytic figures are torque_accuracy's
+      d.objective_errors.clear();
+    else
+      d.adapt = design_adapt(rows);
     d.method = sweep_method(rows, so);
     for (const auto& r : rows)
       d.torque_accuracy = std::max(d.torque_accuracy, r.torque_bound);
@@ -166,6 +211,12 @@ const OptionTable<StudyArgs>& study_option_table() {
           .value("--mesh-scale", "S",
                  [](A& a, S, S v) { a.options.sweep.mesh_scale = parse_cli_mesh_scale(v); })
           .value("--order", "1|2", [](A& a, S, S v) { a.options.sweep.order = parse_cli_order(v); })
+          .value("--accuracy", "PCT",
+                 [](A& a, S opt, S v) { parse_cli_adapt(opt, v, a.options.adapt); })
+          .value("--max-passes", "N",
+                 [](A& a, S opt, S v) { parse_cli_adapt(opt, v, a.options.adapt); })
+          .value("--max-unknowns", "N",
+                 [](A& a, S opt, S v) { parse_cli_adapt(opt, v, a.options.adapt); })
           .value("--jobs", "N",
                  [](A& a, S opt, S v) {
                    a.options.sweep.jobs = static_cast<int>(parse_cli_number(opt, v));
@@ -198,6 +249,12 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
   if (analytic && fe)
     throw InputError(cli, 0, "--fe", "give --analytic or --fe, not both");
   o.sweep.analytic = !fe;
+  for (const auto& [given, name] : {std::pair{o.adapt.accuracy_pct.has_value(), "--accuracy"},
+                                    std::pair{o.adapt.max_passes.has_value(), "--max-passes"},
+                                    std::pair{o.adapt.max_unknowns.has_value(), "--max-unknowns"}})
+    if (given && !fe)
+      throw InputError(cli, 0, name,
+                       "refines the FE mesh: give --fe (the analytic models have no mesh)");
   if (o.parameters.empty())
     throw InputError(cli, 0, "--param", "give at least one --param NAME=START:STEP:END");
   if (o.objectives.empty())
@@ -237,10 +294,21 @@ std::string design_key(const std::vector<double>& values) {
 // What study.csv and summary.json need of a finished design (doubles exact: nlohmann::json
 // writes the shortest text that reads back as the same double).
 nlohmann::json design_to_json(const StudyDesign& d) {
+  nlohmann::json errors = nlohmann::json::array(); // NaN has no JSON: null
+  for (double e : d.objective_errors)
+    errors.push_back(std::isnan(e) ? nlohmann::json(nullptr) : nlohmann::json(e));
   return {{"parameters", d.parameters},
           {"objectives", d.objectives},
+          {"objective_errors", errors},
           {"method", d.method},
           {"torque_accuracy", d.torque_accuracy},
+          {"adapt",
+           {{"passes", d.adapt.passes},
+            {"converged", d.adapt.converged},
+            {"unknowns", d.adapt.unknowns},
+            {"error_pct", std::isnan(d.adapt.error_pct) ? nlohmann::json(nullptr)
+                                                        : nlohmann::json(d.adapt.error_pct)},
+            {"stopped_deg", d.adapt.stopped_deg}}},
           {"seconds", d.seconds}};
 }
 
@@ -256,6 +324,15 @@ std::optional<StudyDesign> design_from_json(const nlohmann::json& j,
     d.objectives = j.at("objectives").get<std::vector<double>>();
     d.method = j.at("method").get<std::string>();
     d.torque_accuracy = j.at("torque_accuracy").get<double>();
+    for (const auto& e : j.at("objective_errors"))
+      d.objective_errors.push_back(e.is_number() ? e.get<double>()
+                                                 : std::numeric_limits<double>::quiet_NaN());
+    const auto& a = j.at("adapt");
+    d.adapt = {a.at("passes").get<int>(), a.at("converged").get<bool>(),
+               a.at("unknowns").get<long>(),
+               a.at("error_pct").is_number() ? a.at("error_pct").get<double>()
+                                             : std::numeric_limits<double>::quiet_NaN(),
+               a.at("stopped_deg").get<std::vector<double>>()};
     d.seconds = j.at("seconds").get<double>();
     d.ok = true;
     return d;
@@ -288,6 +365,13 @@ std::string study_checkpoint_options(const StudyOptions& o) {
   text += o.sweep.analytic ? " analytic tolerance " + exact(o.sweep.analytic_tolerance)
                            : " fe order " + std::to_string(o.sweep.order) + " mesh-scale " +
                                  exact(o.sweep.mesh_scale);
+  // The case's own adapt: is in the file's hash; the command line's goes here.
+  if (o.adapt.accuracy_pct)
+    text += " accuracy " + exact(*o.adapt.accuracy_pct);
+  if (o.adapt.max_passes)
+    text += " max-passes " + std::to_string(*o.adapt.max_passes);
+  if (o.adapt.max_unknowns)
+    text += " max-unknowns " + exact(*o.adapt.max_unknowns);
   return text;
 }
 
@@ -357,19 +441,31 @@ std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign
   std::string out;
   for (const auto& p : options.parameters)
     out += p.name + ",";
-  for (std::size_t i = 0; i < options.objectives.size(); ++i)
-    out += options.objectives[i].name + (i + 1 < options.objectives.size() ? "," : "\n");
+  const bool fe = !options.sweep.analytic;
+  std::vector<std::string> header;
+  for (const auto& o : options.objectives)
+    header.push_back(o.name);
+  if (fe) // extends the analytic columns: the objectives' columns keep their places
+    for (const auto& o : options.objectives)
+      header.push_back(o.name + "_err");
+  for (std::size_t i = 0; i < header.size(); ++i)
+    out += header[i] + (i + 1 < header.size() ? "," : "\n");
   char cell[64];
   for (const auto& d : designs) {
     if (!d.ok)
       continue;
+    std::vector<double> cells = d.objectives;
+    if (fe)
+      cells.insert(cells.end(), d.objective_errors.begin(), d.objective_errors.end());
     std::string line;
     for (double v : d.parameters)
       std::snprintf(cell, sizeof cell, "%.10g,", v), line += cell;
-    for (std::size_t i = 0; i < d.objectives.size(); ++i)
-      std::snprintf(cell, sizeof cell, "%.10g%s", d.objectives[i],
-                    i + 1 < d.objectives.size() ? "," : "\n"),
-          line += cell;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      // an error without an estimate is an empty cell, not "nan"
+      if (!std::isnan(cells[i]))
+        std::snprintf(cell, sizeof cell, "%.10g", cells[i]), line += cell;
+      line += i + 1 < cells.size() ? "," : "\n";
+    }
     out += line;
   }
   return out;
@@ -408,7 +504,47 @@ nlohmann::ordered_json study_summary(const StudyOptions& options,
   // Harmonic form: rigorous truncation bound; the other analytic methods: estimated error.
   if (options.sweep.analytic)
     j["max_torque_error_Nm"] = accuracy;
+  for (const auto& d : designs)
+    if (d.ok && d.adapt.passes)
+      j["adapt"].push_back(
+          {{"parameters", d.parameters},
+           {"converged", d.adapt.converged},
+           {"passes", d.adapt.passes},
+           {"unknowns", d.adapt.unknowns},
+           {"estimated_error_pct", std::isnan(d.adapt.error_pct)
+                                       ? nlohmann::ordered_json(nullptr)
+                                       : nlohmann::ordered_json(d.adapt.error_pct)},
+           {"stopped_deg", d.adapt.stopped_deg}});
+  if (const auto warnings = study_warnings(options, designs); !warnings.empty())
+    j["warnings"] = warnings;
   return j;
+}
+
+std::vector<std::string> study_warnings(const StudyOptions& options,
+                                        const std::vector<StudyDesign>& designs) {
+  const auto number = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, " %g", v);
+    return std::string(text);
+  };
+  std::vector<std::string> out;
+  for (const auto& d : designs) {
+    if (!d.ok || !d.adapt.passes || d.adapt.converged)
+      continue;
+    std::string line = "design (";
+    for (std::size_t i = 0; i < d.parameters.size(); ++i) {
+      if (i)
+        line += ", ";
+      line += options.parameters[i].name + " =" + number(d.parameters[i]);
+    }
+    line += "): adaptive refinement stopped at a limit before its accuracy at";
+    for (double a : d.adapt.stopped_deg)
+      line += number(a);
+    line += " deg (after " + std::to_string(d.adapt.passes) +
+            " passes at most; study.csv's _err columns are the estimates reached)";
+    out.push_back(line);
+  }
+  return out;
 }
 
 int run_study_command(const StudyOptions& options) {
@@ -454,8 +590,11 @@ int run_study_command(const StudyOptions& options) {
     for (double v : d.parameters)
       std::printf("%14.6g", v);
     if (d.ok)
-      for (double v : d.objectives)
-        std::printf(" %22.8g", v);
+      for (std::size_t i = 0; i < d.objectives.size(); ++i) {
+        std::printf(" %22.8g", d.objectives[i]);
+        if (i < d.objective_errors.size()) // FE: its estimate beside it
+          std::printf(" +- %-8.2g", d.objective_errors[i]);
+      }
     else
       std::printf(" FAILED: %s", d.error.c_str());
     std::printf("\n");
@@ -465,9 +604,13 @@ int run_study_command(const StudyOptions& options) {
   if (options.sweep.analytic)
     std::printf("accuracy torque error <= %.2g N m (largest over the designs: %s)\n", accuracy,
                 method == "harmonic_interaction" ? "truncation bound" : "estimate");
+  else
+    std::printf("accuracy +- the estimated FE error of each objective (study.csv: _err columns)\n");
   std::printf("wrote    %s/study.csv%s, summary.json\n", options.out_dir.c_str(),
               plotted ? ", study.png" : "");
   std::fflush(stdout);
+  for (const auto& w : study_warnings(options, designs))
+    std::cerr << "magfem: warning: " << w << "\n";
   if (failed)
     std::cerr << "magfem: " << failed << " of " << designs.size() << " designs failed\n";
   return code_of_root(failed ? 3 : 0);

@@ -1,8 +1,8 @@
 #pragma once
 // `magfem study CASE.yaml --param NAME=START:STEP:END [--param ..] --objective Q [..]
 //  [--rotate GROUP --axis A --angles LIST] [--analytic|--fe] [--mesh-scale S] [--order 1|2]
-//  [--jobs N] [--resume] [--out DIR]`: (--mesh-scale and --order are the FE sweep's, as in
-//  `solve`)
+//  [--accuracy PCT [--max-passes N] [--max-unknowns N]] [--jobs N] [--resume] [--out DIR]`:
+//  (--mesh-scale, --order and the adaptive options are the FE sweep's, as in `solve`)
 // a grid over case-file parameters (casefile/case_parameters.hpp), each design evaluated by a
 // sweep (studies/sweep.hpp: analytic by default, the harmonic form where it applies), writing
 // DIR/study.csv (one column per parameter, one per objective), study.png and summary.json.
@@ -10,6 +10,10 @@
 // Objectives (torque about the rotation axis, on the rotated group, N m):
 //   peak_torque      max over --angles of |T . axis|
 //   torque_at:DEG    T . axis at DEG (one position; --angles not needed)
+//
+// FE: every objective comes with its estimated error (N m, study.csv's `<objective>_err`).
+// With the case's `adapt:` or --accuracy every position a design's objectives need is refined
+// for its torque (studies/sweep.hpp); a position that stops at a limit first is a warning.
 //
 // Every finished design is kept in DIR/.magfem-checkpoint.jsonl as it finishes
 // (pipeline/run_checkpoint.hpp, the sweep's); --resume restores them and evaluates the rest.
@@ -24,6 +28,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "casefile/adapt_spec.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/option_table.hpp"
 #include "studies/sweep.hpp"
@@ -49,6 +54,8 @@ struct StudyOptions {
   std::vector<StudyParameter> parameters;
   std::vector<StudyObjective> objectives;
   SweepOptions sweep; // group, axis, angles, analytic, jobs (angles: peak_torque only)
+  // --fe: --accuracy, --max-passes, --max-unknowns over each design's `adapt:` section.
+  AdaptOverrides adapt;
   std::string out_dir;
   bool quiet = false;  // no progress lines on stderr
   bool resume = false; // continue from the checkpoint in out_dir
@@ -66,9 +73,21 @@ StudyOptions parse_study_options(const std::vector<std::string>& args);
 // The options parse_study_options takes (for `magfem help study` and the completion).
 std::vector<OptionInfo> study_option_infos();
 
+// An FE design's adaptive refinement, over the positions its objectives need.
+struct StudyDesignAdapt {
+  int passes = 0;         // the most passes a position took (0: every position on one mesh)
+  bool converged = false; // every position reached the accuracy
+  long unknowns = 0;      // the largest last mesh of its positions
+  double error_pct = 0;   // the largest estimated relative torque error of its positions
+  std::vector<double> stopped_deg; // positions that stopped at a limit first
+};
+
 struct StudyDesign {
   std::vector<double> parameters; // parallel to StudyOptions::parameters
   std::vector<double> objectives; // parallel to StudyOptions::objectives
+  // FE: each objective's estimated error, N m (NaN: none); empty for analytic designs.
+  std::vector<double> objective_errors;
+  StudyDesignAdapt adapt;
   bool ok = false;
   std::string error;
   std::string method; // sweep_method() of its sweep
@@ -104,14 +123,20 @@ std::string study_checkpoint_identity(const StudyOptions& options);
 // cases given as text, or with parameter overrides under the grid).
 std::string study_checkpoint_options(const StudyOptions& options);
 
-// study.csv: the parameter names, then the objective names; successful designs only.
+// study.csv: the parameter names, then the objective names, then (FE) `<objective>_err` for
+// each; successful designs only.
 std::string study_csv(const StudyOptions& options, const std::vector<StudyDesign>& designs);
 
 // summary.json but the provenance: case, method, group, axis, angles_deg, parameters,
-// objectives, designs, failed_designs, failures, seconds, max_torque_error_Nm (analytic).
+// objectives, designs, failed_designs, failures, seconds, max_torque_error_Nm (analytic),
+// adapt (FE designs that adapted: parameters, converged, passes, unknowns) and warnings.
 // Also magfem.study's `summary` in Python.
 nlohmann::ordered_json study_summary(const StudyOptions& options,
                                      const std::vector<StudyDesign>& designs);
+
+// One warning per adapted design that stopped at a limit before its accuracy.
+std::vector<std::string> study_warnings(const StudyOptions& options,
+                                        const std::vector<StudyDesign>& designs);
 
 // The command: runs, writes study.csv, study.png (if gnuplot is there) and summary.json
 // through one OutputStage, prints a table; returns the exit code (3 if any design failed).

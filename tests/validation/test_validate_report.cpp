@@ -233,6 +233,53 @@ TEST(ValidateReport, PageIsPlainForAReader) {
     }
 }
 
+// The compact table shows an FE entry's discretisation estimate (change from the next coarser
+// mesh, in the details already) beside its error, in points for a percentage value; an
+// entry without one shows none; the verdict stays the error's.
+TEST(ValidateReport, CompactTableShowsTheFeEstimateBesideTheError) {
+  FakeRun f;
+  EntryResult* relative = nullptr;
+  EntryResult* at_most = nullptr;
+  EntryResult* plain = nullptr;
+  for (auto& r : f.run.results) {
+    if (r.status != "pass" || !r.entry->published)
+      continue;
+    if (r.entry->check == CatalogueEntry::Check::at_most && !at_most)
+      at_most = &r;
+    else if (r.entry->check == CatalogueEntry::Check::relative && !relative)
+      relative = &r;
+    else if (r.entry->check == CatalogueEntry::Check::relative && !plain)
+      plain = &r;
+  }
+  ASSERT_TRUE(relative && at_most && plain);
+  // An estimate larger than the tolerance must not turn the pass into anything else.
+  relative->fe = *relative->entry->published;
+  relative->fe_error_pct = 0.0;
+  relative->discretisation_pct = 2 * relative->entry->tolerance_pct;
+  at_most->fe = 0.5 * at_most->entry->tolerance_pct;
+  at_most->fe_error_pct = at_most->fe;
+  at_most->discretisation_pct = 0.0123;
+  plain->fe = *plain->entry->published;
+  plain->fe_error_pct = 0.0;
+  const std::string html = validation_html(f.run);
+  const auto row = [&](const EntryResult* r) {
+    const auto link = html.find("<a href=\"#" + r->entry->id + "\">");
+    EXPECT_NE(link, std::string::npos) << r->entry->id;
+    const auto start = html.rfind("<tr>", link);
+    return html.substr(start, html.find("</tr>", link) - start);
+  };
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "(FE estimate %g %%)",
+                relative->discretisation_pct.value());
+  const std::string r1 = row(relative);
+  EXPECT_NE(r1.find(expected), std::string::npos) << r1;
+  EXPECT_NE(r1.find(" within &plusmn;"), std::string::npos) << r1;
+  EXPECT_NE(r1.find(">pass<"), std::string::npos) << r1;
+  const std::string r2 = row(at_most);
+  EXPECT_NE(r2.find("(FE estimate 0.012 points)"), std::string::npos) << r2;
+  EXPECT_EQ(row(plain).find("FE estimate"), std::string::npos) << row(plain);
+}
+
 TEST(ValidateReport, PlotsHaveRoundTicksAndLegendsInsideTheImage) {
   std::string why;
   if (!gnuplot_available(why))
