@@ -229,4 +229,14 @@ std::vector<std::vector<int>> mirror_parts_2d(const CaseSpec& spec) {
   return out;
 }
 
+std::vector<int> share_images_2d(const CaseSpec& spec) {
+  const Geometry2D& g = spec.geometry2d;
+  const double tol = 1e-9 * g.outer.radius;
+  std::vector<int> out(g.parts.size(), -1);
+  for (std::size_t i = 0; i < g.parts.size() && !g.planes.empty(); ++i)
+    if (const std::vector<Vec2> xs = interior_points(g, i); wholly_beyond_planes(xs, g.planes, tol))
+      out[i] = part_at(g, fold_point_2d(g.planes, xs.front()).point, tol);
+  return out;
+}
+
 } // namespace magfem

@@ -35,4 +35,10 @@ std::vector<double> region_symmetry_factors_2d(const CaseSpec& spec);
 // the plane cuts), -1 when the image lies in air (only in a case check_symmetry_2d refuses).
 std::vector<std::vector<int>> mirror_parts_2d(const CaseSpec& spec);
 
+// Per part: -1 when the model keeps some of it (it is meshed), else the part in the model's
+// share whose mirror image it is (through every plane it lies beyond: a quarter model's part
+// in the far quadrant is the image of the one in the kept quadrant), -1 if none (only in a
+// case check_symmetry_2d refuses).
+std::vector<int> share_images_2d(const CaseSpec& spec);
+
 } // namespace magfem

@@ -149,6 +149,26 @@ std::vector<double> region_symmetry_factors(const CaseSpec& spec) {
   return out;
 }
 
+std::vector<int> share_images(const CaseSpec& spec) {
+  const auto& parts = spec.geometry3d.parts;
+  const auto& planes = spec.geometry3d.symmetry;
+  const double tol = 1e-9 * spec.geometry3d.outer.radius;
+  std::vector<int> out(parts.size(), -1);
+  if (planes.empty())
+    return out; // (and no surface parts to sample: they are refused with planes)
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const Part3D& part = parts[i];
+    const std::vector<Vec3> xs = interior_points(part);
+    if (!wholly_beyond_planes(xs, planes, tol))
+      continue;
+    const Vec3 y = fold_point(planes, xs.front()).point;
+    for (std::size_t q = 0; q < parts.size() && out[i] < 0; ++q)
+      if (part_contains(parts[q], y, tol))
+        out[i] = int(q);
+  }
+  return out;
+}
+
 void check_symmetry_3d(const CaseSpec& spec) {
   if (spec.geometry3d.symmetry.empty())
     return;

@@ -25,4 +25,9 @@ void check_symmetry_3d(const CaseSpec& spec);
 // 1 for a part on one side, whose mirror image is another part beyond the plane).
 std::vector<double> region_symmetry_factors(const CaseSpec& spec);
 
+// Per part: -1 when the model keeps some of it (it is meshed), else the part in the model's
+// share whose mirror image it is (through every plane it lies beyond), -1 if none (only in a
+// case check_symmetry_3d refuses).
+std::vector<int> share_images(const CaseSpec& spec);
+
 } // namespace magfem

@@ -1,7 +1,8 @@
 #pragma once
 // The share of a part a model keeps under symmetry planes, for 2D and 3D: a plane that cuts
 // the part (its interior points lie on both sides) keeps half of it, so the whole part is
-// 2^(planes cutting it) times the meshed share. A part beside a plane is whole.
+// 2^(planes cutting it) times the meshed share. A part beside a plane is whole; a part beyond
+// one is not kept at all.
 #include <vector>
 
 namespace magfem {
@@ -22,6 +23,22 @@ double symmetry_cut_factor(const std::vector<Point>& xs, const std::vector<Plane
       factor *= 2;
   }
   return factor;
+}
+
+// Whether the model keeps none of a part: every interior point lies beyond some plane (the
+// mesher keeps the side where each plane's coordinate is >= 0). Such a part is not meshed;
+// its mirror image in the share stands for it.
+template <class Point, class Plane>
+bool wholly_beyond_planes(const std::vector<Point>& xs, const std::vector<Plane>& planes,
+                          double tol) {
+  for (const Point& x : xs) {
+    bool kept = true;
+    for (const Plane& p : planes)
+      kept = kept && x[p.axis] > -tol;
+    if (kept)
+      return false;
+  }
+  return !xs.empty();
 }
 
 } // namespace magfem

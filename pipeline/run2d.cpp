@@ -227,11 +227,14 @@ public:
     const auto& r = run.energy.regions[i];
     if (r.area_m2 == 0)
       return nullptr;
-    return {{"name", r.name},
-            {"area_m2", r.area_m2},
-            {"energy_J", r.energy_J_per_m * length(run)},
-            {"peak_B_T", r.peak_B_T},
-            {"nonlinear", r.nonlinear}};
+    nlohmann::ordered_json row = {{"name", r.name},
+                                  {"area_m2", r.area_m2},
+                                  {"energy_J", r.energy_J_per_m * length(run)},
+                                  {"peak_B_T", r.peak_B_T},
+                                  {"nonlinear", r.nonlinear}};
+    if (!r.from_image.empty())
+      row["from_image"] = r.from_image;
+    return row;
   }
   static void add_results(nlohmann::ordered_json& j, const Run2D& run) {
     if (!run.forces.empty()) {

@@ -19,6 +19,7 @@
 #include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
+#include "pipeline/mirror_image_regions.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_case.hpp"
@@ -110,7 +111,8 @@ void check_same_mesh_everywhere(const Mesh3D& mesh) {
 
 // The model's share -> the whole device (mesh/symmetry_plane3d.hpp). Energies: 2 per plane
 // in all (the energy density is even about each plane), and per part 2 per plane that cuts it
-// (a part on one side is whole in the model; its image beyond is another part, not meshed).
+// (a part on one side is whole in the model; its image beyond is another part, not meshed,
+// reported as the mirror of the first: pipeline/mirror_image_regions.hpp).
 // Flux linkages and inductances: 2 per plane, every coil being its own mirror image
 // (check_symmetry_3d) so that B . h_k is even too. Forces, torques and probes need nothing:
 // they sample the whole device's field through the mirror (PointLocator3D).
@@ -128,6 +130,11 @@ void scale_to_whole_device(Run3D& run) {
     if (i < run.mesh.part_volumes.size())
       run.mesh.part_volumes[i] *= f;
   }
+  const std::vector<int> images = share_images(run.spec);
+  fill_mirror_image_regions(run.energy.regions, images);
+  for (std::size_t i = 0; i < images.size() && i < run.mesh.part_volumes.size(); ++i)
+    if (images[i] >= 0)
+      run.mesh.part_volumes[i] = run.mesh.part_volumes[std::size_t(images[i])];
   run.error_estimate.error_norm2_J *= factor;
   run.error_estimate.energy_norm2_J *= factor;
   for (auto& c : run.coil_results.coils)
@@ -369,6 +376,8 @@ public:
                                   {"nonlinear", r.nonlinear}};
     if (i < run.mesh.part_volumes.size())
       row["meshed_volume_m3"] = run.mesh.part_volumes[i];
+    if (!r.from_image.empty())
+      row["from_image"] = r.from_image;
     return row;
   }
   static void add_results(nlohmann::ordered_json& j, const Run3D& run) {

@@ -11,6 +11,7 @@
 #include "core/constants.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
+#include "mesh/symmetry_plane2d.hpp"
 #include "pipeline/analytic_axi.hpp"
 #include "pipeline/analytic_coils3d.hpp"
 #include "pipeline/build_info.hpp"
@@ -90,21 +91,43 @@ void note_sections_not_computed(AnalyticRun& run) {
                               ": not computed by the analytic models (magfem solve writes it)");
 }
 
+// Symmetry planes tell the mesher which share of the device to mesh; the case file still
+// describes the whole device, which is what the analytic models take (a plane's cut applied
+// to their geometry would leave half a coil or magnet). Dropped, and said so in the notes.
+CaseSpec whole_device(CaseSpec spec, std::vector<std::string>& notes) {
+  std::vector<std::string> names;
+  for (const SymmetryPlane3D& p : spec.geometry3d.symmetry)
+    names.push_back(axis_name(p.axis));
+  for (const SymmetryPlane2D& p : spec.geometry2d.planes)
+    names.push_back(plane_name_2d(p, spec.axisymmetric()));
+  for (const std::string& name : names)
+    notes.push_back("symmetry plane " + name +
+                    " = 0: used by magfem solve to mesh a share only; the analytic models "
+                    "evaluate the whole device the case describes");
+  spec.geometry3d.symmetry.clear();
+  spec.geometry2d.planes.clear();
+  return spec;
+}
+
 } // namespace
 
 std::unique_ptr<AnalyticRun> run_case_analytic(CaseSpec spec, const AnalyticOptions& options) {
   const auto t_start = Clock::now();
   auto run = std::make_unique<AnalyticRun>();
   run->options = options;
+  std::vector<std::string> plane_notes;
+  spec = whole_device(std::move(spec), plane_notes);
   if (spec.axisymmetric()) {
     run->spec = std::move(spec);
     run_axi_analytic(*run);
+    run->scene.notes.insert(run->scene.notes.end(), plane_notes.begin(), plane_notes.end());
     note_sections_not_computed(*run);
     run->evaluate_s = run->total_s = since(t_start);
     return run;
   }
   run->scene = analytic_scene(spec);
   run->spec = std::move(spec);
+  run->scene.notes.insert(run->scene.notes.end(), plane_notes.begin(), plane_notes.end());
   note_sections_not_computed(*run);
   auto t0 = Clock::now();
   const BatchField field = make_model(*run);

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "casefile/symmetry_check2d.hpp"
+#include "pipeline/mirror_image_regions.hpp"
 #include "pipeline/run2d.hpp"
 #include "postproc/lorentz2d.hpp"
 #include "solver/triangle_lagrange.hpp"
@@ -74,10 +75,10 @@ std::vector<double> whole_part_areas(const CaseSpec& spec, const Mesh2D& mesh) {
     for (std::size_t i = 0; i < area.size(); ++i)
       area[i] *= factor[i];
     // A part wholly beyond a plane is not meshed: its area is its image's.
-    for (const std::vector<int>& image : mirror_parts_2d(spec))
-      for (std::size_t i = 0; i < area.size(); ++i)
-        if (area[i] == 0 && image[i] >= 0)
-          area[i] = area[std::size_t(image[i])];
+    const std::vector<int> images = share_images_2d(spec);
+    for (std::size_t i = 0; i < area.size(); ++i)
+      if (images[i] >= 0)
+        area[i] = area[std::size_t(images[i])];
   }
   return area;
 }
@@ -94,6 +95,7 @@ void scale_to_whole_device_2d(Run2D& run) {
     r.energy_J_per_m *= f;
     r.area_m2 *= f;
   }
+  fill_mirror_image_regions(run.energy.regions, share_images_2d(run.spec));
   // The estimate's relative errors are ratios of two energies scaled alike.
   run.error.total_eta2 *= factor;
 }

@@ -38,8 +38,8 @@ EnergySummary2D summarize_energy_2d(const Field2D& field, const std::vector<std:
     out.regions[i].part = static_cast<int>(i);
     out.regions[i].nonlinear = problem.parts[i].material->is_nonlinear();
   }
-  out.regions[names.size()] = {"air", region_background, 0, 0, 0, false};
-  out.regions[names.size() + 1] = {"exterior (open boundary)", region_shell, 0, 0, 0, false};
+  out.regions[names.size()] = {"air", region_background, 0, 0, 0, false, {}};
+  out.regions[names.size() + 1] = {"exterior (open boundary)", region_shell, 0, 0, 0, false, {}};
 
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
   static const std::array<std::array<double, 3>, 3> corners = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};

@@ -14,11 +14,13 @@ namespace magfem {
 
 struct RegionSummary2D {
   std::string name;
-  int part = 0;              // part index, or region_background / region_shell
+  int part = 0; // part index, or region_background / region_shell
   double area_m2 = 0;
   double energy_J_per_m = 0;
-  double peak_B_T = 0;       // max |B| over the region (0 for the shell)
+  double peak_B_T = 0; // max |B| over the region (0 for the shell)
   bool nonlinear = false;
+  std::string from_image; // a part the model does not mesh: the part whose values stand
+                          // for it by symmetry (pipeline/mirror_image_regions.hpp)
 };
 
 struct EnergySummary2D {

@@ -80,8 +80,8 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
     out.regions[i].part = static_cast<int>(i);
     out.regions[i].nonlinear = problem.parts[i].material->is_nonlinear();
   }
-  out.regions[names.size()] = {"air", region_background_3d, 0, 0, 0, false};
-  out.regions[names.size() + 1] = {"exterior (open boundary)", region_shell_3d, 0, 0, 0, false};
+  out.regions[names.size()] = {"air", region_background_3d, 0, 0, 0, false, {}};
+  out.regions[names.size() + 1] = {"exterior (open boundary)", region_shell_3d, 0, 0, 0, false, {}};
 
   // Per element (volume, energy, peak |B|) on all cores, then summed in element order: the
   // same bits whatever the thread count.

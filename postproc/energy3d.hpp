@@ -21,6 +21,8 @@ struct RegionSummary3D {
   double energy_J = 0;
   double peak_B_T = 0; // max |B| over the DOF nodes of the region's tets (0 for the shell)
   bool nonlinear = false;
+  std::string from_image; // a part the model does not mesh: the part whose values stand for it
+                          // by symmetry (pipeline/mirror_image_regions.hpp)
 };
 
 struct EnergySummary3D {
