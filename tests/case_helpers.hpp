@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -122,6 +124,17 @@ inline std::string write_temp_case(const std::string& name, const std::string& t
   const auto path = dir / name;
   std::ofstream(path) << text;
   return path.string();
+}
+
+// The example's text (path relative to examples/) with its `boundary.symmetry` key (an inline
+// list, or a block list below it) removed: the same device as a full model. Empty if the
+// example has no such key.
+inline std::string example_without_symmetry(const std::string& relative) {
+  std::ifstream in(example(relative));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string out =
+      std::regex_replace(text, std::regex("\n *symmetry:[^\n]*(\n +- [^\n]*)*"), "");
+  return out == text ? std::string() : out;
 }
 
 // The entry called `name` of a run's forces (or anything with a `name`); throws if none.

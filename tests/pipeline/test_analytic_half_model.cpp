@@ -9,10 +9,6 @@
 // winding"; in 3D the sphere cut to its upper half: probes off by up to ~0.3 T).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <regex>
-#include <sstream>
-
 #include "pipeline/run_analytic.hpp"
 #include "tests/case_helpers.hpp"
 
@@ -20,22 +16,11 @@ using namespace magfem;
 
 namespace {
 
-// The example's text with its `symmetry:` key (inline list, or block list below it) removed.
-std::string without_symmetry(const std::string& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string out =
-      std::regex_replace(text.str(), std::regex("\n *symmetry:[^\n]*(\n +- [^\n]*)*"), "");
-  EXPECT_NE(out, text.str()) << file << " has no symmetry key";
-  return out;
-}
-
 void expect_same_analytic_outputs(const std::string& example, const std::string& name) {
-  const std::string file = test::example(example);
-  const auto half = run_case_analytic(read_case(file), {});
-  const auto full =
-      run_case_analytic(read_case(test::write_temp_case(name, without_symmetry(file))), {});
+  const std::string whole = test::example_without_symmetry(example);
+  ASSERT_FALSE(whole.empty()) << example << " has no symmetry key";
+  const auto half = run_case_analytic(read_case(test::example(example)), {});
+  const auto full = run_case_analytic(read_case(test::write_temp_case(name, whole)), {});
   ASSERT_EQ(half->probes.size(), full->probes.size());
   ASSERT_FALSE(half->probes.empty());
   for (std::size_t p = 0; p < half->probes.size(); ++p) {

@@ -2,7 +2,7 @@
 // lists it with its image's energy, size and peak |B| and `from_image` naming the image
 // (pipeline/mirror_image_regions.hpp), so that, as in a full model, the regions' energies sum to
 // the whole device's energy. Checked on
-//   - the axisymmetric coil pair about z = 0 (tests/pipeline/test_mirror_coils_axi.cpp's case),
+//   - the axisymmetric coil pair about z = 0 (examples/axi/coil_pair_half.yaml),
 //   - two magnetized spheres one above the other about z = 0 in 3D,
 // each as a half and a full model: per region, the half model's energy equals the full model's
 // within the element error, and the listed regions sum to energy_J.
@@ -66,19 +66,6 @@ void expect_half_matches_full(const nlohmann::ordered_json& half,
   EXPECT_EQ(h.at(image).at("peak_B_T"), h.at(of).at("peak_B_T"));
 }
 
-const char* coil_pair = R"(
-dimension: axi
-unit: mm
-regions:
-  - {name: upper, shape: rectangle, center: [20, 8], width: 4, height: 4, turns: 100,
-     current: 1, mesh_size: 0.5}
-  - {name: lower, shape: rectangle, center: [20, -8], width: 4, height: 4, turns: 100,
-     current: 1, mesh_size: 0.5}
-boundary: {type: open, radius: 50, shell_ratio: 1.5SYMMETRY}
-mesh: {size: 3, chord_tolerance: 0.005}
-solver: {order: 2}
-)";
-
 // Two spheres (radius 4 mm at z = +-7 mm) magnetized along +z: each other's images about z = 0
 // under field: normal (M(R x) = -R M(x)). Coarse: seconds.
 const char* sphere_pair = R"(
@@ -105,20 +92,19 @@ std::string with_symmetry(const char* text, bool half) {
 
 } // namespace
 
-// Measured: the half and the full model's region energies differ by 4e-7 of the total (their
-// meshes differ; the coils' energy is resolved to 2.7e-5 of L_AA, test_mirror_coils_axi.cpp).
-// 1e-5 is well under an image left out (the lower coil's share: a third of the total) or
-// doubled.
+// examples/axi/coil_pair_half.yaml and the same file without its plane. Measured: the half
+// and the full model's region energies differ by at most 4e-7 of the total (their meshes
+// differ; the coils' energy is resolved to 2.7e-5 of L_AA, test_mirror_coils_axi.cpp).
+// 1e-5 is well under an image left out or doubled (the lower coil holds 4.6 % of the total).
 TEST(MirrorImageRegions, AxisymmetricCoilPairHalfModelListsTheLowerCoil) {
-  const auto full = run_case_2d(read_case(
-      test::write_temp_case("image_regions_axi_full.yaml", with_symmetry(coil_pair, false))));
-  const auto half = run_case_2d(read_case(
-      test::write_temp_case("image_regions_axi_half.yaml", with_symmetry(coil_pair, true))));
+  const auto full = run_case_2d(read_case(test::write_temp_case(
+      "image_regions_axi_full.yaml", test::example_without_symmetry("axi/coil_pair_half.yaml"))));
+  const auto half = run_case_2d(read_case(test::example("axi/coil_pair_half.yaml")));
   expect_half_matches_full(summary_json_2d(*half), summary_json_2d(*full), "lower", "upper", 1e-5);
 }
 
-// Measured: per region the half and the full model differ by REL3D of the total (different
-// meshes of the same sizes). TOL3D bounds that; the image's energy is ~X of the total.
+// Measured: per region the half and the full model differ by at most 2.3e-6 of the total
+// (different meshes of the same sizes). 1e-4 bounds that; each sphere holds 16 % of the total.
 TEST(MirrorImageRegions, SpherePairHalfModelListsTheBottomSphere) {
   const auto full = run_case_3d(read_case(
       test::write_temp_case("image_regions_3d_full.yaml", with_symmetry(sphere_pair, false))));
