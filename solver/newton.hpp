@@ -36,6 +36,7 @@ struct NewtonOptions {
   // tolerance follows the residual's progress (Eisenstat and Walker's second choice), between
   // linear.cg_tolerance and this ceiling; the last steps, where Newton is quadratic, solve to
   // linear.cg_tolerance. 0 = every step to linear.cg_tolerance. No effect on direct solves.
+  // (The start problem's solve is not a Newton step and goes tighter: solver/newton.cpp.)
   double forcing_max = 0.1;
   // Linear systems: hand the factorized matrix back (NewtonReport::factorized) for further
   // solves with the same operator. Off by default: it keeps the matrix and the preconditioner
