@@ -65,6 +65,7 @@ struct Run2D {
   CaseSpec spec;
   Mesh2D mesh;
   std::unique_ptr<DofMap2D> dofs;
+  int free_unknowns = 0; // the DOFs the system solves for: dofs less those boundary values fix
   Problem2D problem;
   std::unique_ptr<Field2D> field;
   NewtonReport report;
@@ -72,9 +73,9 @@ struct Run2D {
   ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
-  std::vector<SectionFlux> sections; // parallel to spec.sections (per energy_per)
-  std::vector<CoilResult2D> coils;   // axisymmetric only
-  std::vector<std::string> warnings; // pipeline/result_checks.hpp
+  std::vector<SectionFlux> sections;     // parallel to spec.sections (per energy_per)
+  std::vector<CoilResult2D> coils;       // axisymmetric only
+  std::vector<std::string> warnings;     // pipeline/result_checks.hpp
   DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;
   std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)

@@ -392,16 +392,15 @@ public:
   }
   static std::string describe_head(const Run3D& run) {
     char buf[640];
-    std::snprintf(
-        buf, sizeof buf,
-        "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-        "solve    order %d, %d unknowns, %s, residual %.2e\n"
-        "energy   %.6g J%s\n",
-        run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
-        run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-        describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
-        run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
+    std::snprintf(buf, sizeof buf, "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n",
+                  run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+                  run.mesh.quality.max_dihedral_deg);
     std::string s = buf;
+    s += describe_solve_line(run.spec.order, run.free_unknowns, run.dofs->n_dofs(), run.report);
+    std::snprintf(buf, sizeof buf, "energy   %.6g J%s\n", run.energy.total_J,
+                  run.spec.geometry3d.symmetry.empty() ? ""
+                                                       : " (whole device; the model is its share)");
+    s += buf;
     if (run.dofs->n_straightened() > 0)
       s += "note     " + std::to_string(run.dofs->n_straightened()) +
            " edge nodes on spheres kept straight: curving them would fold their tets (a finer "
