@@ -147,6 +147,7 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
   if (ov.domain_radius > 0)
     spec.geometry3d.outer.radius = ov.domain_radius;
   spec.geometry3d.options.spheres_curved = spec.order == 2; // DofMap3D::curve_to_spheres
+  spec.geometry3d.options.element_order = spec.order;
 }
 
 } // namespace
