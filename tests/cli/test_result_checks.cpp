@@ -16,10 +16,10 @@
 
 #include <sys/wait.h>
 
-#include "pipeline/run3d.hpp"
-#include "tests/case_helpers.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/run3d.hpp"
+#include "tests/case_helpers.hpp"
 #include "tests/run_cli.hpp"
 
 namespace fs = std::filesystem;
