@@ -354,15 +354,16 @@ CaseSpec read_case_text(const std::string& text, const std::string& path,
   // Parameters first: every field below then reads plain numbers (the unit cannot be one).
   c.parameters =
       apply_parameters(root, overrides, root.has("unit") ? unit_scale(root.at("unit")) : 1e-3);
-  // Read as text: 'axisymmetric' or '2d' should hear the three choices, not "expected a number".
+  // Read as text: '2d' should hear the choices, not "expected a number". The docs and the
+  // messages call these cases axisymmetric, so that spelling is accepted beside `axi`.
   const std::string dim = root.has("dimension") ? root.at("dimension").as_string() : "2";
-  if (dim == "axi") {
+  if (dim == "axi" || dim == "axisymmetric") {
     c.dimension = 2;
     c.geometry2d.symmetry = Symmetry2D::axisymmetric;
   } else if (dim == "2" || dim == "3") {
     c.dimension = dim == "2" ? 2 : 3;
   } else {
-    root.at("dimension").fail("dimension must be 2 | 3 | axi (got '" + dim + "')");
+    root.at("dimension").fail("dimension must be 2 | 3 | axi | axisymmetric (got '" + dim + "')");
   }
   const bool axi = c.axisymmetric();
   if (root.has("unit")) {

@@ -340,9 +340,9 @@ int run_mesh_command(const std::vector<std::string>& args) {
     std::cerr << "magfem: note: no mesh.png: " << why << "\n";
   stage.write_text("summary.json", j.dump(2) + "\n");
   stage.commit();
-  std::printf("%s elements, %s nodes, %s unknowns at order %d (%.2f s)\n",
-              j["elements"].dump().c_str(), j["nodes"].dump().c_str(), j["unknowns"].dump().c_str(),
-              spec.order, j["seconds"].get<double>());
+  std::printf("%s elements, %s nodes, %s DOFs at order %d (%.2f s)\n", j["elements"].dump().c_str(),
+              j["nodes"].dump().c_str(), j["unknowns"].dump().c_str(), spec.order,
+              j["seconds"].get<double>());
   std::cout << "wrote    " << o.out_dir << "/";
   const auto files = stage.written();
   for (std::size_t i = 0; i < files.size(); ++i)

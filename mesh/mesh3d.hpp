@@ -40,8 +40,9 @@ struct Mesh3D {
   // every tet by that factor, about 3x the unknowns a pass where nothing was to change.
   // Empty for meshes not made by build_mesh_3d.
   std::vector<double> tet_size;
-  // What the mesher could not honour but did not refuse (e.g. an air gap with fewer than one
-  // element across it at a coarse --mesh-scale); the run reports them (summary.json warnings).
+  // What the mesher could not honour but did not refuse (e.g. an air gap whose elements have
+  // nodes farther apart than it is wide at a coarse --mesh-scale); the run reports them
+  // (summary.json warnings).
   std::vector<std::string> warnings;
 
   std::size_t n_nodes() const { return nodes.size(); }

@@ -195,12 +195,14 @@ struct UnresolvedGap {
 using UnresolvedGaps = std::map<std::pair<int, int>, UnresolvedGap>;
 
 // Adds point sources for every face sample (its intrinsic size) and for narrow air gaps.
-// Gaps across which the size stays above the gap width (fewer than one element across: a
-// --mesh-scale above gap_layers) are recorded in `unresolved` when given.
+// Gaps across which the element size stays above order x the gap width (the element nodes
+// farther apart than the gap is wide: a --mesh-scale above order x gap_layers) are recorded in
+// `unresolved` when given.
 void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
                          const FaceSizing& fs, const FaceSoup3D& soup, SizeField3D& field,
                          UnresolvedGaps* unresolved) {
   const int layers = std::max(1, rules.geo.options.gap_layers);
+  const int order = std::max(1, rules.geo.options.element_order);
   const double eps = 1e-7 * rules.geo.outer.radius;
   for (std::size_t f = 0; f < dec.faces.size(); ++f) {
     const GridFace3D& face = dec.faces[f];
@@ -245,7 +247,7 @@ void add_surface_sources(const GridDecomposition3D& dec, const SizeRules& rules,
       if (rules.scale * w / layers < intrinsic(x))
         narrowest = std::min(narrowest, w);
       const double across = std::min(rules.scale * w / layers, intrinsic(x));
-      if (unresolved && hit >= 0 && std::isfinite(w) && across > w) {
+      if (unresolved && hit >= 0 && std::isfinite(w) && across > order * w) {
         const GridFace3D& other = dec.faces[static_cast<std::size_t>(hit)];
         const int self = air_high ? face.label_low : face.label_high;
         const int them = is_air(other.label_low) ? other.label_high : other.label_low;
@@ -513,26 +515,29 @@ std::vector<double> requested_sizes(const Mesh3D& m, const SizeRules& rules,
   return h;
 }
 
-// One warning per pair of parts with an unresolved gap. A warning, not a refusal: the mesh is
-// valid and the answer usable (a coarse --mesh-scale run is often a deliberate first look or
-// a convergence study's coarsest step), but the field in the gap, and a force across it, are
-// not resolved.
+// One warning per pair of parts with an unresolved gap: elements across it whose nodes (an
+// element of size h has them h / order apart) are farther apart than the gap is wide. A mesh
+// always has one layer of elements across a gap (the parts' faces are element faces); what a
+// coarse one lacks is nodes inside it. A warning, not a refusal: the mesh is valid and the
+// answer usable (a coarse --mesh-scale run is often a deliberate first look or a convergence
+// study's coarsest step), but the field in the gap, and a force across it, are not resolved.
 std::vector<std::string> unresolved_gap_warnings(const Geometry3D& geo, double scale,
                                                  const UnresolvedGaps& unresolved) {
   std::vector<std::string> out;
   const int layers = std::max(1, geo.options.gap_layers);
+  const int order = std::max(1, geo.options.element_order);
   for (const auto& [pair, gap] : unresolved) {
-    if (gap.across <= gap.width)
+    if (gap.across <= order * gap.width)
       continue;
-    char text[400];
+    char text[480];
     std::snprintf(text, sizeof text,
                   "the %.3g mm air gap between parts '%s' and '%s' has elements of about %.3g "
-                  "mm across it, fewer than one layer (gap_layers %d at mesh scale %.3g): the "
-                  "field in the gap is not resolved; use a mesh scale of at most %d or a smaller "
-                  "mesh size near the gap",
+                  "mm across it, their nodes (order %d) farther apart than the gap is wide "
+                  "(gap_layers %d at mesh scale %.3g): the field in the gap is not resolved; use "
+                  "a mesh scale of at most %d or a smaller mesh size near the gap",
                   gap.width * 1e3, geo.parts[static_cast<std::size_t>(pair.first)].name.c_str(),
                   geo.parts[static_cast<std::size_t>(pair.second)].name.c_str(), gap.across * 1e3,
-                  layers, scale, layers);
+                  order, layers, scale, order * layers);
     out.emplace_back(text);
   }
   return out;

@@ -256,8 +256,8 @@ nlohmann::ordered_json adapt_json(const AdaptHistory& h) {
 
 std::string describe_adapt_pass(const AdaptPass& p, const char* element_word) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "pass %-3d %zu %s, %d unknowns, energy %.7g, error %.3g %%",
-                p.pass, p.elements, element_word, p.unknowns, p.energy_J, p.energy_error_pct);
+  std::snprintf(buf, sizeof buf, "pass %-3d %zu %s, %d DOFs, energy %.7g, error %.3g %%", p.pass,
+                p.elements, element_word, p.unknowns, p.energy_J, p.energy_error_pct);
   std::string s = buf;
   if (std::isfinite(p.delta_energy_pct)) {
     std::snprintf(buf, sizeof buf, ", change %.3g %%", p.delta_energy_pct);

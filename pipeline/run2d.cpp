@@ -264,13 +264,10 @@ public:
   static std::string describe_head(const Run2D& run) {
     char buf[512];
     std::string s;
-    std::snprintf(buf, sizeof buf,
-                  "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n"
-                  "solve    order %d, %d unknowns, %s, residual %.2e\n",
-                  run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg,
-                  run.spec.order, run.dofs->n_dofs(), describe_solver(run.report).c_str(),
-                  run.report.residual_history.back());
+    std::snprintf(buf, sizeof buf, "mesh     %zu triangles, %zu nodes, min angle %.1f deg\n",
+                  run.mesh.n_triangles(), run.mesh.n_nodes(), run.mesh.quality.min_angle_deg);
     s += buf;
+    s += describe_solve_line(run.spec.order, run.free_unknowns, run.dofs->n_dofs(), run.report);
     std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
                   run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
     s += buf;

@@ -71,6 +71,7 @@ struct Run2D {
   CaseSpec spec;
   Mesh2D mesh;
   std::unique_ptr<DofMap2D> dofs;
+  int free_unknowns = 0; // the DOFs the system solves for: dofs less those boundary values fix
   Problem2D problem;
   std::unique_ptr<Field2D> field;
   NewtonReport report;

@@ -154,6 +154,7 @@ void apply_overrides(CaseSpec& spec, const RunOverrides& ov) {
   if (ov.domain_radius > 0)
     spec.geometry3d.outer.radius = ov.domain_radius;
   spec.geometry3d.options.spheres_curved = spec.order == 2; // DofMap3D::curve_to_spheres
+  spec.geometry3d.options.element_order = spec.order;
 }
 
 } // namespace
@@ -401,16 +402,15 @@ public:
   }
   static std::string describe_head(const Run3D& run) {
     char buf[640];
-    std::snprintf(
-        buf, sizeof buf,
-        "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n"
-        "solve    order %d, %d unknowns, %s, residual %.2e\n"
-        "energy   %.6g J%s\n",
-        run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
-        run.mesh.quality.max_dihedral_deg, run.spec.order, run.dofs->n_dofs(),
-        describe_solver(run.report).c_str(), run.report.residual_history.back(), run.energy.total_J,
-        run.spec.geometry3d.symmetry.empty() ? "" : " (whole device; the model is its share)");
+    std::snprintf(buf, sizeof buf, "mesh     %zu tetrahedra, %zu nodes, dihedral %.1f..%.1f deg\n",
+                  run.mesh.n_tets(), run.mesh.n_nodes(), run.mesh.quality.min_dihedral_deg,
+                  run.mesh.quality.max_dihedral_deg);
     std::string s = buf;
+    s += describe_solve_line(run.spec.order, run.free_unknowns, run.dofs->n_dofs(), run.report);
+    std::snprintf(buf, sizeof buf, "energy   %.6g J%s\n", run.energy.total_J,
+                  run.spec.geometry3d.symmetry.empty() ? ""
+                                                       : " (whole device; the model is its share)");
+    s += buf;
     if (run.dofs->n_straightened() > 0)
       s += "note     " + std::to_string(run.dofs->n_straightened()) +
            " edge nodes on spheres kept straight: curving them would fold their tets (a finer "

@@ -32,6 +32,7 @@ struct Run3D {
   Mesh3D mesh;
   MeshEstimate3D mesh_estimate; // before meshing (the memory guard's)
   std::unique_ptr<DofMap3D> dofs;
+  int free_unknowns = 0; // the DOFs the system solves for: dofs less those boundary values fix
   Problem3D problem;
   std::unique_ptr<CaseCoils> coils; // null without coils
   CoilSource3D coil_source;         // problem.source points here when there are coils

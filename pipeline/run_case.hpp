@@ -67,6 +67,7 @@ std::unique_ptr<typename D::Run> run_case_stages(CaseSpec spec, const RunOverrid
   run->dofs = std::make_unique<typename D::DofMap>(run->mesh, run->spec.order);
   d.prepare_dofs();
   typename D::Assembler assembler = d.make_assembler();
+  run->free_unknowns = assembler.n_unknowns();
   d.prepare_solver(assembler);
   const double setup = seconds_since(t0);
 

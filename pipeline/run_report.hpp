@@ -34,7 +34,8 @@ namespace magfem {
 template <class D> nlohmann::ordered_json summary_json(const typename D::Run& run) {
   nlohmann::ordered_json j;
   add_run_header(j, {run.spec.file, D::dimension_json(run), run.spec.order, D::n_elements(run.mesh),
-                     run.mesh.n_nodes(), static_cast<std::size_t>(run.dofs->n_dofs())});
+                     run.mesh.n_nodes(), static_cast<std::size_t>(run.dofs->n_dofs()),
+                     static_cast<std::size_t>(run.free_unknowns)});
   D::add_mesh_quality(j, run);
   add_energy(j, D::energy_J(run), D::energy_per(run));
   D::add_symmetry(j, run);

@@ -14,6 +14,7 @@ void add_run_header(nlohmann::ordered_json& j, const RunHeader& header) {
   j["elements"] = header.elements;
   j["nodes"] = header.nodes;
   j["unknowns"] = header.unknowns;
+  j["free_unknowns"] = header.free_unknowns;
 }
 
 void add_energy(nlohmann::ordered_json& j, double energy_J, const std::string& per) {
@@ -22,12 +23,13 @@ void add_energy(nlohmann::ordered_json& j, double energy_J, const std::string& p
 }
 
 void add_error_estimate(nlohmann::ordered_json& j, const ErrorEstimateRecord& e, double seconds) {
-  j["error_estimate"] = {{"energy_error_pct", e.energy_error_pct},
-                         {"energy_norm_error_pct", e.energy_norm_error_pct},
-                         {"indicator", e.indicator},
-                         {"error_norm2_J", e.error_norm2_J},
-                         {"scope", "whole domain, the open-boundary shell (the mapped exterior) included"},
-                         {"seconds", seconds}};
+  j["error_estimate"] = {
+      {"energy_error_pct", e.energy_error_pct},
+      {"energy_norm_error_pct", e.energy_norm_error_pct},
+      {"indicator", e.indicator},
+      {"error_norm2_J", e.error_norm2_J},
+      {"scope", "whole domain, the open-boundary shell (the mapped exterior) included"},
+      {"seconds", seconds}};
 }
 
 void add_solve_record(nlohmann::ordered_json& j, const NewtonReport& report, const Timings& timings,

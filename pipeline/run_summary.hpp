@@ -17,10 +17,13 @@ struct RunHeader {
   std::string case_file;
   nlohmann::ordered_json dimension; // 2, "axi" or 3
   int order = 0;
-  std::size_t elements = 0, nodes = 0, unknowns = 0;
+  std::size_t elements = 0, nodes = 0;
+  std::size_t unknowns = 0;      // every DOF, those fixed by boundary conditions included
+  std::size_t free_unknowns = 0; // the size of the system solved (the console's "unknowns")
 };
 
-// Provenance (version, commit), case, dimension, order, elements, nodes, unknowns.
+// Provenance (version, commit), case, dimension, order, elements, nodes, unknowns,
+// free_unknowns.
 void add_run_header(nlohmann::ordered_json& j, const RunHeader& header);
 
 // What the energy and forces of this summary are the whole of: "metre of length" (planar

@@ -1,5 +1,7 @@
 #include "pipeline/solver_summary.hpp"
 
+#include <cstdio>
+
 namespace magfem {
 
 void add_solver_summary(nlohmann::ordered_json& j, const NewtonReport& report, int threads,
@@ -25,6 +27,16 @@ std::string describe_solver(const NewtonReport& report) {
   else if (linear)
     s += ", " + std::to_string(report.iterations) + " iteration(s)";
   return s;
+}
+
+std::string describe_solve_line(int order, int free_unknowns, int dofs,
+                                const NewtonReport& report) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "solve    order %d, %d unknowns (%d DOFs, %d fixed), %s, residual %.2e\n", order,
+                free_unknowns, dofs, dofs - free_unknowns, describe_solver(report).c_str(),
+                report.residual_history.back());
+  return buf;
 }
 
 } // namespace magfem

@@ -18,4 +18,10 @@ void add_solver_summary(nlohmann::ordered_json& j, const NewtonReport& report, i
 // direct) and so on, then one "note" line per solver note.
 std::string describe_solver(const NewtonReport& report);
 
+// The console's solve line, "solve    order 2, 210591 unknowns (214925 DOFs, 4334 fixed),
+// cg + pmg, 20 CG iterations, residual 3.92e-11". "unknowns" is the size of the system
+// solved, the word the progress lines use; DOFs (summary.json's `unknowns`) include the values
+// boundary conditions fix.
+std::string describe_solve_line(int order, int free_unknowns, int dofs, const NewtonReport& report);
+
 } // namespace magfem

@@ -205,7 +205,7 @@ void LinearSolver::set_up_krylov(const Eigen::SparseMatrix<double>& lower) {
   if (impl_->use_amg) {
     if (options_.progress)
       options_.progress->stage("preconditioner set-up: " + impl_->amg_name + ", " +
-                               std::to_string(lower.rows()) + " free unknowns");
+                               std::to_string(lower.rows()) + " unknowns");
     try {
       if (!impl_->amg)
         impl_->amg = std::make_unique<PetscSolver>(
@@ -222,7 +222,7 @@ void LinearSolver::set_up_krylov(const Eigen::SparseMatrix<double>& lower) {
   }
   if (options_.progress)
     options_.progress->stage("preconditioner set-up: incomplete Cholesky, " +
-                             std::to_string(lower.rows()) + " free unknowns");
+                             std::to_string(lower.rows()) + " unknowns");
   if (!impl_->ichol_analyzed) {
     impl_->ichol.analyzePattern(lower);
     impl_->ichol_analyzed = true;
@@ -254,7 +254,7 @@ void LinearSolver::factorize(const Eigen::SparseMatrix<double>& lower) {
   if (impl_->use_direct) {
     if (options_.progress)
       options_.progress->stage("factorization: CHOLMOD, " + std::to_string(lower.rows()) +
-                               " free unknowns");
+                               " unknowns");
     impl_->direct.factorize(lower);
     if (impl_->direct.info() != Eigen::Success)
       throw SolveError("the system matrix is not positive definite (CHOLMOD); check that every "

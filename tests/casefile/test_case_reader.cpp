@@ -193,7 +193,7 @@ TEST(CaseReader3D, BadInputNamesTheExactLineAndFieldPath) {
 }
 
 // Slips a new user makes get the answer in the message: a British spelling, a material name
-// without its hyphen, a dimension spelt out.
+// without its hyphen, a dimension misspelt (the choices listed).
 TEST(CaseReader, SlipsAreAnsweredWithTheNearestNameOrTheChoices) {
   struct Slip {
     std::string from, to, field, want;
@@ -204,8 +204,8 @@ TEST(CaseReader, SlipsAreAnsweredWithTheNearestNameOrTheChoices) {
       {"material: pm\n    magnetization: {type: axial}",
        "material: M19\n    magnetization: {type: axial}", "regions[1].material",
        "did you mean 'M-19'?"},
-      {"dimension: 3", "dimension: axisymmetric", "dimension",
-       "dimension must be 2 | 3 | axi (got 'axisymmetric')"},
+      {"dimension: 3", "dimension: axisymetric", "dimension",
+       "dimension must be 2 | 3 | axi | axisymmetric (got 'axisymetric')"},
   };
   for (const auto& slip : slips) {
     std::string text = case3d;
@@ -219,6 +219,35 @@ TEST(CaseReader, SlipsAreAnsweredWithTheNearestNameOrTheChoices) {
       EXPECT_EQ(e.field(), slip.field) << e.what();
       EXPECT_NE(std::string(e.what()).find(slip.want), std::string::npos) << e.what();
     }
+  }
+}
+
+// `dimension: axisymmetric`, the word the docs and messages use, is a spelling of `axi`: the
+// same case (dimension 2 in the r-z half plane); a third spelling is still an error at the
+// dimension's own line (line 3 here, after two comment lines).
+TEST(CaseReader, AxisymmetricIsASpellingOfAxi) {
+  const std::string body = R"(
+regions:
+  - {name: coil, shape: rectangle, center: [12.5, 0], width: 5, height: 30, turns: 500, current: 2}
+boundary: {type: open, radius: 40}
+mesh: {size: 2}
+)";
+  const std::string head = "# a coil\n# in r-z\n";
+  const auto axi = read_case(write_case("axi.yaml", head + "dimension: axi" + body));
+  const auto spelled =
+      read_case(write_case("axisym.yaml", head + "dimension: axisymmetric" + body));
+  EXPECT_TRUE(axi.axisymmetric());
+  EXPECT_TRUE(spelled.axisymmetric());
+  EXPECT_EQ(spelled.dimension, 2);
+  try {
+    read_case(write_case("axisym_typo.yaml", head + "dimension: axisymetric" + body));
+    ADD_FAILURE() << "accepted 'axisymetric'";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3) << e.what();
+    EXPECT_EQ(e.field(), "dimension") << e.what();
+    const std::string what = e.what();
+    EXPECT_NE(what.find("axisym_typo.yaml"), std::string::npos) << what;
+    EXPECT_NE(what.find("2 | 3 | axi | axisymmetric"), std::string::npos) << what;
   }
 }
 

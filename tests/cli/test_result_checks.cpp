@@ -16,10 +16,10 @@
 
 #include <sys/wait.h>
 
-#include "pipeline/run3d.hpp"
-#include "tests/case_helpers.hpp"
 #include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/run3d.hpp"
+#include "tests/case_helpers.hpp"
 #include "tests/run_cli.hpp"
 
 namespace fs = std::filesystem;
@@ -161,7 +161,7 @@ solver: {order: 1}
   }
 }
 
-// Issue 36: `--mesh-scale` above gap_layers leaves fewer than one element across an air gap.
+// Issue 36: `--mesh-scale` above gap_layers leaves order-1 elements wider than an air gap.
 // The run goes on, and says so on stderr and in summary.json `warnings`, naming the gap's width
 // and both parts (a 1 mm gap between two spheres, gap_layers 2, scale 2.5: 1.25 mm elements).
 // It would fail if the mesher's warnings were dropped on the way to either output.

@@ -629,34 +629,53 @@ TEST(Mesher3D, MeshesBuiltOnTwoThreadsAtOnceEqualTheSerialMesh) {
   }
 }
 
+// Two spheres 1 mm apart, gap_layers 2, at a mesh scale, with adaptive sizes of adaptive_h
+// along the gap's axis (0: none) and elements of an order: the mesher's gap warnings.
+std::vector<std::string> gap_warnings(double scale, double adaptive_h = 0, int order = 1) {
+  Geometry3D g = domain(20 * mm, 8 * mm, 0.1 * mm);
+  g.options.gap_layers = 2;
+  g.options.size_scale = scale;
+  g.options.element_order = order;
+  g.options.spheres_curved = order == 2; // as the pipeline sets it
+  if (adaptive_h > 0) // sources along the gap's axis, from one sphere to the other
+    g.options.refine_sizes = std::make_shared<const std::vector<SizeSample3D>>(
+        std::vector<SizeSample3D>{{Vec3(6 * mm, 0, 0), adaptive_h},
+                                  {Vec3(6.5 * mm, 0, 0), adaptive_h},
+                                  {Vec3(7 * mm, 0, 0), adaptive_h}});
+  g.parts.push_back(segment("ball", 0, 6 * mm, 0, pi, 0, 2 * pi));
+  Part3D p = segment("other", 0, 5 * mm, 0, pi, 0, 2 * pi);
+  p.placement.translation = Eigen::Vector3d(12 * mm, 0, 0); // 1 mm from "ball"
+  g.parts.push_back(p);
+  return build_mesh_3d(g).warnings;
+}
+
 // Issue 36: `--mesh-scale 2.5` with `gap_layers: 2` put elements larger than the gap across
-// it, silently. Two spheres 1 mm apart: at scale 1 the gap has its 2 layers and nothing is
-// said; at 2.5 (1.25 mm across a 1 mm gap) the mesh warns, naming the gap and both parts.
-// An adaptive pass that asks for small elements in the gap (refine_sizes) resolves it: no
-// warning then, although the case's own sizes at that scale would leave it coarse.
-TEST(Mesher3D, GapWithFewerThanOneElementAcrossIsWarnedAbout) {
-  auto warnings = [](double scale, double adaptive_h = 0) {
-    Geometry3D g = domain(20 * mm, 8 * mm, 0.1 * mm);
-    g.options.gap_layers = 2;
-    g.options.size_scale = scale;
-    if (adaptive_h > 0) // sources along the gap's axis, from one sphere to the other
-      g.options.refine_sizes = std::make_shared<const std::vector<SizeSample3D>>(
-          std::vector<SizeSample3D>{{Vec3(6 * mm, 0, 0), adaptive_h},
-                                    {Vec3(6.5 * mm, 0, 0), adaptive_h},
-                                    {Vec3(7 * mm, 0, 0), adaptive_h}});
-    g.parts.push_back(segment("ball", 0, 6 * mm, 0, pi, 0, 2 * pi));
-    Part3D p = segment("other", 0, 5 * mm, 0, pi, 0, 2 * pi);
-    p.placement.translation = Eigen::Vector3d(12 * mm, 0, 0); // 1 mm from "ball"
-    g.parts.push_back(p);
-    return build_mesh_3d(g).warnings;
-  };
-  EXPECT_TRUE(warnings(1.0).empty());
-  const auto coarse = warnings(2.5);
+// it, silently. Order 1: at scale 1 the gap has its 2 layers and nothing is said; at 2.5
+// (1.25 mm across a 1 mm gap) the mesh warns, naming the gap and both parts. An adaptive pass
+// that asks for small elements in the gap (refine_sizes) resolves it: no warning then,
+// although the case's own sizes at that scale would leave it coarse.
+TEST(Mesher3D, GapWiderThanItsOrderOneElementsIsWarnedAbout) {
+  EXPECT_TRUE(gap_warnings(1.0).empty());
+  const auto coarse = gap_warnings(2.5);
   ASSERT_EQ(coarse.size(), 1u);
-  for (const char* text : {"1 mm air gap", "'ball'", "'other'", "gap_layers 2", "scale 2.5"})
+  for (const char* text :
+       {"1 mm air gap", "'ball'", "'other'", "order 1", "gap_layers 2", "scale 2.5", "at most 2"})
     EXPECT_NE(coarse[0].find(text), std::string::npos) << text << " in: " << coarse[0];
-  EXPECT_TRUE(warnings(2.5, 0.4 * mm).empty());
-  EXPECT_EQ(warnings(2.5, 3 * mm).size(), 1u); // adaptive sizes coarser than the gap: still
+  EXPECT_TRUE(gap_warnings(2.5, 0.4 * mm).empty());
+  EXPECT_EQ(gap_warnings(2.5, 3 * mm).size(), 1u); // adaptive sizes coarser than the gap: still
+}
+
+// Issue 34: a P2 element of size h has nodes h / 2 apart, so the 1.25 mm elements of scale
+// 2.5 put nodes 0.625 mm apart in the 1 mm gap: no warning (the compensator example's P2
+// elements of 1.6 mm in its 1 mm gap gave its torque and force as closely as 0.8 mm ones did).
+// Scale 5 (2.5 mm elements, nodes 1.25 mm apart) is still warned about, with the scale that
+// would do (order x gap_layers = 4).
+TEST(Mesher3D, GapIsWarnedAboutAtOrderTwoOnlyWhenItsNodesAreFartherApartThanItIsWide) {
+  EXPECT_TRUE(gap_warnings(2.5, 0, 2).empty());
+  const auto p2 = gap_warnings(5, 0, 2);
+  ASSERT_EQ(p2.size(), 1u);
+  for (const char* text : {"1 mm air gap", "order 2", "scale 5", "at most 4"})
+    EXPECT_NE(p2[0].find(text), std::string::npos) << text << " in: " << p2[0];
 }
 
 } // namespace

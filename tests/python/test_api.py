@@ -38,6 +38,25 @@ class CaseTest(unittest.TestCase):
         self.assertEqual(ctx.exception.file, "<dict>")
         self.assertIn("no_such_key", str(ctx.exception.field) + str(ctx.exception))
 
+    def test_from_dict_reads_axisymmetric_as_axi(self):
+        # `axisymmetric` is a spelling of `axi` (issue 34): the same reader, so the same case
+        # and bit for bit the same solve; a misspelling names the field and the choices.
+        import yaml
+        path = os.path.join(os.environ.get("MAGFEM_SOURCE_DIR", "."), "examples/axi/solenoid.yaml")
+        with open(path, encoding="utf-8") as f:
+            d = yaml.safe_load(f)
+        self.assertEqual(d["dimension"], "axi")
+        axi = magfem.Case.from_dict(d).solve(mesh_scale=4)
+        d["dimension"] = "axisymmetric"
+        spelled = magfem.Case.from_dict(d).solve(mesh_scale=4)
+        self.assertEqual(spelled.dimension, "axi")
+        self.assertEqual(spelled.energy, axi.energy)
+        d["dimension"] = "axisymetric"
+        with self.assertRaises(magfem.InputError) as ctx:
+            magfem.Case.from_dict(d)
+        self.assertEqual(ctx.exception.field, "dimension")
+        self.assertIn("2 | 3 | axi | axisymmetric", str(ctx.exception))
+
     def test_yaml_syntax_error_carries_the_line(self):
         with self.assertRaises(magfem.InputError) as ctx:
             magfem.Case(text="dimension: 2\nregions: [\n  {a: 1\n", name="<text>")

@@ -144,6 +144,13 @@ mesh: {size: 2}
 probes:
   - {name: axis, type: line, start: [0, -20], end: [0, 20], points: 81}
 """,
+    "axisymmetric spelled out": """
+dimension: axisymmetric
+regions:
+  - {name: coil, shape: rectangle, center: [8, 0], width: 2, height: 6, turns: 200, current: 1.5}
+boundary: {type: open, radius: 40}
+mesh: {size: 2}
+""",
     "2d minimal with YAML 1.2 floats": """
 regions: [{name: m, shape: disk, radius: 1, current_density: 2e6}]
 boundary: {type: dirichlet, radius: 5}
