@@ -195,10 +195,10 @@ public:
   }
   std::vector<ForceResult> forces() const { return compute_forces_2d(run_); }
   void coil_results(const Assembler2D& assembler, const Eigen::VectorXd& u) const {
-    run_.coils = magfem::coil_results(run_, assembler, u);
+    run_.coil_results = magfem::coil_results(run_, assembler, u);
   }
   void estimate_error() const {
-    run_.error = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
+    run_.error_estimate = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
   }
   void check_finite_fields() const {}
   void scale_to_whole_device() const { scale_to_whole_device_2d(run_); }
@@ -230,8 +230,8 @@ public:
     add_symmetry_json_2d(j, run.spec);
   }
   static ErrorEstimateRecord error_record(const Run2D& run) {
-    return {run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator,
-            run.error.total_eta2 * length(run)};
+    return {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+            run.error_estimate.indicator, run.error_estimate.total_eta2 * length(run)};
   }
   static int threads(const Run2D&) { return 1; }
   static int ranks(const Run2D&) { return 1; }
@@ -253,14 +253,14 @@ public:
     }
     if (!run.sections.empty())
       j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-    if (!run.coils.empty())
-      j["coils"] = coils_json_2d(run.coils);
+    if (!run.coil_results.empty())
+      j["coils"] = coils_json_2d(run.coil_results);
   }
   static void stage_vtu(OutputStage& stage, const Run2D& run, const VtuMaterials& materials) {
     VtuGrid grid =
         make_vtu_2d(*run.field, materials.of_region, 0, materials.names, materials.region_names);
     // eta_K^2 per cell (J/m planar, J axisymmetric).
-    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error.eta2));
+    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2));
     add_B_along_M(grid, run.demagnetization,
                   [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
@@ -282,9 +282,10 @@ public:
     std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
                   run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
     s += buf;
-    std::snprintf(
-        buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
-        run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
+    std::snprintf(buf, sizeof buf,
+                  "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
+                  run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                  run.error_estimate.indicator.c_str());
     s += buf;
     if (run.adapt)
       s += describe_adapt_result(*run.adapt);
@@ -305,7 +306,7 @@ public:
   static std::string describe_coils(const Run2D& run) {
     std::string s;
     char buf[512];
-    for (const auto& c : run.coils) {
+    for (const auto& c : run.coil_results) {
       std::snprintf(buf, sizeof buf,
                     "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
                     "linkage / I = %.6g H (apparent)\n",

@@ -69,13 +69,13 @@ struct Run2D {
   std::unique_ptr<Field2D> field;
   NewtonReport report;
   EnergySummary2D energy;
-  ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
+  ErrorEstimate2D error_estimate; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
-  std::vector<SectionFlux> sections; // parallel to spec.sections (per energy_per)
-  std::vector<CoilResult2D> coils;   // axisymmetric only
-  std::vector<std::string> warnings; // pipeline/result_checks.hpp
-  DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
+  std::vector<SectionFlux> sections;      // parallel to spec.sections (per energy_per)
+  std::vector<CoilResult2D> coil_results; // axisymmetric only
+  std::vector<std::string> warnings;      // pipeline/result_checks.hpp
+  DemagnetizationResult demagnetization;  // per magnet: B . m_hat against the knee
   Timings timings;
   std::optional<AdaptHistory> adapt; // set by run_adaptive_2d (adapt2d.hpp)
 };
