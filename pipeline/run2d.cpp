@@ -12,6 +12,7 @@
 #include "mesh/mesher2d.hpp"
 #include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force2d.hpp"
+#include "pipeline/memory_guard.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_case.hpp"
 #include "pipeline/run_report.hpp"
@@ -172,7 +173,13 @@ public:
   void tune_linear_solver(LinearSolverOptions& options) const { options.direct_max_gflop = 0; }
   void check_before_mesh() const {}
   Mesh2D mesh() const { return mesh_case(run_.spec, ov_.refine_sizes); }
-  void check_mesh() const { check_stress_surfaces_2d(run_.spec, run_.mesh); }
+  void check_mesh() const {
+    check_stress_surfaces_2d(run_.spec, run_.mesh);
+    // The memory guard on the mesh itself, before anything large is assembled.
+    check_memory_2d(static_cast<double>(run_.mesh.n_triangles()), run_.spec.order,
+                    MemoryLimit{ov_.max_memory_gb, ov_.shared_memory_mb, ov_.parallel_runs},
+                    ov_.mesh_scale > 0 ? ov_.mesh_scale : 1.0);
+  }
   Problem2D build_problem() const { return magfem::build_problem(run_.spec, run_.mesh); }
   void prepare_dofs() const {}
   Assembler2D make_assembler() const { return Assembler2D(run_.problem, *run_.dofs); }
@@ -235,7 +242,11 @@ public:
   }
   static int threads(const Run2D&) { return 1; }
   static int ranks(const Run2D&) { return 1; }
-  static void add_solver_extras(nlohmann::ordered_json&, const Run2D&) {}
+  static void add_solver_extras(nlohmann::ordered_json& j, const Run2D& run) {
+    j["memory_guard"] = {
+        {"estimated_peak_memory_MB",
+         estimated_peak_memory_mb_2d(static_cast<double>(run.mesh.n_triangles()), run.spec.order)}};
+  }
   static nlohmann::ordered_json region_json(const Run2D& run, std::size_t i) {
     const auto& r = run.energy.regions[i];
     if (r.area_m2 == 0)

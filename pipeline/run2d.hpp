@@ -35,9 +35,9 @@ struct RunOverrides {
   int order = 0;                // 0 = as in the case
   double mesh_scale = 0;        // 0 = as in the case; multiplies every mesh size
   double domain_radius = 0;     // metres; 0 = as in the case
-  double max_memory_gb = 0;     // 3D memory guard limit; 0 = the memory available now
+  double max_memory_gb = 0;     // memory guard limit (memory_guard.hpp); 0 = available now
   Progress* progress = nullptr; // console progress (not owned); null = silent
-  // 3D memory guard, for runs that go on at once (sweep --jobs): their number and the limit
+  // Memory guard, for runs that go on at once (sweep --jobs): their number and the limit
   // they share, fixed once for all (MB; 0 = measured at the check). Each gets its share.
   int parallel_runs = 1;
   double shared_memory_mb = 0;
