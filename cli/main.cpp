@@ -204,6 +204,7 @@ int run_sweep_axi(const Args& args) {
   o.jobs = args.jobs;
   o.order = args.overrides.order;
   o.mesh_scale = args.overrides.mesh_scale;
+  o.max_memory_gb = args.overrides.max_memory_gb;
   o.world = sweep_world(args);
   const auto checkpoint =
       sweep_checkpoint(o.world, args,
@@ -249,12 +250,13 @@ int run_sweep(const Args& args) {
   const bool translate = !args.move.empty();
   const auto spec = magfem::read_case(args.case_file);
   const bool axisymmetric = spec.axisymmetric();
-  // --point is the point a rotation turns about (and the planar torque's point): a 3D or
-  // axisymmetric translation has none, and an ignored option would look as if it had worked.
-  if (translate && !args.point.empty() && (axisymmetric || spec.dimension == 3))
+  // --point is the point a rotation turns about, or the one a translation's torque is about
+  // (carried with the group): an axisymmetric translation has no torque, and an ignored
+  // option would look as if it had worked.
+  if (translate && !args.point.empty() && axisymmetric)
     throw InputError(cli, 0, "--point",
-                     "a 3D or axisymmetric --move sweep has no point (3D torques are about the "
-                     "origin); --point goes with --rotate, or a planar --move");
+                     "an axisymmetric --move sweep has no torque, so no point; --point goes "
+                     "with --rotate, or a 3D or planar --move");
   if (translate && axisymmetric)
     return run_sweep_axi(args);
   if (!translate && args.rotate.empty())
@@ -280,6 +282,7 @@ int run_sweep(const Args& args) {
     o.angles_deg = magfem::parse_angle_list(args.angles);
   if (!args.point.empty())
     o.point = s * magfem::parse_vector3("--point", args.point);
+  o.carry_point = translate && !args.point.empty();
   if (!args.surface_radius.empty())
     o.surface_radius =
         s * magfem::parse_cli_number("--surface-radius", args.surface_radius.c_str());

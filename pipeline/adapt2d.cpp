@@ -19,9 +19,9 @@ double mesher_floor(const MeshOptions2D& o) {
 
 std::vector<double> adapted_sizes(const Run2D& run, double target_pct, bool coarsen) {
   std::vector<double> h = longest_edges(run.mesh);
-  const std::vector<double> ratio =
-      adapt_size_ratios(run.error.eta2, run.energy.total_J_per_m, run.spec.order, target_pct,
-                        coarsen, [&](std::size_t t) { return run.problem.is_shell(t); });
+  const std::vector<double> ratio = adapt_size_ratios(
+      run.error_estimate.eta2, run.energy.total_J_per_m, run.spec.order, target_pct, coarsen,
+      [&](std::size_t t) { return run.problem.is_shell(t); });
   for (std::size_t t = 0; t < h.size(); ++t)
     h[t] *= ratio[t];
   return h;
@@ -43,7 +43,7 @@ std::unique_ptr<Run2D> run_adaptive_2d(const CaseSpec& spec, const RunOverrides&
     AdaptMeasure m{run->mesh.n_triangles(),
                    run->dofs->n_dofs(),
                    run->energy.total_J_per_m * length_factor(run->spec),
-                   run->error.energy_error_pct,
+                   run->error_estimate.energy_error_pct,
                    {},
                    {}};
     for (const auto& q : quantities) {

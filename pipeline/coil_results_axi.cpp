@@ -72,7 +72,7 @@ CoilLayout coil_layout(const Run2D& run, const std::vector<int>& mirror) {
 } // namespace
 
 void compute_coil_results_axi(Run2D& run, const Assembler2D& assembler, const Eigen::VectorXd& u) {
-  run.coils.clear();
+  run.coil_results.clear();
   run.inductance_H.resize(0, 0);
   const CaseSpec& spec = run.spec;
   if (!spec.axisymmetric())
@@ -154,7 +154,7 @@ void compute_coil_results_axi(Run2D& run, const Assembler2D& assembler, const Ei
     out.inductance_H = run.inductance_H(j, j);
     if (c.pair)
       out.mirror_image = spec.regions[std::size_t(mirror[std::size_t(c.region)])].name;
-    run.coils.push_back(out);
+    run.coil_results.push_back(out);
   }
 }
 

@@ -27,7 +27,7 @@ namespace magfem {
 struct Run2D;
 class Assembler2D;
 
-// Fills run.coils (spec order) and run.inductance_H (rows and columns in that order) from
+// Fills run.coil_results (spec order) and run.inductance_H (rows and columns in that order) from
 // the converged free-DOF solution u of `assembler`. No-op for a planar case.
 void compute_coil_results_axi(Run2D& run, const Assembler2D& assembler, const Eigen::VectorXd& u);
 

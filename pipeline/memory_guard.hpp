@@ -1,12 +1,16 @@
 #pragma once
-// The memory guard of a 3D run: before the mesher allocates anything large, the estimated
+// The memory guard of a run. 3D: before the mesher allocates anything large, the estimated
 // mesh (mesh/mesh_estimate3d.hpp) is turned into an estimated peak memory; a run that would
 // need more than the limit stops with exit 2 and says which --mesh-scale would fit.
+//
+// Planar and axisymmetric: after meshing and before assembly (2D meshing takes a fraction of
+// the solve and little memory), the triangles counted stand for the estimate; the same refusal.
 //
 // Peak memory model: a fixed base (libraries, the size field, the surface mesh) plus a cost
 // per tetrahedron that depends on the element order (TetGen's own structures while meshing;
 // the DOF map, the matrix and the linear solver's factor or preconditioner afterwards).
-// Calibrated on the 3D examples (docs/performance.md, "Memory guard calibration": estimated against measured peak).
+// per triangle in 2D (the matrix and CHOLMOD's factor). Calibrated on the examples
+// (docs/performance.md, "Memory guard calibration": estimated against measured peak).
 #include <functional>
 #include <string>
 
@@ -17,6 +21,9 @@ namespace magfem {
 // Estimated peak resident memory (MB) of a 3D solve with this many tetrahedra and coils
 // (each coil's source field is memoised at the quadrature points, up to a fixed budget).
 double estimated_peak_memory_mb(double tetrahedra, int order, int n_coils = 0);
+
+// Estimated peak resident memory (MB) of a planar or axisymmetric solve on this many triangles.
+double estimated_peak_memory_mb_2d(double triangles, int order);
 
 // The memory a run may use, in MB: `max_memory_gb` if positive, else what the machine (and
 // the cgroup the process runs in, if it has a limit) has available now.
@@ -39,5 +46,8 @@ struct MemoryLimit {
 // `mesh_scale` is the one in force (1 if none given).
 void check_memory(const MeshEstimate3D& estimate, int order, int n_coils, const MemoryLimit& limit,
                   double mesh_scale, const std::function<double(double)>& tets_at_factor);
+// The same for a planar or axisymmetric mesh of `triangles` (the --mesh-scale that would fit
+// from the count's 1/scale^2 law).
+void check_memory_2d(double triangles, int order, const MemoryLimit& limit, double mesh_scale);
 
 } // namespace magfem

@@ -15,6 +15,7 @@
 #include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force2d.hpp"
 #include "pipeline/inductance_matrix_output.hpp"
+#include "pipeline/memory_guard.hpp"
 #include "pipeline/result_checks.hpp"
 #include "pipeline/run_case.hpp"
 #include "pipeline/run_report.hpp"
@@ -80,18 +81,18 @@ nlohmann::ordered_json coils_json_2d(const std::vector<CoilResult2D>& coils) {
 
 nlohmann::ordered_json inductance_json_2d(const Run2D& run) {
   std::vector<std::string> names;
-  for (const auto& c : run.coils)
+  for (const auto& c : run.coil_results)
     names.push_back(c.name);
   auto j = inductance_matrix_json(names, run.inductance_H);
   // Entries between two coils of mirrored pairs came from the complementary solve
   // (coil_results_axi.hpp); say which, when any did.
-  const auto paired = [&](std::size_t i) { return !run.coils[i].mirror_image.empty(); };
-  if (std::any_of(run.coils.begin(), run.coils.end(),
+  const auto paired = [&](std::size_t i) { return !run.coil_results[i].mirror_image.empty(); };
+  if (std::any_of(run.coil_results.begin(), run.coil_results.end(),
                   [](const auto& c) { return !c.mirror_image.empty(); })) {
     auto rows = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < run.coils.size(); ++i) {
+    for (std::size_t i = 0; i < run.coil_results.size(); ++i) {
       auto row = nlohmann::ordered_json::array();
-      for (std::size_t k = 0; k < run.coils.size(); ++k)
+      for (std::size_t k = 0; k < run.coil_results.size(); ++k)
         row.push_back(paired(i) && paired(k));
       rows.push_back(row);
     }
@@ -159,7 +160,13 @@ public:
   void tune_linear_solver(LinearSolverOptions& options) const { options.direct_max_gflop = 0; }
   void check_before_mesh() const {}
   Mesh2D mesh() const { return mesh_case(run_.spec, ov_.refine_sizes); }
-  void check_mesh() const { check_stress_surfaces_2d(run_.spec, run_.mesh); }
+  void check_mesh() const {
+    check_stress_surfaces_2d(run_.spec, run_.mesh);
+    // The memory guard on the mesh itself, before anything large is assembled.
+    check_memory_2d(static_cast<double>(run_.mesh.n_triangles()), run_.spec.order,
+                    MemoryLimit{ov_.max_memory_gb, ov_.shared_memory_mb, ov_.parallel_runs},
+                    ov_.mesh_scale > 0 ? ov_.mesh_scale : 1.0);
+  }
   Problem2D build_problem() const { return magfem::build_problem(run_.spec, run_.mesh); }
   void prepare_dofs() const {}
   Assembler2D make_assembler() const { return Assembler2D(run_.problem, *run_.dofs); }
@@ -185,7 +192,7 @@ public:
     compute_coil_results_axi(run_, assembler, u);
   }
   void estimate_error() const {
-    run_.error = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
+    run_.error_estimate = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
   }
   void check_finite_fields() const {}
   void scale_to_whole_device() const { scale_to_whole_device_2d(run_); }
@@ -217,12 +224,16 @@ public:
     add_symmetry_json_2d(j, run.spec);
   }
   static ErrorEstimateRecord error_record(const Run2D& run) {
-    return {run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator,
-            run.error.total_eta2 * length(run)};
+    return {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+            run.error_estimate.indicator, run.error_estimate.total_eta2 * length(run)};
   }
   static int threads(const Run2D&) { return 1; }
   static int ranks(const Run2D&) { return 1; }
-  static void add_solver_extras(nlohmann::ordered_json&, const Run2D&) {}
+  static void add_solver_extras(nlohmann::ordered_json& j, const Run2D& run) {
+    j["memory_guard"] = {
+        {"estimated_peak_memory_MB",
+         estimated_peak_memory_mb_2d(static_cast<double>(run.mesh.n_triangles()), run.spec.order)}};
+  }
   static nlohmann::ordered_json region_json(const Run2D& run, std::size_t i) {
     const auto& r = run.energy.regions[i];
     if (r.area_m2 == 0)
@@ -243,8 +254,8 @@ public:
     }
     if (!run.sections.empty())
       j["sections"] = sections_json(run.sections, run.spec.sections, run.spec.regions);
-    if (!run.coils.empty()) {
-      j["coils"] = coils_json_2d(run.coils);
+    if (!run.coil_results.empty()) {
+      j["coils"] = coils_json_2d(run.coil_results);
       j["inductance_H"] = inductance_json_2d(run);
     }
   }
@@ -252,7 +263,7 @@ public:
     VtuGrid grid =
         make_vtu_2d(*run.field, materials.of_region, 0, materials.names, materials.region_names);
     // eta_K^2 per cell (J/m planar, J axisymmetric).
-    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error.eta2));
+    grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2));
     add_B_along_M(grid, run.demagnetization,
                   [&](std::size_t t) { return run.problem.is_shell(t); });
     write_vtu(stage.path_for("solution.vtu").string(), grid);
@@ -271,9 +282,10 @@ public:
     std::snprintf(buf, sizeof buf, "energy   %.6g %s\n", run.energy.total_J_per_m,
                   run.spec.axisymmetric() ? "J (body of revolution)" : "J/m");
     s += buf;
-    std::snprintf(
-        buf, sizeof buf, "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
-        run.error.energy_error_pct, run.error.energy_norm_error_pct, run.error.indicator.c_str());
+    std::snprintf(buf, sizeof buf,
+                  "error    estimated energy error %.3g %% (energy norm %.3g %%, %s)\n",
+                  run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
+                  run.error_estimate.indicator.c_str());
     s += buf;
     if (run.adapt)
       s += describe_adapt_result(*run.adapt);
@@ -294,7 +306,7 @@ public:
   static std::string describe_coils(const Run2D& run) {
     std::string s;
     char buf[512];
-    for (const auto& c : run.coils) {
+    for (const auto& c : run.coil_results) {
       std::snprintf(buf, sizeof buf,
                     "coil     %-20s linkage %.6g Wb, L = dlambda/dI = %.6g H (differential), "
                     "linkage / I = %.6g H (apparent)\n",
@@ -302,8 +314,8 @@ public:
       s += buf;
     }
     // Once per mirrored pair, after the coils.
-    for (std::size_t i = 0; i < run.coils.size(); ++i)
-      if (const auto& c = run.coils[i]; !c.mirror_image.empty() && c.name < c.mirror_image)
+    for (std::size_t i = 0; i < run.coil_results.size(); ++i)
+      if (const auto& c = run.coil_results[i]; !c.mirror_image.empty() && c.name < c.mirror_image)
         s += "pair     " + c.name + " and " + c.mirror_image +
              " are mirror images: the share drives both; their self and mutual inductance "
              "from a second solve with the plane's other condition\n";

@@ -35,9 +35,9 @@ struct RunOverrides {
   int order = 0;                // 0 = as in the case
   double mesh_scale = 0;        // 0 = as in the case; multiplies every mesh size
   double domain_radius = 0;     // metres; 0 = as in the case
-  double max_memory_gb = 0;     // 3D memory guard limit; 0 = the memory available now
+  double max_memory_gb = 0;     // memory guard limit (memory_guard.hpp); 0 = available now
   Progress* progress = nullptr; // console progress (not owned); null = silent
-  // 3D memory guard, for runs that go on at once (sweep --jobs): their number and the limit
+  // Memory guard, for runs that go on at once (sweep --jobs): their number and the limit
   // they share, fixed once for all (MB; 0 = measured at the check). Each gets its share.
   int parallel_runs = 1;
   double shared_memory_mb = 0;
@@ -76,12 +76,12 @@ struct Run2D {
   std::unique_ptr<Field2D> field;
   NewtonReport report;
   EnergySummary2D energy;
-  ErrorEstimate2D error; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
+  ErrorEstimate2D error_estimate; // ZZ estimate of the discretisation error (error_estimate2d.hpp)
   std::vector<ProbeTable> probes;
   std::vector<ForceResult> forces;
-  std::vector<SectionFlux> sections;     // parallel to spec.sections (per energy_per)
-  std::vector<CoilResult2D> coils;       // axisymmetric only
-  Eigen::MatrixXd inductance_H;          // d lambda / dI between run.coils (H), axisymmetric only
+  std::vector<SectionFlux> sections;      // parallel to spec.sections (per energy_per)
+  std::vector<CoilResult2D> coil_results; // axisymmetric only
+  Eigen::MatrixXd inductance_H; // d lambda / dI between run.coil_results (H), axisymmetric only
   std::vector<std::string> warnings;     // pipeline/result_checks.hpp
   DemagnetizationResult demagnetization; // per magnet: B . m_hat against the knee
   Timings timings;

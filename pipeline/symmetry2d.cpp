@@ -97,7 +97,7 @@ void scale_to_whole_device_2d(Run2D& run) {
   }
   fill_mirror_image_regions(run.energy.regions, share_images_2d(run.spec));
   // The estimate's relative errors are ratios of two energies scaled alike.
-  run.error.total_eta2 *= factor;
+  run.error_estimate.total_eta2 *= factor;
 }
 
 SectionFlux integrate_section_whole_2d(const Field2D& field, const SectionSpec& section,

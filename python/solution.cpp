@@ -115,7 +115,7 @@ std::string Solution::forces_json() const {
 std::string Solution::coils_json() const {
   if (run3d_)
     return coil_results_json(run3d_->coil_results).dump();
-  return coils_json_2d(run2d_->coils).dump();
+  return coils_json_2d(run2d_->coil_results).dump();
 }
 
 py::object Solution::inductance_H() const {

@@ -133,8 +133,8 @@ py::dict rotate_or_move_3d(const SweepCase& c, const SweepRequest& q, Background
     // As --move: the direction is asked for, never assumed; the group moves, nothing turns.
     if (q.axis.empty())
       throw InputError(where, 0, "axis", "give the direction to move along");
-    if (q.point && !planar) // planar: the torque's point, carried with the group
-      throw InputError(where, 0, "point", "not for translate sweeps (the group moves, no axis)");
+    // The torque's point, carried with the group (3D without it: about the origin).
+    o.carry_point = q.point.has_value();
     o.motion = SweepMotion::translate;
     for (const double p : q.values)
       o.offsets_m.push_back(1e-3 * p); // as the command line converts --positions

@@ -149,14 +149,15 @@ std::optional<AxisymmetricInteraction> harmonic_position(const std::vector<Analy
 // (analytic/exterior_field_interaction.hpp). Force and torque on `group`, or nothing.
 std::optional<ExteriorFieldInteraction> exterior_position(const std::vector<AnalyticMagnet>& group,
                                                           const std::vector<AnalyticMagnet>& rest,
+                                                          const Vec3& torque_point,
                                                           double tolerance) {
   ExteriorFieldOptions o;
   o.tolerance = tolerance;
   for (const bool group_outside : {true, false}) {
     try {
       ExteriorFieldInteraction r = group_outside
-                                       ? exterior_field_interaction(group, rest, Vec3::Zero(), o)
-                                       : exterior_field_interaction(rest, group, Vec3::Zero(), o);
+                                       ? exterior_field_interaction(group, rest, torque_point, o)
+                                       : exterior_field_interaction(rest, group, torque_point, o);
       if (!group_outside) // action = reaction, torques about the same point
         r.on.force = -r.on.force, r.on.torque = -r.on.torque;
       return r;
@@ -186,11 +187,12 @@ CaseSpec fe_position_case(CaseSpec spec, const StressSurface& surface) {
   return with_stress_sphere(std::move(spec), surface.radius, "sweep");
 }
 
-// Force and torque (about the origin) on the rotated group at one position.
+// Force and torque (about sweep_torque_point) on the moved group at one position.
 void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
                     const RunOverrides& fe, double angle_deg) {
   row.angle_deg = angle_deg;
   CaseSpec spec = move_group(base, o, angle_deg);
+  const Vec3 point = sweep_torque_point(o, angle_deg);
   ForceResult on_group;
   if (o.analytic) {
     const AnalyticScene scene = analytic_scene(spec);
@@ -206,13 +208,15 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
       (member ? group : rest).push_back(m);
     }
     if (auto harmonic = harmonic_position(group, rest)) {
+      // About the origin: moved to the point by T_P = T_0 - P x F, and the force's bound
+      // with it.
       on_group.force = harmonic->force;
-      on_group.torque = harmonic->torque;
+      on_group.torque = harmonic->torque - point.cross(harmonic->force);
       row.method = "harmonic_interaction";
       row.n_max = harmonic->n_max;
-      row.torque_bound = harmonic->torque_bound;
+      row.torque_bound = harmonic->torque_bound + point.norm() * harmonic->force_bound;
       row.force_bound = harmonic->force_bound;
-    } else if (auto ext = exterior_position(group, rest, o.analytic_tolerance)) {
+    } else if (auto ext = exterior_position(group, rest, point, o.analytic_tolerance)) {
       on_group.force = ext->on.force;
       on_group.torque = ext->on.torque;
       row.method = "exterior_field_interaction";
@@ -221,7 +225,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
     } else {
       PairInteractionOptions popt;
       popt.tolerance = o.analytic_tolerance;
-      const PairInteraction p = pair_interaction(group, rest, Vec3::Zero(), popt);
+      const PairInteraction p = pair_interaction(group, rest, point, popt);
       on_group.force = p.on_A.force;
       on_group.torque = p.on_A.torque;
       row.method = "charge_pair_interaction";
@@ -231,6 +235,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
   } else {
     const StressSurface surface = stress_surface(spec, o.group, o.surface_radius);
     CaseSpec position = fe_position_case(std::move(spec), surface);
+    position.forces.back().torque_point = point;
     // An adaptive sweep refines each position for what the sweep reports: the torque of a
     // rotation, the force of a translation (the case's own quantities may name forces or
     // probes a sweep does not compute).
@@ -252,14 +257,9 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
   row.torque = on_group.torque;
 }
 
-// Every FE position needs its own memory while it runs: with W at once they share the memory
-// guard's limit. Rather than refuse a sweep whose positions fit one at a time but not W at
-// once, fewer run at once: as many as fit, each with a 1/W share of the limit it is checked
-// against (the first position's estimate stands for all; the others' meshes differ by a few
-// per cent, hence the margin). A first position that cannot be estimated (a bad part) is
-// left to fail as a position, with its message.
-constexpr double position_spread = 1.1;
-
+// FE positions share the memory guard's limit (studies/position_memory.hpp), from the first
+// position's estimate. A first position that cannot be estimated (a bad part) is left to fail
+// as a position, with its message.
 void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<double>& angles,
                SweepJobs& jobs) {
   if (o.analytic || jobs.requested * o.world.size_on_node < 2)
@@ -271,24 +271,7 @@ void plan_jobs(const CaseSpec& spec, const SweepOptions& o, const std::vector<do
   } catch (const std::exception&) {
     return;
   }
-  // The processes of an mpirun on one machine share its memory as its positions do.
-  jobs.memory_limit_mb = memory_limit_mb(o.max_memory_gb) / o.world.size_on_node;
-  const double fit = std::floor(jobs.memory_limit_mb / (position_spread * jobs.position_memory_mb));
-  jobs.used = static_cast<int>(std::clamp(fit, 1.0, static_cast<double>(jobs.requested)));
-  if (jobs.used >= jobs.requested || !o.world.is_root())
-    return;
-  char what[96];
-  if (o.jobs > 0)
-    std::snprintf(what, sizeof what, "--jobs %d reduced to %d", o.jobs, jobs.used);
-  else
-    std::snprintf(what, sizeof what, "%d positions at once instead of %d (one per core)", jobs.used,
-                  jobs.requested);
-  std::fprintf(stderr,
-               "magfem: note: %s: %d FE positions at once would need more than %s (%.2f GB; "
-               "one needs about %.2f GB, estimated)\n",
-               what, jobs.requested,
-               o.max_memory_gb > 0 ? "the --max-memory limit" : "the memory available now",
-               jobs.memory_limit_mb / 1024, jobs.position_memory_mb / 1024);
+  fit_jobs_to_memory(jobs, o.max_memory_gb, o.world, o.jobs);
 }
 
 } // namespace
@@ -367,6 +350,12 @@ std::string sweep_checkpoint_options(const SweepOptions& o, const std::string& a
   return o.group + " axis " + axis + " point " + point + " surface-radius " + surface_radius +
          (o.analytic ? " analytic" : " fe") + " order " + std::to_string(o.order) + " mesh-scale " +
          RunCheckpoint::key_of(o.mesh_scale);
+}
+
+Eigen::Vector3d sweep_torque_point(const SweepOptions& o, double position) {
+  if (o.motion != SweepMotion::translate || !o.carry_point)
+    return Vec3::Zero();
+  return o.point + 1e-3 * position * o.axis.normalized();
 }
 
 std::string sweep_position_key(SweepMotion motion) {
@@ -521,12 +510,7 @@ std::vector<SweepRow> run_sweep(const CaseSpec& spec, const SweepOptions& option
     *jobs_used = jobs;
   const int workers = jobs.used;
   RunOverrides fe = fe_overrides(options);
-  // Each position running at once on this machine (under mpirun also those of the other
-  // processes on it) is checked against its share of the limit.
-  const int at_once = workers * options.world.size_on_node;
-  if (at_once > 1 && jobs.memory_limit_mb > 0)
-    fe.parallel_runs = at_once,
-    fe.shared_memory_mb = jobs.memory_limit_mb * options.world.size_on_node;
+  share_memory(fe, jobs, options.world);
   return run_positions<SweepRow>(
       positions, workers, options.checkpoint, {sweep_row_to_json, sweep_row_from_json, {}},
       [&](SweepRow& row, double angle_deg) { solve_position(row, spec, options, fe, angle_deg); },
@@ -610,6 +594,8 @@ nlohmann::ordered_json sweep_summary(const std::string& case_file,
   if (options.motion == SweepMotion::translate)
     j["motion"] = "translate";
   j["axis"] = {options.axis.x(), options.axis.y(), options.axis.z()};
+  if (options.motion == SweepMotion::translate && options.carry_point) // at position 0
+    j["torque_point_m"] = {options.point.x(), options.point.y(), options.point.z()};
   const std::string key = sweep_position_key(options.motion);
   int failed = 0;
   for (const auto& r : rows) {

@@ -24,6 +24,7 @@
 #include "casefile/case_spec.hpp"
 #include "solver/mpi_context.hpp"
 #include "studies/position_adapt.hpp"
+#include "studies/position_memory.hpp"
 
 namespace magfem {
 
@@ -46,15 +47,18 @@ struct SweepOptions {
   SweepMotion motion = SweepMotion::rotate;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitY(); // rotation axis or direction (any length)
   Eigen::Vector3d point = Eigen::Vector3d::Zero(); // a point on the rotation axis, metres
-  std::vector<double> angles_deg;                  // rotate: positions
-  std::vector<double> offsets_m;                   // translate: positions
-  bool analytic = false;                           // charge model instead of FE
-  std::optional<double> surface_radius;            // metres; default: middle of the gap
-  int jobs = 0;                                    // worker threads (0: one per core)
-  double mesh_scale = 0;                           // FE: RunOverrides::mesh_scale
-  int order = 0;                                   // FE: RunOverrides::order
-  double max_memory_gb = 0;                        // FE: RunOverrides::max_memory_gb
-  double analytic_tolerance = 1e-6;                // analytic: charge interaction tolerance
+  // 3D translate: the torque is about `point` carried with the group (--point given), else
+  // about the origin. (Planar translations always carry `point`; rotations turn about it.)
+  bool carry_point = false;
+  std::vector<double> angles_deg;       // rotate: positions
+  std::vector<double> offsets_m;        // translate: positions
+  bool analytic = false;                // charge model instead of FE
+  std::optional<double> surface_radius; // metres; default: middle of the gap
+  int jobs = 0;                         // worker threads (0: one per core)
+  double mesh_scale = 0;                // FE: RunOverrides::mesh_scale
+  int order = 0;                        // FE: RunOverrides::order
+  double max_memory_gb = 0;             // FE: RunOverrides::max_memory_gb
+  double analytic_tolerance = 1e-6;     // analytic: charge interaction tolerance
   // Finished positions found there are not solved again; new ones are recorded (not owned).
   RunCheckpoint* checkpoint = nullptr;
   // Under mpirun: the processes the positions are dealt to (studies/position_runner.hpp);
@@ -66,8 +70,9 @@ struct SweepOptions {
 
 struct SweepRow {
   double angle_deg = 0; // the position: degrees (rotate) or the offset in mm (translate)
-  Eigen::Vector3d torque = Eigen::Vector3d::Zero(); // about the origin, N m
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // on the group, N
+  // About the origin, N m (planar and carry_point translations: about the carried point)
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(); // on the group, N
   bool ok = false;
   std::string error; // why the position failed
   double seconds = 0;
@@ -100,6 +105,9 @@ CaseSpec translate_group(const CaseSpec& spec, const std::string& group,
 // (translate); and the case moved to one of them.
 std::vector<double> sweep_positions(const SweepOptions& options);
 CaseSpec move_group(const CaseSpec& spec, const SweepOptions& options, double position);
+// The point a 3D position's torque is about (metres): the origin, or with carry_point the
+// sweep's point moved with the group to that position (mm, as sweep_positions gives it).
+Eigen::Vector3d sweep_torque_point(const SweepOptions& options, double position);
 // "angle_deg" or "position_mm": the position's column and key.
 std::string sweep_position_key(SweepMotion motion);
 
@@ -122,16 +130,8 @@ Eigen::Vector3d parse_vector3(const std::string& option, const std::string& text
 // InputError.
 Eigen::Vector3d parse_axis(const std::string& text, bool planar = false);
 
-// How many positions ran at once. FE positions each need their own memory: no more run at
-// once than fit together in the memory guard's limit (--max-memory, else the memory available
-// at the start), estimated from the first position's mesh with a 10 % margin for the others,
-// and each is checked against its share of the limit.
-struct SweepJobs {
-  int requested = 1;             // --jobs, or one per core; at most one per position
-  int used = 1;                  // fewer when the memory holds fewer FE positions at once
-  double position_memory_mb = 0; // estimated peak of one FE position (0: not estimated)
-  double memory_limit_mb = 0;    // the limit they share (0: not estimated)
-};
+// How many positions ran at once: SweepJobs (studies/position_memory.hpp); FE positions run
+// as many at once as fit in the memory guard's limit.
 
 // The options part of a sweep's checkpoint identity (pipeline/run_checkpoint.hpp): the group,
 // the axis, point and surface radius as the caller was given them (text), the method, order

@@ -7,6 +7,7 @@
 #include "pipeline/run_checkpoint.hpp"
 #include "pipeline/solve_case.hpp"
 #include "studies/group_motion2d.hpp"
+#include "studies/position_memory.hpp"
 #include "studies/position_runner.hpp"
 
 namespace magfem {
@@ -71,18 +72,23 @@ std::string sweep_axi_method(const CaseSpec& spec, const std::string& group) {
 
 namespace {
 
-void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOptions& o, double dz) {
-  row.position_m = dz;
+// The case one position solves: moved, with the group's force alone (a sweep wants the force
+// only: no probes, no VTU) and an `adapt:` aimed at its Fz; `reversed` as group_force says.
+CaseSpec position_case(const CaseSpec& base, const AxiSweepOptions& o, double dz, bool& reversed) {
   CaseSpec spec = move_group_axi(base, o.group, dz);
-  bool reversed = false;
   spec.forces = {group_force(spec, o.group, reversed)};
-  spec.probes.clear(); // a sweep wants the force only
+  spec.probes.clear();
   spec.write_vtu = false;
   aim_adapt_at(spec, spec.forces.front().name, "Fz");
-  RunOverrides ov;
-  ov.order = o.order;
-  ov.mesh_scale = o.mesh_scale;
-  const auto run = solve_case_2d(std::move(spec), ov);
+  return spec;
+}
+
+void solve_position(AxiSweepRow& row, const CaseSpec& base, const AxiSweepOptions& o,
+                    const RunOverrides& fe, double dz) {
+  row.position_m = dz;
+  bool reversed = false;
+  CaseSpec spec = position_case(base, o, dz, reversed);
+  const auto run = solve_case_2d(std::move(spec), fe);
   row.fz_N = (reversed ? -1.0 : 1.0) * run->forces.front().force.z();
   row.unknowns = static_cast<long>(run->dofs->n_dofs());
   row.adapt = position_adapt(run->adapt);
@@ -120,11 +126,17 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
   move_group_axi(spec, o.group, 0.0); // bad input fails here, not once per position
   bool reversed = false;
   group_force(spec, o.group, reversed);
-  const int n_jobs =
-      default_position_workers(o.world, o.jobs, static_cast<int>(o.positions_m.size()));
+  RunOverrides fe;
+  fe.order = o.order;
+  fe.mesh_scale = o.mesh_scale;
+  fe.max_memory_gb = o.max_memory_gb;
+  int n_jobs = default_position_workers(o.world, o.jobs, static_cast<int>(o.positions_m.size()));
+  if (!o.positions_m.empty())
+    n_jobs = plan_positions_2d(position_case(spec, o, o.positions_m.front(), reversed), fe, n_jobs,
+                               o.world, o.jobs);
   return run_positions<AxiSweepRow>(
       o.positions_m, n_jobs, o.checkpoint, {row_to_json, row_from_json, {}},
-      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, dz); }, progress, o.world,
+      [&](AxiSweepRow& row, double dz) { solve_position(row, spec, o, fe, dz); }, progress, o.world,
       o.stop);
 }
 

@@ -30,6 +30,7 @@ struct AxiSweepOptions {
   int jobs = 0;                    // worker threads (0: one per core)
   double mesh_scale = 0;           // RunOverrides::mesh_scale
   int order = 0;                   // RunOverrides::order
+  double max_memory_gb = 0;        // RunOverrides::max_memory_gb (studies/position_memory.hpp)
   // Finished positions found there are not solved again; new ones are recorded (not owned).
   RunCheckpoint* checkpoint = nullptr;
   // Under mpirun: the processes the positions are dealt to (as SweepOptions::world).

@@ -7,6 +7,7 @@
 #include "pipeline/run2d.hpp"
 #include "pipeline/solve_case.hpp"
 #include "studies/group_motion2d.hpp"
+#include "studies/position_memory.hpp"
 #include "studies/position_runner.hpp"
 
 namespace magfem {
@@ -83,22 +84,27 @@ PlanarPosition planar_position(const CaseSpec& base, const SweepOptions& o, doub
   return {translate_group_planar(base, o.group, d), o.point + d};
 }
 
-void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o, double position) {
+// The case one position solves: carried, with the group's force alone (a sweep wants the
+// force only: no probes, no VTU) and an `adapt:` aimed at it; its force kind names the method.
+CaseSpec position_case(const CaseSpec& base, const SweepOptions& o, double position) {
+  auto [spec, point] = planar_position(base, o, position);
+  spec.forces = {group_force(spec, o.group, point, option_of(o.motion))};
+  spec.probes.clear();
+  spec.write_vtu = false;
+  aim_adapt_at(spec, spec.forces.front().name, sweep_output(o.motion));
+  return spec;
+}
+
+void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
+                    const RunOverrides& fe, double position) {
   row.angle_deg = position;
   row.method = "planar";
-  auto [spec, point] = planar_position(base, o, position);
-  const ForceSpec f = group_force(spec, o.group, point, option_of(o.motion));
-  row.method = f.kind == ForceSpec::Kind::lorentz ? "lorentz"
-               : f.kind == ForceSpec::Kind::band  ? "arkkio_band"
-                                                  : "stress_circle";
-  spec.forces = {f};
-  spec.probes.clear(); // a sweep wants the force only
-  spec.write_vtu = false;
-  aim_adapt_at(spec, f.name, sweep_output(o.motion));
-  RunOverrides ov;
-  ov.order = o.order;
-  ov.mesh_scale = o.mesh_scale;
-  const auto run = solve_case_2d(std::move(spec), ov);
+  CaseSpec spec = position_case(base, o, position);
+  const ForceSpec::Kind kind = spec.forces.front().kind;
+  row.method = kind == ForceSpec::Kind::lorentz ? "lorentz"
+               : kind == ForceSpec::Kind::band  ? "arkkio_band"
+                                                : "stress_circle";
+  const auto run = solve_case_2d(std::move(spec), fe);
   row.torque = run->forces.front().torque;
   row.force = run->forces.front().force;
   row.unknowns = static_cast<long>(run->dofs->n_dofs());
@@ -140,12 +146,19 @@ std::vector<SweepRow> run_sweep_planar(const CaseSpec& spec, const SweepOptions&
   group_force(at_rest.spec, o.group, at_rest.point, option_of(o.motion));
   const std::vector<double> positions = sweep_positions(o);
   const int total = static_cast<int>(positions.size());
-  const int workers = default_position_workers(o.world, o.jobs, total);
-  if (jobs)
+  RunOverrides fe;
+  fe.order = o.order;
+  fe.mesh_scale = o.mesh_scale;
+  fe.max_memory_gb = o.max_memory_gb;
+  int workers = default_position_workers(o.world, o.jobs, total);
+  if (total > 0)
+    workers = plan_positions_2d(position_case(spec, o, positions.front()), fe, workers, o.world,
+                                o.jobs, jobs);
+  else if (jobs)
     jobs->requested = jobs->used = workers;
   return run_positions<SweepRow>(
       positions, workers, o.checkpoint, {sweep_row_to_json, sweep_row_from_json, {}},
-      [&](SweepRow& row, double position) { solve_position(row, spec, o, position); }, progress,
+      [&](SweepRow& row, double position) { solve_position(row, spec, o, fe, position); }, progress,
       o.world, o.stop);
 }
 

@@ -69,7 +69,7 @@ TEST(Adapt2D, ReachesTheTargetWithFewerUnknownsThanUniformRefinement) {
     RunOverrides ov;
     ov.mesh_scale = s;
     const auto run = run_case_2d(spec, ov);
-    if (run->error.energy_error_pct > target) {
+    if (run->error_estimate.energy_error_pct > target) {
       missed_unknowns = run->dofs->n_dofs();
     } else {
       met_unknowns = run->dofs->n_dofs();
@@ -78,7 +78,7 @@ TEST(Adapt2D, ReachesTheTargetWithFewerUnknownsThanUniformRefinement) {
   }
   std::cout << "adaptive: " << adaptive->adapt->passes.size() << " passes, "
             << adaptive->dofs->n_dofs() << " unknowns, estimated "
-            << adaptive->error.energy_error_pct << " %, true " << true_pct
+            << adaptive->error_estimate.energy_error_pct << " %, true " << true_pct
             << " %; uniform: misses the target at " << missed_unknowns << " unknowns, meets it at "
             << met_unknowns << " (true " << met_true << " %)\n";
   // The bound: the true error is never more than 3x the estimate (here the target).

@@ -203,8 +203,10 @@ TEST(Cli, OptionErrorsExitWith2NamingTheOptionAndWriteNothing) {
       {"sweep " + c + o + " --move magnet --axis z --positions 0,1", "--axis"},
       {"sweep " + s3 + o + " --move arm --rotate arm --axis z --positions 0,1", "not both"},
       {"sweep " + s3 + o + " --move arm --axis z --angles 0,1", "--angles"},
-      // A 3D translation's torque is about the origin: a --point would be ignored.
-      {"sweep " + s3 + o + " --move arm --axis z --positions 0,1 --point 0,0,1", "--point"},
+      // An axisymmetric translation has no torque: a --point would be ignored.
+      {"sweep " + magfem::test::example("axi/voice_coil_magnet.yaml") + o +
+           " --move coil --axis z --positions 0,1 --point 0,0,1",
+       "--point"},
       {"transmogrify " + c, "unknown command"},
   }};
   for (const auto& [args, named] : cases) {

@@ -81,10 +81,10 @@ TEST(AnalyticCoils, AxiSolenoidMatchesTheFe) {
   // Linkage / current: the FE's energy-type error is O(h^4), measured ~1e-5 against
   // Maxwell's formula (AxiCoils.SolenoidInductanceEqualsMaxwellsFormulaAndTheEnergy): 2e-4.
   ASSERT_EQ(an->coils.size(), 1u);
-  ASSERT_EQ(fe->coils.size(), 1u);
+  ASSERT_EQ(fe->coil_results.size(), 1u);
   ASSERT_TRUE(an->linkage_known[0]);
-  EXPECT_NEAR(an->coils[0].flux_linkage_Wb, fe->coils[0].flux_linkage_Wb,
-              2e-4 * fe->coils[0].flux_linkage_Wb);
+  EXPECT_NEAR(an->coils[0].flux_linkage_Wb, fe->coil_results[0].flux_linkage_Wb,
+              2e-4 * fe->coil_results[0].flux_linkage_Wb);
   ASSERT_EQ(an->inductance_H.rows(), 1);
   EXPECT_NEAR(an->inductance_H(0, 0) * an->coils[0].current_A, an->coils[0].flux_linkage_Wb,
               1e-12 * an->coils[0].flux_linkage_Wb);
@@ -122,9 +122,9 @@ TEST(AnalyticCoils, AxiVoiceCoilForceAndFieldMatchTheFe) {
   // type quantity (O(h^4)): measured difference printed, tolerance 1e-3.
   ASSERT_TRUE(an->linkage_known[0]);
   std::printf("linkage analytic %.8g Wb, FE %.8g Wb\n", an->coils[0].flux_linkage_Wb,
-              fe->coils[0].flux_linkage_Wb);
-  EXPECT_NEAR(an->coils[0].flux_linkage_Wb, fe->coils[0].flux_linkage_Wb,
-              1e-3 * std::abs(fe->coils[0].flux_linkage_Wb));
+              fe->coil_results[0].flux_linkage_Wb);
+  EXPECT_NEAR(an->coils[0].flux_linkage_Wb, fe->coil_results[0].flux_linkage_Wb,
+              1e-3 * std::abs(fe->coil_results[0].flux_linkage_Wb));
 }
 
 // The 3D path on the coaxial magnet and coil of examples/3d/coil_and_magnet.yaml: the Lorentz

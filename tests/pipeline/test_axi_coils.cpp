@@ -87,8 +87,8 @@ TEST(AxiCoils, SolenoidFieldEqualsTheLoopIntegration) {
 
 TEST(AxiCoils, SolenoidInductanceEqualsMaxwellsFormulaAndTheEnergy) {
   const auto run = run_case_2d(read_case(test::example("axi/solenoid.yaml")));
-  ASSERT_EQ(run->coils.size(), 1u);
-  const double l_fe = run->coils[0].inductance_H;
+  ASSERT_EQ(run->coil_results.size(), 1u);
+  const double l_fe = run->coil_results[0].inductance_H;
   const double l_exact =
       coaxial_coil_self_inductance(CoaxialCoil{r_in, r_out, -half_length, half_length, turns});
   const double w = run->energy.total_J_per_m;
@@ -318,12 +318,12 @@ TEST(AxiCoils, DifferentialInductanceIsTheCoilsOwnAndTheApparentAddsTheMagnet) {
   o.mesh_scale = 2;
   const auto fe = run_case_2d(read_case(test::example("axi/voice_coil_magnet.yaml")), o);
   const auto an = run_case_analytic(read_case(test::example("axi/voice_coil_magnet.yaml")), {});
-  ASSERT_EQ(fe->coils.size(), 1u);
+  ASSERT_EQ(fe->coil_results.size(), 1u);
   const double current = 4.0;
   const double l_self =
       coaxial_coil_self_inductance(CoaxialCoil{4.76e-3, 9.5e-3, 6.85e-3, 32.25e-3, 1050});
   const double magnet_per_a = an->coils[0].flux_linkage_Wb / current - l_self;
-  const auto& c = fe->coils[0];
+  const auto& c = fe->coil_results[0];
   std::printf("voice coil: L FE %.6g H, Maxwell %.6g H (rel %+.2e); lambda / I FE %.6g H, "
               "L + magnet flux / I %.6g H (rel %+.2e); magnet flux / I %.6g H\n",
               c.inductance_H, l_self, c.inductance_H / l_self - 1, c.linkage_per_ampere_H,

@@ -46,8 +46,8 @@ TEST(AxiNonlinear, NewtonAndPicardReachTheSameSaturatedField) {
   EXPECT_LE(newton->report.iterations, 15); // quadratic convergence near the answer
   // Both stop at a relative residual of 1e-10: the energies agree to far below 1e-6.
   EXPECT_NEAR(wn, wp, 1e-6 * wn);
-  EXPECT_NEAR(newton->coils[0].flux_linkage_Wb, picard->coils[0].flux_linkage_Wb,
-              1e-6 * newton->coils[0].flux_linkage_Wb);
+  EXPECT_NEAR(newton->coil_results[0].flux_linkage_Wb, picard->coil_results[0].flux_linkage_Wb,
+              1e-6 * newton->coil_results[0].flux_linkage_Wb);
 }
 
 TEST(AxiNonlinear, EnergyIncrementEqualsCurrentTimesLinkageIncrement) {
@@ -60,7 +60,7 @@ TEST(AxiNonlinear, EnergyIncrementEqualsCurrentTimesLinkageIncrement) {
     const double di = 0.02 * i0;
     const auto a = run_pot(i0), b = run_pot(i0 + di);
     const double dw = b->energy.total_J_per_m - a->energy.total_J_per_m;
-    const double dl = b->coils[0].flux_linkage_Wb - a->coils[0].flux_linkage_Wb;
+    const double dl = b->coil_results[0].flux_linkage_Wb - a->coil_results[0].flux_linkage_Wb;
     const double rel = (dw - (i0 + 0.5 * di) * dl) / dw;
     std::cout << i0 << " A: dW " << dw << " J, I dlambda " << (i0 + 0.5 * di) * dl << " J, rel "
               << rel << ", peak |B| in the core " << a->energy.regions[0].peak_B_T << " T\n";
@@ -70,8 +70,8 @@ TEST(AxiNonlinear, EnergyIncrementEqualsCurrentTimesLinkageIncrement) {
 
 TEST(AxiNonlinear, SaturationLowersTheInductanceAndLowCurrentMeetsTheCircuit) {
   const auto low = run_pot(0.2), high = run_pot(20.0);
-  const double l_low = low->coils[0].linkage_per_ampere_H,
-               l_high = high->coils[0].linkage_per_ampere_H;
+  const double l_low = low->coil_results[0].linkage_per_ampere_H,
+               l_high = high->coil_results[0].linkage_per_ampere_H;
   const auto& t = test::probe(*low, "gap_line");
   const double b_axis = t.rows.front()[t.column("Bz")];
   const double b_circuit = mu0 * turns * 0.2 / gap;
@@ -95,8 +95,10 @@ TEST(AxiNonlinear, DifferentialInductanceIsTheSlopeOfTheLinkage) {
   for (const double i0 : {0.2, 8.0}) {
     const double di = 0.01 * i0;
     const auto mid = run_pot(i0), lo = run_pot(i0 - di), hi = run_pot(i0 + di);
-    const double slope = (hi->coils[0].flux_linkage_Wb - lo->coils[0].flux_linkage_Wb) / (2 * di);
-    const double l_diff = mid->coils[0].inductance_H, l_app = mid->coils[0].linkage_per_ampere_H;
+    const double slope =
+        (hi->coil_results[0].flux_linkage_Wb - lo->coil_results[0].flux_linkage_Wb) / (2 * di);
+    const double l_diff = mid->coil_results[0].inductance_H,
+                 l_app = mid->coil_results[0].linkage_per_ampere_H;
     std::cout << i0 << " A: d lambda/dI " << l_diff << " H, central difference " << slope
               << " H (rel " << (l_diff - slope) / slope << "), lambda / I " << l_app << " H\n";
     EXPECT_NEAR(l_diff, slope, 5e-4 * slope);

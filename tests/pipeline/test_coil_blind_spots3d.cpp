@@ -240,7 +240,8 @@ TEST(CoilBlindSpots3D, CoilAroundASaturatingRodAgreesWithTheAxisymmetricSolver) 
       continue;
     EXPECT_NEAR(b3, ba, 0.04 * peak) << "z " << z;
   }
-  const double l3 = fe3->coil_results.coils[0].flux_linkage_Wb, la = axi->coils[0].flux_linkage_Wb;
+  const double l3 = fe3->coil_results.coils[0].flux_linkage_Wb,
+               la = axi->coil_results[0].flux_linkage_Wb;
   std::printf("linkage: 3D %.6g Wb, axi %.6g Wb (%+.2f %%); peak |B| in the rod %.3f T; %ld "
               "unknowns\n",
               l3, la, 100 * (l3 / la - 1), peak_b, static_cast<long>(fe3->dofs->n_dofs()));
@@ -396,7 +397,7 @@ TEST(CoilBlindSpots3D, CoilFieldReachingTheShellKeepsEnergyAndLinkageExact) {
       run_case_2d(read_case(test::write_temp_case("blind_shell_axi.yaml", shell_case_axi)));
   const double l_iron = iron->coil_results.inductance_H(0, 0);
   const double lambda_iron = iron->coil_results.coils[0].flux_linkage_Wb;
-  const double l_axi = axi->coils[0].inductance_H;
+  const double l_axi = axi->coil_results[0].inductance_H;
   std::printf("iron core: W / (lambda I / 2) - 1 %+.2e; L 3D %.6g H, axi %.6g H (%+.2f %%)\n",
               iron->energy.total_J / (0.5 * lambda_iron * i) - 1, l_iron, l_axi,
               100 * (l_iron / l_axi - 1));

@@ -16,10 +16,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "pipeline/adapt2d.hpp"
-#include "core/constants.hpp"
-#include "tests/case_helpers.hpp"
 #include "analytic/coil_closed_forms.hpp"
+#include "core/constants.hpp"
+#include "pipeline/adapt2d.hpp"
+#include "tests/case_helpers.hpp"
 
 using namespace magfem;
 
@@ -92,13 +92,13 @@ double exact_sphere_energy() {
 // than the tested passes everywhere, including at the iron corners, where uniform refinement
 // gains little. Its own estimate is printed: it must be far below the errors it measures.
 double reference_energy(CaseSpec spec, const Run2D& last) {
-  spec.adapt.accuracy_pct = last.error.energy_error_pct / 10;
+  spec.adapt.accuracy_pct = last.error_estimate.energy_error_pct / 10;
   spec.adapt.max_passes = 3;
   const auto ref = run_adaptive_2d(spec, {});
   std::cout << "  reference: " << ref->dofs->n_dofs() << " unknowns, estimated error "
-            << ref->error.energy_error_pct << " %\n";
+            << ref->error_estimate.energy_error_pct << " %\n";
   // A reference within a quarter of the tested error biases an effectivity by 25 % at most.
-  EXPECT_LT(ref->error.energy_error_pct, last.error.energy_error_pct / 4);
+  EXPECT_LT(ref->error_estimate.energy_error_pct, last.error_estimate.energy_error_pct / 4);
   return ref->energy.total_J_per_m;
 }
 
@@ -168,8 +168,8 @@ void expect_effectivity(const std::vector<PassCheck>& passes) {
 } // namespace
 
 TEST(ErrorEstimate2D, AxisymmetricSolenoidEffectivity) {
-  expect_effectivity(
-      adaptive_effectivity("ee_solenoid", test::coarse_solenoid_case, exact_solenoid_energy(), 1e-3));
+  expect_effectivity(adaptive_effectivity("ee_solenoid", test::coarse_solenoid_case,
+                                          exact_solenoid_energy(), 1e-3));
 }
 
 TEST(ErrorEstimate2D, PlanarDiametricCylinderEffectivity) {

@@ -67,17 +67,17 @@ void expect_matrix_near(const Eigen::MatrixXd& l, const Eigen::MatrixXd& ref, do
 // The identities any run of the pair in air satisfies.
 void expect_identities(const Run2D& run) {
   const Eigen::MatrixXd& l = run.inductance_H;
-  ASSERT_EQ(run.coils.size(), 2u);
-  const Eigen::Vector2d i(run.coils[0].current_A, run.coils[1].current_A);
+  ASSERT_EQ(run.coil_results.size(), 2u);
+  const Eigen::Vector2d i(run.coil_results[0].current_A, run.coil_results[1].current_A);
   // Galerkin: L_jk = f_j . K^-1 f_k, symmetric to round-off.
   EXPECT_NEAR(l(0, 1), l(1, 0), 1e-9 * l(0, 0));
   // In air the linkage is L I, and the energy I^T L I / 2 (the whole device's).
   for (int k = 0; k < 2; ++k)
-    EXPECT_NEAR(run.coils[std::size_t(k)].flux_linkage_Wb, (l * i)(k), 1e-9 * l(0, 0))
-        << run.coils[std::size_t(k)].name;
+    EXPECT_NEAR(run.coil_results[std::size_t(k)].flux_linkage_Wb, (l * i)(k), 1e-9 * l(0, 0))
+        << run.coil_results[std::size_t(k)].name;
   EXPECT_NEAR(run.energy.total_J_per_m, 0.5 * i.dot(l * i), 1e-6 * run.energy.total_J_per_m);
   for (int k = 0; k < 2; ++k)
-    EXPECT_DOUBLE_EQ(run.coils[std::size_t(k)].inductance_H, l(k, k));
+    EXPECT_DOUBLE_EQ(run.coil_results[std::size_t(k)].inductance_H, l(k, k));
 }
 
 TEST(MirrorCoilsAxi, HelmholtzPairHalfModelMatchesFullAndExact) {
@@ -96,12 +96,12 @@ TEST(MirrorCoilsAxi, HelmholtzPairHalfModelMatchesFullAndExact) {
   EXPECT_GT(half->inductance_H(0, 1), 0.1 * half->inductance_H(0, 0)); // a real coupling
   expect_identities(*half);
   expect_identities(*full);
-  EXPECT_EQ(half->coils[0].mirror_image, "lower");
-  EXPECT_EQ(half->coils[1].mirror_image, "upper");
+  EXPECT_EQ(half->coil_results[0].mirror_image, "lower");
+  EXPECT_EQ(half->coil_results[1].mirror_image, "upper");
   // The image's linkage is the meshed coil's (same turns, field: normal).
-  EXPECT_DOUBLE_EQ(half->coils[1].flux_linkage_Wb, half->coils[0].flux_linkage_Wb);
-  EXPECT_NEAR(half->coils[0].flux_linkage_Wb, full->coils[0].flux_linkage_Wb,
-              1e-6 * full->coils[0].flux_linkage_Wb);
+  EXPECT_DOUBLE_EQ(half->coil_results[1].flux_linkage_Wb, half->coil_results[0].flux_linkage_Wb);
+  EXPECT_NEAR(half->coil_results[0].flux_linkage_Wb, full->coil_results[0].flux_linkage_Wb,
+              1e-6 * full->coil_results[0].flux_linkage_Wb);
 }
 
 TEST(MirrorCoilsAxi, AntiHelmholtzPairUnderParallelPlane) {
@@ -113,11 +113,11 @@ TEST(MirrorCoilsAxi, AntiHelmholtzPairUnderParallelPlane) {
   EXPECT_GT(half->inductance_H(0, 1), 0.1 * half->inductance_H(0, 0));
   expect_identities(*half);
   // I_B = -I_A: lambda_B = -lambda_A (the potential is odd about a parallel plane).
-  EXPECT_DOUBLE_EQ(half->coils[1].flux_linkage_Wb, -half->coils[0].flux_linkage_Wb);
+  EXPECT_DOUBLE_EQ(half->coil_results[1].flux_linkage_Wb, -half->coil_results[0].flux_linkage_Wb);
   for (int k = 0; k < 2; ++k)
-    EXPECT_NEAR(half->coils[std::size_t(k)].flux_linkage_Wb,
-                full->coils[std::size_t(k)].flux_linkage_Wb,
-                1e-6 * std::abs(full->coils[0].flux_linkage_Wb));
+    EXPECT_NEAR(half->coil_results[std::size_t(k)].flux_linkage_Wb,
+                full->coil_results[std::size_t(k)].flux_linkage_Wb,
+                1e-6 * std::abs(full->coil_results[0].flux_linkage_Wb));
 }
 
 TEST(MirrorCoilsAxi, UnequalTurnsPair) {
@@ -130,7 +130,8 @@ TEST(MirrorCoilsAxi, UnequalTurnsPair) {
   EXPECT_NEAR(half->inductance_H(1, 1), 4 * half->inductance_H(0, 0),
               1e-9 * half->inductance_H(1, 1));
   expect_identities(*half);
-  EXPECT_DOUBLE_EQ(half->coils[1].flux_linkage_Wb, 2 * half->coils[0].flux_linkage_Wb);
+  EXPECT_DOUBLE_EQ(half->coil_results[1].flux_linkage_Wb,
+                   2 * half->coil_results[0].flux_linkage_Wb);
 }
 
 // The pair around a steel_1010 core (r 0..15 mm, z -14..14 mm, its own image), driven into
@@ -165,8 +166,8 @@ TEST(MirrorCoilsAxi, SaturatedCoreDifferentialMatrix) {
   expect_matrix_near(half->inductance_H, full->inductance_H, 1.5e-4, "half vs full");
   EXPECT_NEAR(half->inductance_H(0, 1), half->inductance_H(1, 0), 1e-9 * half->inductance_H(0, 0));
   // The linkages (not a derivative) agree to 2e-6.
-  EXPECT_NEAR(half->coils[1].flux_linkage_Wb, full->coils[1].flux_linkage_Wb,
-              1e-5 * full->coils[1].flux_linkage_Wb);
+  EXPECT_NEAR(half->coil_results[1].flux_linkage_Wb, full->coil_results[1].flux_linkage_Wb,
+              1e-5 * full->coil_results[1].flux_linkage_Wb);
 }
 
 // The pair with a winding the plane cuts (its own image: r 8..10 mm, z -12..12 mm, 50 turns):
@@ -197,8 +198,8 @@ boundary:)";
   EXPECT_NEAR(l(0, 2), l(2, 0), 1e-9 * l(0, 0));
   const Eigen::Vector3d i(1, 1, 2);
   for (int k = 0; k < 3; ++k)
-    EXPECT_NEAR(half->coils[std::size_t(k)].flux_linkage_Wb, (l * i)(k), 1e-9 * l(0, 0));
-  EXPECT_TRUE(half->coils[2].mirror_image.empty());
+    EXPECT_NEAR(half->coil_results[std::size_t(k)].flux_linkage_Wb, (l * i)(k), 1e-9 * l(0, 0));
+  EXPECT_TRUE(half->coil_results[2].mirror_image.empty());
 }
 
 TEST(MirrorCoilsAxi, RefusedWhenOnlyOneHasTurns) {

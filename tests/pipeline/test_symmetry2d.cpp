@@ -219,13 +219,13 @@ TEST(Symmetry2D, AxisymmetricSolenoidHalfModel) {
   // (estimated energy error 1e-4 %).
   EXPECT_NEAR(half->energy.total_J_per_m, full->energy.total_J_per_m,
               1e-5 * full->energy.total_J_per_m);
-  ASSERT_EQ(half->coils.size(), 1u);
-  EXPECT_NEAR(half->coils[0].flux_linkage_Wb, full->coils[0].flux_linkage_Wb,
-              1e-5 * full->coils[0].flux_linkage_Wb);
-  EXPECT_NEAR(half->coils[0].inductance_H, full->coils[0].inductance_H,
-              1e-5 * full->coils[0].inductance_H);
+  ASSERT_EQ(half->coil_results.size(), 1u);
+  EXPECT_NEAR(half->coil_results[0].flux_linkage_Wb, full->coil_results[0].flux_linkage_Wb,
+              1e-5 * full->coil_results[0].flux_linkage_Wb);
+  EXPECT_NEAR(half->coil_results[0].inductance_H, full->coil_results[0].inductance_H,
+              1e-5 * full->coil_results[0].inductance_H);
   // L I^2 / 2 is the energy (linear, no magnets): the ampere-turns spread over the whole coil.
-  EXPECT_NEAR(0.5 * half->coils[0].inductance_H * 4.0, half->energy.total_J_per_m,
+  EXPECT_NEAR(0.5 * half->coil_results[0].inductance_H * 4.0, half->energy.total_J_per_m,
               1e-4 * half->energy.total_J_per_m);
   // The bore field is 0.04 T; at mesh size 1.5 mm the two meshes' element errors differ by
   // about 2e-4 T.
