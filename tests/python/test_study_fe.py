@@ -25,23 +25,8 @@ import magfem
 SOURCE = os.environ.get("MAGFEM_SOURCE_DIR", ".")
 EXE = os.environ.get("MAGFEM_EXE", os.path.join(SOURCE, "build", "magfem"))
 
-# tests/cli/test_mpi_studies.cpp's small compensator.
-SMALL_COMPENSATOR = """title: "small compensator, R_out ${R_out} mm"
-dimension: 3
-unit: mm
-parameters:
-  R_out: {value: 30, unit: mm, description: outer radius of the outer shell}
-materials:
-  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
-regions:
-  - {name: inner, shape: spherical_segment, r_inner: 0, r_outer: 15, theta: [0, 90],
-     material: pm, magnetization: {type: parallel, direction: [0, 0, 1]}}
-  - {name: outer, shape: spherical_segment, r_inner: 19, r_outer: "${R_out}", theta: [0, 90],
-     material: pm, magnetization: {type: radial, sign: -1}, group: outer}
-boundary: {type: open, radius: "${1.5 * R_out}", shell_ratio: 1.5}
-mesh: {size: 6}
-solver: {order: 1}
-"""
+# The small coarse compensator of tests/cli/test_mpi_studies.cpp (R_out a parameter).
+SMALL_COMPENSATOR = os.path.join(SOURCE, "tests", "cli", "small_compensator.yaml")
 GRID = dict(params={"R_out": [26, 30]}, objectives="torque_at:90", rotate="outer", axis="y",
             analytic=False, order=1, mesh_scale=3.0, jobs=1)
 CLI_GRID = ["--param", "R_out=26,30", "--objective", "torque_at:90", "--rotate", "outer",
@@ -62,9 +47,7 @@ class FeStudy(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.dir = tempfile.mkdtemp()
-        cls.path = os.path.join(cls.dir, "small_compensator.yaml")
-        with open(cls.path, "w", encoding="utf-8") as f:
-            f.write(SMALL_COMPENSATOR)
+        cls.path = SMALL_COMPENSATOR
         cls.case = magfem.Case.load(cls.path)
 
     @classmethod
