@@ -43,7 +43,8 @@ RunCheckpoint::RunCheckpoint(const std::filesystem::path& out_dir, const std::st
     std::ifstream in(path_);
     std::string line;
     if (!in || !std::getline(in, line)) {
-      std::cerr << "magfem: note: --resume: no checkpoint in " << out_dir.string()
+      // Worded for the command line's --resume and Python's resume=True alike.
+      std::cerr << "magfem: note: resume: no checkpoint in " << out_dir.string()
                 << ", starting from the beginning\n";
     } else {
       const auto head = nlohmann::json::parse(line, nullptr, false);
@@ -54,7 +55,7 @@ RunCheckpoint::RunCheckpoint(const std::filesystem::path& out_dir, const std::st
                 " was left by a different run (case file, options or magfem "
                 "build differ): " +
                 (head.is_discarded() ? std::string("unreadable") : head.value("identity", "")) +
-                "; run without --resume to start again");
+                "; start again without resuming");
       while (std::getline(in, line)) {
         const auto entry = nlohmann::json::parse(line, nullptr, false);
         if (entry.is_discarded() || !entry.contains("key") || !entry.contains("value"))
@@ -108,6 +109,10 @@ std::string RunCheckpoint::key_of(double position) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", position);
   return buf;
+}
+
+std::string RunCheckpoint::mesh_scale_key(double mesh_scale) {
+  return key_of(mesh_scale > 0 ? mesh_scale : 1.0);
 }
 
 } // namespace magfem

@@ -41,6 +41,10 @@ public:
 
   // A key for a position value that is exact (17 significant digits).
   static std::string key_of(double position);
+  // The FE mesh scale in an identity: 0 ("as in the case", the command line's default) as 1
+  // (Python's), the same mesh (run2d/run3d multiply the case's sizes by it, 0 taken as 1), so
+  // that a run started by either can be resumed by the other.
+  static std::string mesh_scale_key(double mesh_scale);
 
 private:
   void open(); // on the first record(): the header and the restored positions

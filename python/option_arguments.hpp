@@ -3,8 +3,10 @@
 // magfem.coil_pitch), so that it checks and reads its arguments exactly as the command line
 // does: numbers written for the parser, and the parser's errors renamed for Python.
 #include <map>
+#include <optional>
 #include <string>
 
+#include "casefile/adapt_spec.hpp"
 #include "core/input_error.hpp"
 
 namespace magfem::python {
@@ -17,5 +19,13 @@ std::string option_number(double v);
 // place; the reason stays the command line's. Errors of the case file pass unchanged.
 InputError as_argument_error(const InputError& e, const std::string& where,
                              const std::map<std::string, std::string>& names);
+
+// The adaptive solve's arguments (accuracy in percent, max_passes, max_unknowns; None: the
+// case's) checked by the command line's parse_cli_adapt, with its messages, as InputErrors at
+// `where` ("<solve>", "<study>") naming the argument.
+AdaptOverrides adapt_arguments(const std::string& where, std::optional<double> accuracy_pct,
+                               std::optional<int> max_passes, std::optional<double> max_unknowns);
+// Those options' Python names, for as_argument_error (--accuracy -> accuracy, ...).
+const std::map<std::string, std::string>& adapt_argument_names();
 
 } // namespace magfem::python

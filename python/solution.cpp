@@ -11,6 +11,7 @@
 #include "core/input_error.hpp"
 #include "pipeline/solve_case.hpp"
 #include "python/case_source.hpp"
+#include "python/option_arguments.hpp"
 #include "python/py_progress.hpp"
 #include "python/result_tables.hpp"
 
@@ -37,19 +38,6 @@ template <std::size_t N> py::array_t<int> rows_of(const std::vector<std::array<i
   return out;
 }
 
-// The accuracy and limits of an adaptive solve as Case.solve passes them (None: the case's),
-// checked as the command line checks --accuracy, --max-passes and --max-unknowns.
-AdaptOverrides adapt_overrides(std::optional<double> accuracy_pct, std::optional<int> max_passes,
-                               std::optional<double> max_unknowns) {
-  if (accuracy_pct && !(*accuracy_pct > 0 && *accuracy_pct < 100))
-    throw InputError("<solve>", 0, "accuracy", "must be between 0 and 100 (exclusive), in percent");
-  if (max_passes && *max_passes < 1)
-    throw InputError("<solve>", 0, "max_passes", "must be a whole number >= 1");
-  if (max_unknowns && !(*max_unknowns > 0 && std::isfinite(*max_unknowns)))
-    throw InputError("<solve>", 0, "max_unknowns", "must be positive");
-  return {accuracy_pct, max_unknowns, max_passes};
-}
-
 std::unique_ptr<Solution>
 solve_case(const std::string& path, const std::string& text, const std::string& name,
            const std::map<std::string, double>& parameters, int order, double mesh_scale,
@@ -61,7 +49,8 @@ solve_case(const std::string& path, const std::string& text, const std::string& 
     throw InputError("<solve>", 0, "order", "must be 1 or 2");
   if (!(mesh_scale > 0) || !std::isfinite(mesh_scale))
     throw InputError("<solve>", 0, "mesh_scale", "must be a positive number");
-  const AdaptOverrides adapt = adapt_overrides(accuracy_pct, max_passes, max_unknowns);
+  // The command line's checks of --accuracy, --max-passes and --max-unknowns.
+  const AdaptOverrides adapt = adapt_arguments("<solve>", accuracy_pct, max_passes, max_unknowns);
   CaseSpec spec = read_python_case(path, text, name, parameters);
   apply_adapt_overrides(spec.adapt, adapt, {"<solve>", "accuracy", "max_passes", "max_unknowns"});
   PyProgress reporter(std::move(progress));

@@ -1,6 +1,7 @@
 #include "python/study.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "python/background_call.hpp"
 #include "python/call_checkpoint.hpp"
 #include "python/case_source.hpp"
+#include "python/option_arguments.hpp"
 #include "studies/study.hpp"
 
 namespace py = pybind11;
@@ -29,6 +31,10 @@ struct StudyRequest {
   bool analytic = true;
   int jobs = 0, order = 0;
   double mesh_scale = 0;
+  // FE: the adaptive solve of every position (--accuracy, --max-passes, --max-unknowns).
+  std::optional<double> accuracy;
+  std::optional<int> max_passes;
+  std::optional<double> max_unknowns;
   CheckpointRequest checkpoint;
 };
 
@@ -62,6 +68,15 @@ StudyOptions study_options(const std::string& file, const StudyRequest& q) {
     throw InputError(where, 0, "order", "must be 1 or 2");
   if (!(q.mesh_scale > 0))
     throw InputError(where, 0, "mesh_scale", "must be a positive number");
+  o.adapt = adapt_arguments(where, q.accuracy, q.max_passes, q.max_unknowns);
+  // As the command line refuses them without --fe: an ignored accuracy would look as if met.
+  for (const auto& [given, name] : {std::pair{q.accuracy.has_value(), "accuracy"},
+                                    std::pair{q.max_passes.has_value(), "max_passes"},
+                                    std::pair{q.max_unknowns.has_value(), "max_unknowns"}})
+    if (given && q.analytic)
+      throw InputError(where, 0, name,
+                       "refines the FE mesh: give analytic=False (the analytic models have no "
+                       "mesh)");
   o.sweep.analytic = q.analytic;
   o.sweep.jobs = q.jobs;
   o.sweep.order = q.order;
@@ -70,7 +85,9 @@ StudyOptions study_options(const std::string& file, const StudyRequest& q) {
   return o;
 }
 
-// study.csv's columns over the successful designs: the parameters, then the objectives.
+// study.csv's columns over the successful designs: the parameters, the objectives, then
+// (FE) each objective's estimated error `<objective>_err` (N m; NaN where none, an empty
+// cell in study.csv).
 py::dict study_columns(const StudyOptions& o, const std::vector<StudyDesign>& designs) {
   std::vector<const StudyDesign*> ok;
   for (const auto& d : designs)
@@ -88,6 +105,10 @@ py::dict study_columns(const StudyOptions& o, const std::vector<StudyDesign>& de
     column(o.parameters[k].name, [k](const StudyDesign& d) { return d.parameters[k]; });
   for (std::size_t k = 0; k < o.objectives.size(); ++k)
     column(o.objectives[k].name, [k](const StudyDesign& d) { return d.objectives[k]; });
+  if (!o.sweep.analytic)
+    for (std::size_t k = 0; k < o.objectives.size(); ++k)
+      column(o.objectives[k].name + "_err",
+             [k](const StudyDesign& d) { return d.objective_errors[k]; });
   return out;
 }
 
@@ -108,10 +129,14 @@ py::dict study_case(const std::string& path, const std::string& text, const std:
       request.checkpoint, where,
       case_call_identity("study", study_checkpoint_options(o), path, text, parameters));
   std::vector<StudyDesign> designs;
-  call.run([&] {
-    designs =
-        run_study(o, checkpoint.get(), [&](int done, int total) { call.report(done, total); });
-  });
+  try {
+    call.run([&] {
+      designs =
+          run_study(o, checkpoint.get(), [&](int done, int total) { call.report(done, total); });
+    });
+  } catch (const InputError& e) { // the case's adapt: against the limits given, say
+    throw as_argument_error(e, where, adapt_argument_names());
+  }
   if (checkpoint)
     checkpoint->remove(); // the result is complete
   py::dict out;
@@ -134,6 +159,9 @@ void bind_study(py::module_& m) {
       .def_readwrite("jobs", &StudyRequest::jobs)
       .def_readwrite("order", &StudyRequest::order)
       .def_readwrite("mesh_scale", &StudyRequest::mesh_scale)
+      .def_readwrite("accuracy", &StudyRequest::accuracy)
+      .def_readwrite("max_passes", &StudyRequest::max_passes)
+      .def_readwrite("max_unknowns", &StudyRequest::max_unknowns)
       .def_readwrite("checkpoint", &StudyRequest::checkpoint);
   m.def("study", &study_case, py::arg("path"), py::arg("text"), py::arg("name"),
         py::arg("parameters"), py::arg("request"), py::arg("progress"),

@@ -364,7 +364,7 @@ std::string study_checkpoint_options(const StudyOptions& o) {
     text += exact(a) + ",";
   text += o.sweep.analytic ? " analytic tolerance " + exact(o.sweep.analytic_tolerance)
                            : " fe order " + std::to_string(o.sweep.order) + " mesh-scale " +
-                                 exact(o.sweep.mesh_scale);
+                                 RunCheckpoint::mesh_scale_key(o.sweep.mesh_scale);
   // The case's own adapt: is in the file's hash; the command line's goes here.
   if (o.adapt.accuracy_pct)
     text += " accuracy " + exact(*o.adapt.accuracy_pct);

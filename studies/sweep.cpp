@@ -349,7 +349,7 @@ std::string sweep_checkpoint_options(const SweepOptions& o, const std::string& a
                                      const std::string& point, const std::string& surface_radius) {
   return o.group + " axis " + axis + " point " + point + " surface-radius " + surface_radius +
          (o.analytic ? " analytic" : " fe") + " order " + std::to_string(o.order) + " mesh-scale " +
-         RunCheckpoint::key_of(o.mesh_scale);
+         RunCheckpoint::mesh_scale_key(o.mesh_scale);
 }
 
 Eigen::Vector3d sweep_torque_point(const SweepOptions& o, double position) {

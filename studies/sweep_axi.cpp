@@ -142,7 +142,7 @@ std::vector<AxiSweepRow> run_sweep_axi(const CaseSpec& spec, const AxiSweepOptio
 
 std::string sweep_axi_checkpoint_options(const AxiSweepOptions& o) {
   return o.group + " order " + std::to_string(o.order) + " mesh-scale " +
-         RunCheckpoint::key_of(o.mesh_scale);
+         RunCheckpoint::mesh_scale_key(o.mesh_scale);
 }
 
 std::string sweep_axi_csv(const std::vector<AxiSweepRow>& rows) {

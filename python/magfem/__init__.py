@@ -8,7 +8,6 @@ in-process, numpy columns), ``study``, ``optimize``, ``actuator``, ``coil_pitch`
 checkpoint and resume from it (``checkpoint_dir=``, ``resume=True``).
 """
 import contextlib
-import numbers
 import os
 import warnings
 
@@ -17,7 +16,8 @@ from ._core import __version__
 from .optimize import OptimizeResult, optimize
 from .solution import AnalyticSolution, Mesh, Solution
 from .studies import (ActuatorResult, CoilPitchResult, StudyResult, SweepResult,
-                      ValidationResult, actuator, coil_pitch, study, sweep, validate)
+                      ValidationResult, _whole_number, actuator, coil_pitch, study, sweep,
+                      validate)
 
 # The compiled reader raises this (a ValueError carrying file, line, field).
 InputError = _core._InputError
@@ -119,10 +119,7 @@ class Case:
         same way. Raises InputError (bad case or argument, a geometry the mesher rejects)
         and SolveError (no convergence).
         """
-        if max_passes is not None and (isinstance(max_passes, bool)
-                                       or not isinstance(max_passes, numbers.Integral)):
-            raise _argument_error("max_passes", "must be a whole number >= 1, not %r"
-                                  % (max_passes,))
+        max_passes = _whole_number("max_passes", max_passes, "<solve>")
         with _thread_limit(threads):
             core = _core.solve(self._path or "", self._text or "", self._name or "",
                                self._params, 0 if order is None else order, mesh_scale,

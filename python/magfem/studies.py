@@ -1,6 +1,7 @@
 """magfem.sweep (and the other studies): the command line's studies in-process, their tables
 as numpy columns (the compiled part is _core.sweep)."""
 import json
+import numbers
 import os
 
 import numpy as np
@@ -60,10 +61,11 @@ class _Table(dict):
         return list(self.keys())
 
     def csv(self):
-        """The CSV as the command line writes it (ten significant digits)."""
+        """The CSV as the command line writes it (ten significant digits; NaN, an error
+        without an estimate, as an empty cell)."""
         lines = [",".join(self.columns)]
         for row in zip(*self.values()):
-            lines.append(",".join("%.10g" % v for v in row))
+            lines.append(",".join("" if np.isnan(v) else "%.10g" % v for v in row))
         return "\n".join(lines) + "\n"
 
 
@@ -87,6 +89,15 @@ class SweepResult(_Table):
     def __repr__(self):
         return "<magfem.SweepResult %s: %d positions, %d failed>" % (
             self.method, len(self.positions), self.failed)
+
+
+def _whole_number(name, value, call):
+    """None, or an int (not a bool, not 2.5: the compiled call would truncate or refuse it
+    with a TypeError rather than the command line's message)."""
+    if value is not None and (isinstance(value, bool)
+                              or not isinstance(value, numbers.Integral)):
+        raise _argument_error(name, "must be a whole number >= 1, not %r" % (value,), call)
+    return None if value is None else int(value)
 
 
 def _axis_text(axis):
@@ -165,11 +176,16 @@ _document_checkpoint(sweep, "position")
 class StudyResult(_Table):
     """A study's table: a dict of numpy columns named as the command line's study.csv (one per
     parameter, in the order given, then one per objective: ``peak_torque_Nm``,
-    ``torque_at_90deg_Nm``, N m), successful designs only, the last parameter varying fastest.
+    ``torque_at_90deg_Nm``, N m; FE studies then each objective's estimated error,
+    ``peak_torque_Nm_err``, N m, NaN where there is none), successful designs only, the last
+    parameter varying fastest.
 
     ``summary``: summary.json as ``magfem study`` writes it, but the provenance; ``method``
     and ``failed`` (the number of failed designs) are taken from it, ``failures`` lists each
-    failed design's parameters and error. ``csv()`` is study.csv's text."""
+    failed design's parameters and error, ``adapt`` each FE design that refined its mesh
+    (parameters, converged, passes, unknowns, estimated_error_pct, stopped_deg; empty
+    otherwise) and ``warnings`` those that stopped at a limit first. ``csv()`` is study.csv's
+    text, byte for byte the command line's."""
 
     def __init__(self, columns, summary):
         super().__init__(columns)
@@ -177,6 +193,8 @@ class StudyResult(_Table):
         self.method = summary["method"]
         self.failed = summary["failed_designs"]
         self.failures = summary.get("failures", [])
+        self.adapt = summary.get("adapt", [])
+        self.warnings = summary.get("warnings", [])
 
     def __repr__(self):
         return "<magfem.StudyResult %s: %d designs, %d failed>" % (
@@ -184,7 +202,8 @@ class StudyResult(_Table):
 
 
 def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jobs=None,
-          progress=None, *, order=None, mesh_scale=1.0, checkpoint_dir=None, resume=False):
+          progress=None, *, order=None, mesh_scale=1.0, accuracy=None, max_passes=None,
+          max_unknowns=None, checkpoint_dir=None, resume=False):
     """Runs ``magfem study`` on a Case in-process and returns a StudyResult (numpy columns).
 
     ``params``: {name: values} over the case's parameters (values in the parameter's own
@@ -193,6 +212,11 @@ def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jo
     ``"torque_at:DEG"``), a string or a list. ``rotate``, ``axis``, ``angles`` (degrees; needed
     by peak_torque) as in ``sweep``; ``analytic`` True (the default, as the command line) or
     False for FE designs with ``order`` and ``mesh_scale``; ``jobs``: positions at once.
+    FE: ``accuracy`` (percent), ``max_passes``, ``max_unknowns`` as the command line's
+    --accuracy, --max-passes, --max-unknowns (None: the case's ``adapt:``): every position a
+    design's objectives need refines its mesh for its torque; a design that stops at a limit
+    first is listed in ``warnings``, its ``_err`` columns the estimates reached. Given with
+    ``analytic=True`` they raise InputError.
     ``progress``: None, True (a line per design) or ``progress(done, total)`` per design; the
     GIL is released meanwhile; Ctrl-C starts no further design and raises KeyboardInterrupt.
     A design whose case cannot be read or solved is recorded (``failed``, ``failures``), not
@@ -213,6 +237,9 @@ def study(case, params, objectives, rotate, axis, angles=None, analytic=True, jo
     request.jobs = _count("jobs", jobs)
     request.order = _count("order", order)
     request.mesh_scale = float(mesh_scale)
+    request.accuracy = None if accuracy is None else float(accuracy)
+    request.max_passes = _whole_number("max_passes", max_passes, "<study>")
+    request.max_unknowns = None if max_unknowns is None else float(max_unknowns)
     request.checkpoint = _checkpoint(checkpoint_dir, resume)
     out = _core.study(case._path or "", case._text or "", case._name or "", case._params,
                       request, progress)

@@ -113,28 +113,15 @@ TEST_F(MpiStudies, AnalyticStudyOnTwoAndThreeProcessesWritesTheSerialOutputs) {
 
 // Two hemispherical magnets (the compensator's topology at a third of its size) meshed
 // coarsely: an FE design takes a few seconds, its torque from the Maxwell stress sphere.
-const char* small_compensator = R"(title: "small compensator, R_out ${R_out} mm"
-dimension: 3
-unit: mm
-parameters:
-  R_out: {value: 30, unit: mm, description: outer radius of the outer shell}
-materials:
-  pm: {kind: magnet, B_r: 1.3, mu_r: 1.0}
-regions:
-  - {name: inner, shape: spherical_segment, r_inner: 0, r_outer: 15, theta: [0, 90],
-     material: pm, magnetization: {type: parallel, direction: [0, 0, 1]}}
-  - {name: outer, shape: spherical_segment, r_inner: 19, r_outer: "${R_out}", theta: [0, 90],
-     material: pm, magnetization: {type: radial, sign: -1}, group: outer}
-boundary: {type: open, radius: "${1.5 * R_out}", shell_ratio: 1.5}
-mesh: {size: 6}
-solver: {order: 1}
-)";
+std::string small_compensator() {
+  return text_of(fs::path(magfem::test::source_dir()) / "tests/cli/small_compensator.yaml");
+}
 
 // The FE path: meshing and solving inside the dealt design, unknowns and torques through the
 // design codec (a re-rounded torque changes study.csv's last digits).
 TEST_F(MpiStudies, CoarseFeStudyOnTwoProcessesWritesTheSerialOutputs) {
   const fs::path serial = fresh_dir("fe_study_serial"), dir = fresh_dir("fe_study_2_ranks");
-  const fs::path case_file = case_beside(serial, "small_compensator.yaml", small_compensator);
+  const fs::path case_file = case_beside(serial, "small_compensator.yaml", small_compensator());
   const std::string study = "study " + case_file.string() +
                             " --param R_out=26,30 --objective torque_at:90 --rotate outer "
                             "--axis y --fe --jobs 1 --quiet";

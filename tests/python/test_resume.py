@@ -7,13 +7,16 @@ from Python it gives sweep.csv byte for byte as an uninterrupted run and as `mag
 That the resumed call takes the finished positions from the checkpoint (rather than solving
 all again, which would give the same bytes) is shown by a record altered on disk, whose
 value the resumed result carries. A resume on another case is refused with the command
-line's message, the checkpoint left as it was. A study resumes alike, and `magfem validate
---resume` continues a validation a Python call left. Run by ctest
+line's message, the checkpoint left as it was. `magfem sweep --resume` at its default mesh
+scale continues a sweep Python left at its default (the same mesh, one identity). A study
+resumes alike; resume=True without a checkpoint notes it in words for Python as for the
+command line; and `magfem validate --resume` continues a validation a Python call left. Run by ctest
 `python_resume` with MAGFEM_EXE and PYTHONPATH=build/python (~15 s)."""
 import json
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -153,6 +156,24 @@ class SweepResume(unittest.TestCase):
             magfem.sweep(self.case, checkpoint_dir=self.dir, resume=True,
                          **{**FE, "mesh_scale": 2.5})
 
+    def test_the_command_line_resumes_a_python_sweep_at_the_default_scale(self):
+        # Python's mesh_scale=1.0 and the command line's "as in the case" (0) are the same
+        # mesh, so the checkpoint's identity names both as 1 (RunCheckpoint::mesh_scale_key):
+        # without that the command line refuses it ("a different run", exit 2).
+        default = {k: v for k, v in FE.items() if k != "mesh_scale"}
+        default["positions"] = POSITIONS[:2]
+        with self.assertRaises(KeyboardInterrupt):
+            magfem.sweep(self.case, checkpoint_dir=self.dir, progress=stop_after(1), **default)
+        kept = len(records(self.dir))
+        self.assertGreaterEqual(kept, 1)
+        run = subprocess.run([EXE, "sweep", VOICE_COIL, "--move", "coil", "--axis", "z",
+                              "--positions", "0,1", "--order", "1", "--jobs", "1", "--quiet",
+                              "--resume", "--out", self.dir],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("--resume: %d finished positions from the checkpoint" % kept, run.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.dir, CHECKPOINT)))
+
     def test_resume_needs_a_directory(self):
         with self.assertRaises(magfem.InputError) as err:
             magfem.sweep(self.case, resume=True, **FE)
@@ -189,6 +210,21 @@ class StudyResume(unittest.TestCase):
             f.write("\n".join([lines[0], json.dumps(entry)]) + "\n")
         resumed = magfem.study(case, checkpoint_dir=directory, resume=True, **self.ARGS)
         self.assertEqual(np.count_nonzero(resumed["torque_at_90deg_Nm"] == 4.25), 1)
+
+
+    def test_resume_without_a_checkpoint_is_a_note_worded_for_python_too(self):
+        # The note comes from the library (pipeline/run_checkpoint.cpp) on stderr, for the
+        # command line's --resume and resume=True alike: it names neither's spelling.
+        directory = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, directory)
+        script = ("import magfem; magfem.study(magfem.Case.load(%r), checkpoint_dir=%r, "
+                  "resume=True, **%r)" % (COMPENSATOR, directory, self.ARGS))
+        run = subprocess.run([sys.executable, "-c", script], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("magfem: note: resume: no checkpoint in %s, starting from the beginning"
+                      % directory, run.stderr)
+        self.assertNotIn("--resume", run.stderr)
 
 
 class ValidateResume(unittest.TestCase):

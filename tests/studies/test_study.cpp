@@ -12,12 +12,12 @@
 #include <iterator>
 #include <string>
 
+#include "analytic/exterior_field_interaction.hpp"
+#include "analytic/interaction_cases.hpp"
+#include "core/input_error.hpp"
 #include "pipeline/analytic_scene.hpp"
 #include "studies/study.hpp"
 #include "tests/case_helpers.hpp"
-#include "core/input_error.hpp"
-#include "analytic/exterior_field_interaction.hpp"
-#include "analytic/interaction_cases.hpp"
 
 using namespace magfem;
 
@@ -198,4 +198,27 @@ TEST(Study, PrototypeHeightExampleIsTheDocumentedLayout) {
       exterior_field_interaction(c.on, c.by, Eigen::Vector3d::Zero()).on.torque.y();
   EXPECT_NEAR(designs[0].objectives[0], expected, 1e-8 * std::abs(expected));
   EXPECT_GT(designs[0].torque_accuracy, 0); // the estimate is recorded
+}
+
+// The checkpoint's identity names the FE mesh scale "as in the case" (0, the command line's
+// default) as 1 (Python's default): the same mesh, so either can resume the other's run
+// (tests/python/test_resume.py shows it for a sweep); another scale stays another run.
+TEST(Study, CheckpointIdentityNamesTheDefaultMeshScaleAsOne) {
+  const auto options_at = [](double scale) {
+    StudyOptions o = parse_study_options({test::example("3d/compensator_study.yaml"), "--param",
+                                          "R_out=40,50", "--objective", "torque_at:90", "--rotate",
+                                          "outer", "--axis", "y", "--fe"});
+    o.sweep.mesh_scale = scale;
+    return o;
+  };
+  EXPECT_EQ(study_checkpoint_options(options_at(0)), study_checkpoint_options(options_at(1)));
+  EXPECT_NE(study_checkpoint_options(options_at(2)), study_checkpoint_options(options_at(1)));
+  SweepOptions sweep;
+  sweep.group = "outer";
+  const auto sweep_at = [&](double scale) {
+    sweep.mesh_scale = scale;
+    return sweep_checkpoint_options(sweep, "y", "", "");
+  };
+  EXPECT_EQ(sweep_at(0), sweep_at(1));
+  EXPECT_NE(sweep_at(2), sweep_at(1));
 }
