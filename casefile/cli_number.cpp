@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/input_error.hpp"
 
@@ -44,6 +45,16 @@ void parse_cli_adapt(const std::string& option, const std::string& text, AdaptOv
   } else {
     throw std::logic_error("parse_cli_adapt: not an adaptive option: " + option);
   }
+}
+
+void refuse_adapt_options_unless(const AdaptOverrides& o, bool allowed, const std::string& why) {
+  if (allowed)
+    return;
+  for (const auto& [given, name] : {std::pair{o.accuracy_pct.has_value(), "--accuracy"},
+                                    std::pair{o.max_passes.has_value(), "--max-passes"},
+                                    std::pair{o.max_unknowns.has_value(), "--max-unknowns"}})
+    if (given)
+      throw InputError("<command line>", 0, name, why);
 }
 
 int parse_cli_order(const std::string& text) {

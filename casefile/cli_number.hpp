@@ -19,6 +19,9 @@ int parse_cli_order(const std::string& text);
 // 100), --max-passes N (a whole number >= 1), --max-unknowns N (positive), set in `o`
 // (`option` names which; an unknown one is a programming error).
 void parse_cli_adapt(const std::string& option, const std::string& text, AdaptOverrides& o);
+// Unless `allowed` (the command solves something they can refine), an adaptive option given
+// in `o` is an InputError naming the first one given, with `why`.
+void refuse_adapt_options_unless(const AdaptOverrides& o, bool allowed, const std::string& why);
 
 // --param NAME=VALUE: sets parameters[NAME] (the case file's `parameters:`; read_case checks
 // that the file declares NAME).

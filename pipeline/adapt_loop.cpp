@@ -101,11 +101,6 @@ bool reached(const AdaptPass& p, double accuracy_pct) {
                      [&](double e) { return e <= accuracy_pct; }); // NaN: not yet
 }
 
-// NaN (not known on the first pass) as null.
-nlohmann::ordered_json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
 } // namespace
 
 std::vector<AdaptQuantity> resolve_adapt_quantities(const CaseSpec& spec) {

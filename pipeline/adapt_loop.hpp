@@ -10,6 +10,7 @@
 // passes, extrapolated with the observed ratio of successive changes; the energy's is the
 // estimator's. Reaching max_passes, max_unknowns or the memory guard first stops with
 // converged = false, a stop reason and a warning: never a silent pass.
+#include <cmath>
 #include <functional>
 #include <string>
 #include <utility>
@@ -120,6 +121,10 @@ template <class Run> void file_adapt_history(Run& run, AdaptHistory history) {
 
 // summary.json's adapt block.
 nlohmann::ordered_json adapt_json(const AdaptHistory& h);
+// An estimate as JSON: NaN (not known) as null, which JSON has for it.
+template <class Json = nlohmann::ordered_json> Json number_or_null(double v) {
+  return std::isfinite(v) ? Json(v) : Json(nullptr);
+}
 
 // One console line for a pass; `element_word`: "triangles" or "tetrahedra".
 std::string describe_adapt_pass(const AdaptPass& pass, const char* element_word = "triangles");

@@ -478,11 +478,7 @@ ActuatorOptions parse_actuator_options(const std::vector<std::string>& args) {
     throw InputError(cli, 0, "--orientations", "give rx=..,ry=..,rz=.. or a CSV file");
   // The torque-constant solves are field evaluations at the coils, not a named quantity: the
   // adaptive options refine the verification solves only.
-  for (const auto& [given, name] : {std::pair{o.adapt.accuracy_pct.has_value(), "--accuracy"},
-                                    std::pair{o.adapt.max_passes.has_value(), "--max-passes"},
-                                    std::pair{o.adapt.max_unknowns.has_value(), "--max-unknowns"}})
-    if (given && !o.verify)
-      throw InputError(cli, 0, name, "refines the --verify solves: give --verify");
+  refuse_adapt_options_unless(o.adapt, o.verify, "refines the --verify solves: give --verify");
   if (o.out_dir.empty())
     o.out_dir = "out";
   return o;

@@ -13,6 +13,7 @@
 #include "casefile/cli_number.hpp"
 #include "core/input_error.hpp"
 #include "core/output_stage.hpp"
+#include "pipeline/adapt_loop.hpp"
 #include "pipeline/build_info.hpp"
 #include "pipeline/run_checkpoint.hpp"
 #include "studies/position_runner.hpp"
@@ -96,6 +97,12 @@ double position_torque_error(const SweepRow& r) {
   return r.torque_bound > 0 ? r.torque_bound : std::numeric_limits<double>::quiet_NaN();
 }
 
+// The largest of two errors, NaN (no estimate) when either is: a largest error over
+// positions of which one has no estimate is not known.
+double largest_known_error(double a, double b) {
+  return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
+}
+
 // The adaptive record of a design from its positions' rows.
 StudyDesignAdapt design_adapt(const std::vector<SweepRow>& rows) {
   StudyDesignAdapt a;
@@ -105,10 +112,7 @@ StudyDesignAdapt design_adapt(const std::vector<SweepRow>& rows) {
     if (!r.adapt.passes)
       continue;
     a.passes = std::max(a.passes, r.adapt.passes);
-    // NaN (no estimate) wins: the design's largest error is then unknown
-    a.error_pct = std::isnan(r.adapt.error_pct) || std::isnan(a.error_pct)
-                      ? r.adapt.error_pct + a.error_pct
-                      : std::max(a.error_pct, r.adapt.error_pct);
+    a.error_pct = largest_known_error(a.error_pct, r.adapt.error_pct);
     if (!r.adapt.converged)
       a.converged = false, a.stopped_deg.push_back(r.angle_deg);
   }
@@ -155,8 +159,7 @@ StudyDesign evaluate_study_design(const StudyOptions& o, const std::vector<doubl
         double peak = 0, error = 0;
         for (std::size_t i = 0; i < n_peak; ++i) {
           peak = std::max(peak, std::abs(rows[i].torque.dot(axis)));
-          const double e = position_torque_error(rows[i]);
-          error = std::isnan(e) || std::isnan(error) ? e + error : std::max(error, e);
+          error = largest_known_error(error, position_torque_error(rows[i]));
         }
         d.objectives.push_back(peak);
         d.objective_errors.push_back(error);
@@ -249,12 +252,8 @@ StudyOptions parse_study_options(const std::vector<std::string>& args) {
   if (analytic && fe)
     throw InputError(cli, 0, "--fe", "give --analytic or --fe, not both");
   o.sweep.analytic = !fe;
-  for (const auto& [given, name] : {std::pair{o.adapt.accuracy_pct.has_value(), "--accuracy"},
-                                    std::pair{o.adapt.max_passes.has_value(), "--max-passes"},
-                                    std::pair{o.adapt.max_unknowns.has_value(), "--max-unknowns"}})
-    if (given && !fe)
-      throw InputError(cli, 0, name,
-                       "refines the FE mesh: give --fe (the analytic models have no mesh)");
+  refuse_adapt_options_unless(o.adapt, fe,
+                              "refines the FE mesh: give --fe (the analytic models have no mesh)");
   if (o.parameters.empty())
     throw InputError(cli, 0, "--param", "give at least one --param NAME=START:STEP:END");
   if (o.objectives.empty())
@@ -294,9 +293,9 @@ std::string design_key(const std::vector<double>& values) {
 // What study.csv and summary.json need of a finished design (doubles exact: nlohmann::json
 // writes the shortest text that reads back as the same double).
 nlohmann::json design_to_json(const StudyDesign& d) {
-  nlohmann::json errors = nlohmann::json::array(); // NaN has no JSON: null
+  nlohmann::json errors = nlohmann::json::array();
   for (double e : d.objective_errors)
-    errors.push_back(std::isnan(e) ? nlohmann::json(nullptr) : nlohmann::json(e));
+    errors.push_back(number_or_null<nlohmann::json>(e));
   return {{"parameters", d.parameters},
           {"objectives", d.objectives},
           {"objective_errors", errors},
@@ -306,8 +305,7 @@ nlohmann::json design_to_json(const StudyDesign& d) {
            {{"passes", d.adapt.passes},
             {"converged", d.adapt.converged},
             {"unknowns", d.adapt.unknowns},
-            {"error_pct", std::isnan(d.adapt.error_pct) ? nlohmann::json(nullptr)
-                                                        : nlohmann::json(d.adapt.error_pct)},
+            {"error_pct", number_or_null<nlohmann::json>(d.adapt.error_pct)},
             {"stopped_deg", d.adapt.stopped_deg}}},
           {"seconds", d.seconds}};
 }
@@ -506,15 +504,12 @@ nlohmann::ordered_json study_summary(const StudyOptions& options,
     j["max_torque_error_Nm"] = accuracy;
   for (const auto& d : designs)
     if (d.ok && d.adapt.passes)
-      j["adapt"].push_back(
-          {{"parameters", d.parameters},
-           {"converged", d.adapt.converged},
-           {"passes", d.adapt.passes},
-           {"unknowns", d.adapt.unknowns},
-           {"estimated_error_pct", std::isnan(d.adapt.error_pct)
-                                       ? nlohmann::ordered_json(nullptr)
-                                       : nlohmann::ordered_json(d.adapt.error_pct)},
-           {"stopped_deg", d.adapt.stopped_deg}});
+      j["adapt"].push_back({{"parameters", d.parameters},
+                            {"converged", d.adapt.converged},
+                            {"passes", d.adapt.passes},
+                            {"unknowns", d.adapt.unknowns},
+                            {"estimated_error_pct", number_or_null(d.adapt.error_pct)},
+                            {"stopped_deg", d.adapt.stopped_deg}});
   if (const auto warnings = study_warnings(options, designs); !warnings.empty())
     j["warnings"] = warnings;
   return j;
