@@ -233,6 +233,10 @@ public:
     Eigen::SparseMatrix<double> lower(m, m);
     lower.setFromTriplets(entries.begin(), entries.end());
     lower.makeCompressed();
+    r_.resize(m);
+    // Distributed, a process may own none of the block's equations: Gauss-Seidel alone.
+    if (m == 0)
+      return;
     const auto same = [](const auto* data, Eigen::Index n, const auto& kept) {
       return static_cast<std::size_t>(n) == kept.size() && std::equal(data, data + n, kept.begin());
     };
@@ -254,7 +258,6 @@ public:
       ++cache.factorizations;
     }
     factor_ = cache.factor;
-    r_.resize(m);
   }
 
   // x <- x + M^-1 (b - A x), `its` times; M = down's or up's splitting.
@@ -302,6 +305,8 @@ private:
     x.row(i) += inv_diag_[i] * s_;
   }
   void solve_block_many(const ColumnBlock& b, ColumnBlock& x, bool x_is_zero) {
+    if (block_.empty())
+      return;
     Eigen::MatrixXd rb(static_cast<Eigen::Index>(block_.size()), b.cols());
     for (std::size_t k = 0; k < block_.size(); ++k) {
       if (x_is_zero)
@@ -325,6 +330,8 @@ private:
   }
   // x_B += K_BB^-1 (b - A x)_B; with x = 0 the residual is b.
   void solve_block(const double* b, double* x, bool x_is_zero) {
+    if (block_.empty())
+      return;
     for (std::size_t k = 0; k < block_.size(); ++k)
       r_[static_cast<Eigen::Index>(k)] = x_is_zero ? b[block_[k]] : residual(b, x, block_[k]);
     const Eigen::VectorXd dx = factor_->solve(r_);
@@ -418,6 +425,16 @@ struct PetscKspSolver::Impl {
   std::vector<PetscScalar> value, p_value;
   CsrMatrix coarse_csr; // the arrays behind `coarse`
   double rhs_norm = 1;
+  // Distributed mode (begin_distributed): `a` is one MPIAIJ matrix over MPI_COMM_WORLD, and
+  // pmg's row_start, column and value hold this process's diagonal block of it, local_block
+  // the smoother block's equations among its rows (local numbering).
+  bool distributed = false;
+  std::vector<int> local_block;
+  // Distributed pmg (partition_for_pmg): the row of each equation in the distributed matrix,
+  // the coarse row of each P1 unknown, and the equation of each row this process owns
+  // [own_begin, own_end). Empty order: rows are equations, in contiguous blocks.
+  std::vector<PetscInt> order, coarse_order, local_equations;
+  PetscInt own_begin = 0, own_end = 0, coarse_local = 0;
 
   ~Impl() {
     release();
@@ -441,6 +458,13 @@ struct PetscKspSolver::Impl {
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
+  void partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern);
+  PetscInt row_of(PetscInt equation) const { return order.empty() ? equation : order[equation]; }
+  PetscInt equation_of(PetscInt row) const {
+    return order.empty() ? row : local_equations[row - own_begin];
+  }
+  void set_up_serial_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
+  void set_up_distributed_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
   bool runs_block_vcycle() const;
   void multiply_many(const ColumnBlock& x, ColumnBlock& y) const;
   void vcycle_many(const ColumnBlock& r, ColumnBlock& z);
@@ -515,36 +539,34 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
 // BoomerAMG V-cycle instead of CHOLMOD 43 / 55; the shell by CHOLMOD 23 / 23 / 23, also
 // faster (2.0 against 4.6 s of CG at 255k). The point smoothers all grow alike: the shell's
 // anisotropy grows under refinement (BlockSmoother), which the P1 space cannot take up.
+//
+// Distributed (issue 33), the same two levels over MPI_COMM_WORLD: the interpolation and
+// the coarse operator as MPIAIJ matrices (set_up_distributed_coarse_space), BoomerAMG on the
+// coarse level, and as smoother block Jacobi across the processes whose local part is the
+// serial smoother on the process's diagonal block: Gauss-Seidel (PETSc's SOR on MPIAIJ is
+// local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
+// Each sweep takes the other processes' values from the start of the sweep, through the
+// residual b - A x that PETSc's Richardson computes over the whole matrix.
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& q = *options.prolongation;
-  if (q.rows() != static_cast<Eigen::Index>(row_start.size()) - 1 || !q.isCompressed())
-    throw SolveError("internal: the coarse space does not fit the system");
-  p_row_start.assign(q.outerIndexPtr(), q.outerIndexPtr() + q.rows() + 1);
-  p_column.assign(q.innerIndexPtr(), q.innerIndexPtr() + q.nonZeros());
-  p_value.assign(q.valuePtr(), q.valuePtr() + q.nonZeros());
-  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(q.rows()),
-                                  static_cast<PetscInt>(q.cols()), p_row_start.data(),
-                                  p_column.data(), p_value.data(), &p),
-        "MatCreateSeqAIJWithArrays (interpolation)");
+  if (distributed)
+    set_up_distributed_coarse_space(q);
+  else
+    set_up_serial_coarse_space(q);
   check(PCSetType(pc, PCMG), "PCSetType(mg)");
   check(PCMGSetLevels(pc, 2, nullptr), "PCMGSetLevels");
   check(PCMGSetType(pc, PC_MG_MULTIPLICATIVE), "PCMGSetType");
   check(PCMGSetCycleType(pc, PC_MG_CYCLE_V), "PCMGSetCycleType");
   check(PCMGSetInterpolation(pc, 1, p), "PCMGSetInterpolation");
-  // The Galerkin operator by our row-wise product (galerkin_product.hpp), not PETSc's general
-  // one: the same matrix, a fifth of the time.
-  coarse_csr = galerkin_product(row_start.data(), column.data(), value.data(), q);
-  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, coarse_csr.rows, coarse_csr.cols,
-                                  coarse_csr.row_start.data(), coarse_csr.column.data(),
-                                  coarse_csr.value.data(), &coarse),
-        "MatCreateSeqAIJWithArrays (coarse operator)");
   check(PCMGSetGalerkin(pc, PC_MG_GALERKIN_NONE), "PCMGSetGalerkin");
   KSP coarse_ksp = nullptr;
+  // The global block decides (every process must set the same smoother type up).
   if (options.smoother_block && !options.smoother_block->empty()) {
     block_smoother = std::make_unique<BlockSmootherSlot>(BlockSmootherSlot{
-        &row_start, &column, &value, options.smoother_block, &block_factor, nullptr});
+        &row_start, &column, &value, distributed ? &local_block : options.smoother_block,
+        &block_factor, nullptr});
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
@@ -556,9 +578,12 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
       check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
       check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
       const bool is_down = smoother == down;
-      check(PCShellSetApplyRichardson(shell,
-                                      is_down ? smooth_richardson<true> : smooth_richardson<false>),
-            "PCShellSetApplyRichardson");
+      // Distributed, the smoother sees only its diagonal block: Richardson forms the residual
+      // over the whole matrix and applies the local sweep to it from zero.
+      if (!distributed)
+        check(PCShellSetApplyRichardson(shell, is_down ? smooth_richardson<true>
+                                                       : smooth_richardson<false>),
+              "PCShellSetApplyRichardson");
       check(PCShellSetApply(shell, is_down ? smooth_apply<true> : smooth_apply<false>),
             "PCShellSetApply");
     }
@@ -577,6 +602,281 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   check(KSPGetPC(coarse_ksp, &coarse_pc), "KSPGetPC");
   check(PCSetType(coarse_pc, PCHYPRE), "PCSetType(hypre)");
   check(PCHYPRESetType(coarse_pc, "boomeramg"), "PCHYPRESetType");
+}
+
+// Serial: the interpolation over the caller's arrays, and the Galerkin operator by our
+// row-wise product (galerkin_product.hpp), not PETSc's general one: the same matrix, a fifth
+// of the time.
+void PetscKspSolver::Impl::set_up_serial_coarse_space(
+    const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
+  if (q.rows() != static_cast<Eigen::Index>(row_start.size()) - 1 || !q.isCompressed())
+    throw SolveError("internal: the coarse space does not fit the system");
+  p_row_start.assign(q.outerIndexPtr(), q.outerIndexPtr() + q.rows() + 1);
+  p_column.assign(q.innerIndexPtr(), q.innerIndexPtr() + q.nonZeros());
+  p_value.assign(q.valuePtr(), q.valuePtr() + q.nonZeros());
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(q.rows()),
+                                  static_cast<PetscInt>(q.cols()), p_row_start.data(),
+                                  p_column.data(), p_value.data(), &p),
+        "MatCreateSeqAIJWithArrays (interpolation)");
+  coarse_csr = galerkin_product(row_start.data(), column.data(), value.data(), q);
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, coarse_csr.rows, coarse_csr.cols,
+                                  coarse_csr.row_start.data(), coarse_csr.column.data(),
+                                  coarse_csr.value.data(), &coarse),
+        "MatCreateSeqAIJWithArrays (coarse operator)");
+}
+
+// Distributed: every process holds the whole interpolation `q` and puts its own rows (those
+// it owns of the fine matrix) into an MPIAIJ matrix. The columns (the P1 unknowns) are split
+// evenly over the processes rather than following the fine rows of their vertices: the DOF
+// numbering puts the vertices first, so with rows in contiguous blocks the first process
+// would own every P1 unknown and do the whole coarse level alone. The coarse operator
+// P^T A P by PETSc's distributed triple product. Then the process's diagonal block of `a`
+// (its rows, its columns) into row_start/column/value for the smoother, and the smoother
+// block's equations among its rows.
+void PetscKspSolver::Impl::set_up_distributed_coarse_space(
+    const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
+  PetscInt n = 0, begin = 0, end = 0;
+  check(MatGetSize(a, &n, nullptr), "MatGetSize");
+  if (q.rows() != n || !q.isCompressed() || order.size() != static_cast<std::size_t>(n))
+    throw SolveError("internal: the coarse space does not fit the system");
+  check(MatGetOwnershipRange(a, &begin, &end), "MatGetOwnershipRange");
+  const auto m = static_cast<PetscInt>(q.cols());
+  PetscInt c_end = 0;
+  MPI_Scan(&coarse_local, &c_end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  const PetscInt c_begin = c_end - coarse_local;
+  const int* q_start = q.outerIndexPtr();
+  const int* q_column = q.innerIndexPtr();
+  std::vector<PetscInt> in_block(end - begin, 0), off_block(end - begin, 0);
+  for (PetscInt r = begin; r < end; ++r) {
+    const PetscInt i = equation_of(r);
+    for (int k = q_start[i]; k < q_start[i + 1]; ++k) {
+      const PetscInt c = coarse_order[q_column[k]];
+      ++(c >= c_begin && c < c_end ? in_block : off_block)[r - begin];
+    }
+  }
+  check(MatCreateAIJ(PETSC_COMM_WORLD, end - begin, coarse_local, n, m, 0, in_block.data(), 0,
+                     off_block.data(), &p),
+        "MatCreateAIJ (interpolation)");
+  std::vector<PetscInt> columns;
+  for (PetscInt r = begin; r < end; ++r) {
+    const PetscInt i = equation_of(r);
+    columns.clear();
+    for (int k = q_start[i]; k < q_start[i + 1]; ++k)
+      columns.push_back(coarse_order[q_column[k]]);
+    check(MatSetValues(p, 1, &r, static_cast<PetscInt>(columns.size()), columns.data(),
+                       q.valuePtr() + q_start[i], INSERT_VALUES),
+          "MatSetValues (interpolation)");
+  }
+  check(MatAssemblyBegin(p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin (interpolation)");
+  check(MatAssemblyEnd(p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd (interpolation)");
+  check(MatPtAP(a, p, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse), "MatPtAP (coarse operator)");
+
+  Mat diag = a, off = nullptr;
+  const PetscInt* off_columns = nullptr;
+  PetscBool is_mpi = PETSC_FALSE;
+  check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(a), MATMPIAIJ, &is_mpi),
+        "PetscObjectTypeCompare");
+  if (is_mpi)
+    check(MatMPIAIJGetSeqAIJ(a, &diag, &off, &off_columns), "MatMPIAIJGetSeqAIJ");
+  PetscInt rows = 0;
+  const PetscInt *ia = nullptr, *ja = nullptr;
+  PetscBool done = PETSC_FALSE;
+  check(MatGetRowIJ(diag, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done), "MatGetRowIJ");
+  if (!done || rows != end - begin)
+    throw SolveError("internal: the diagonal block's rows are not available");
+  const PetscScalar* v = nullptr;
+  check(MatSeqAIJGetArrayRead(diag, &v), "MatSeqAIJGetArrayRead");
+  row_start.assign(ia, ia + rows + 1);
+  column.assign(ja, ja + ia[rows]);
+  value.assign(v, v + ia[rows]);
+  check(MatSeqAIJRestoreArrayRead(diag, &v), "MatSeqAIJRestoreArrayRead");
+  check(MatRestoreRowIJ(diag, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done),
+        "MatRestoreRowIJ");
+  local_block.clear();
+  if (options.smoother_block)
+    for (int e : *options.smoother_block)
+      if (const PetscInt r = row_of(e); r >= begin && r < end)
+        local_block.push_back(r - begin);
+  std::sort(local_block.begin(), local_block.end());
+}
+
+// Distributed pmg: which rows each process owns. The DOF numbering puts the vertices first
+// and the edge midpoints after, by vertex pair, so contiguous blocks of it cut through the
+// whole mesh, and block Jacobi across the processes then drops most couplings (magnetized
+// sphere at --mesh-scale 2.5, 2 processes: 81 CG iterations against 19 serially). Instead
+// the mesh is partitioned: the P1 graph (vertex equations, coupled where a tetrahedron joins
+// them) by PT-Scotch (PETSc's MatPartitioning), one part per process, each vertex weighted by
+// the equations that go with it (itself and the edge midpoints whose first free end it is).
+// The open-boundary shell (the smoother block) goes whole to process 0, which solves it by
+// one Cholesky factor as the serial smoother does: cut between processes, block Jacobi drops
+// the shell's strong tangential couplings at the cut (40 iterations on the sphere against 21
+// with the shell whole); process 0 takes correspondingly less of the rest (part weights).
+// Each process's rows follow the previous process's, in equation order within (the serial
+// Gauss-Seidel order); the P1 unknowns likewise by their vertex's part. The same on every
+// process (the partition is gathered to all).
+void PetscKspSolver::Impl::partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern) {
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& q = *options.prolongation;
+  const auto n = static_cast<PetscInt>(lower_pattern.rows());
+  const auto m = static_cast<PetscInt>(q.cols());
+  if (q.rows() != n || !q.isCompressed())
+    throw SolveError("internal: the coarse space does not fit the system");
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  const int* q_start = q.outerIndexPtr();
+  const int* q_column = q.innerIndexPtr();
+  // The P1 unknown of a vertex equation (its row of P is a single 1), and the P1 unknown an
+  // equation goes with (a midpoint: its first free end; -1: none, both ends constrained).
+  std::vector<PetscInt> vertex_coarse(n, -1), with(n, -1);
+  for (PetscInt i = 0; i < n; ++i) {
+    if (q_start[i + 1] == q_start[i])
+      continue;
+    with[i] = q_column[q_start[i]];
+    if (q_start[i + 1] - q_start[i] == 1 && q.valuePtr()[q_start[i]] == 1.0)
+      vertex_coarse[i] = with[i];
+  }
+  // The shell's equations, and every equation that goes with a shell vertex, to process 0.
+  std::vector<char> in_shell(n, 0), shell_vertex(m, 0);
+  if (options.smoother_block)
+    for (int e : *options.smoother_block) {
+      in_shell[e] = 1;
+      if (vertex_coarse[e] >= 0)
+        shell_vertex[vertex_coarse[e]] = 1;
+    }
+  // The graph: the P1 unknowns outside the shell, numbered in order.
+  std::vector<PetscInt> node(m, -1), weight;
+  PetscInt n_nodes = 0;
+  for (PetscInt c = 0; c < m; ++c)
+    if (!shell_vertex[c])
+      node[c] = n_nodes++;
+  weight.assign(n_nodes, 0);
+  double n_to_zero = 0; // equations given to process 0 beforehand
+  for (PetscInt i = 0; i < n; ++i) {
+    if (with[i] >= 0 && (in_shell[i] || shell_vertex[with[i]]))
+      in_shell[i] = 1;
+    if (in_shell[i])
+      n_to_zero += 1;
+    else if (with[i] >= 0)
+      ++weight[node[with[i]]];
+  }
+  PetscInt local_nodes = PETSC_DECIDE, all_nodes = n_nodes, g_end = 0;
+  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_nodes, &all_nodes), "PetscSplitOwnership");
+  MPI_Scan(&local_nodes, &g_end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  const PetscInt g_begin = g_end - local_nodes;
+  std::vector<std::vector<PetscInt>> neighbours(local_nodes);
+  for (Eigen::Index j = 0; j < lower_pattern.outerSize(); ++j) {
+    const PetscInt cj = vertex_coarse[j];
+    if (cj < 0 || node[cj] < 0)
+      continue;
+    const PetscInt gj = node[cj];
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
+      const PetscInt ci = vertex_coarse[it.row()];
+      if (ci < 0 || node[ci] < 0 || ci == cj)
+        continue;
+      const PetscInt gi = node[ci];
+      if (gi >= g_begin && gi < g_end)
+        neighbours[gi - g_begin].push_back(gj);
+      if (gj >= g_begin && gj < g_end)
+        neighbours[gj - g_begin].push_back(gi);
+    }
+  }
+  // MatCreateMPIAdj and both weights take PetscMalloc'ed arrays and free them.
+  PetscInt *ia = nullptr, *ja = nullptr, *w = nullptr;
+  std::size_t n_adj = 0;
+  for (auto& row : neighbours) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    n_adj += row.size();
+  }
+  check(PetscMalloc1(local_nodes + 1, &ia), "PetscMalloc1");
+  check(PetscMalloc1(std::max<std::size_t>(n_adj, 1), &ja), "PetscMalloc1");
+  check(PetscMalloc1(std::max<PetscInt>(local_nodes, 1), &w), "PetscMalloc1");
+  ia[0] = 0;
+  for (PetscInt k = 0; k < local_nodes; ++k) {
+    std::copy(neighbours[k].begin(), neighbours[k].end(), ja + ia[k]);
+    ia[k + 1] = ia[k] + static_cast<PetscInt>(neighbours[k].size());
+    w[k] = std::max<PetscInt>(weight[g_begin + k], 1);
+  }
+  neighbours = {};
+  // Fractions of the rest: each process n / size equations in all, process 0 its share less
+  // what it has (at least a sliver, should the shell alone exceed a share).
+  std::vector<PetscReal> fraction(size, 1.0);
+  const double rest = std::max(1.0, static_cast<double>(n) - n_to_zero);
+  if (size > 1) {
+    fraction[0] = std::max(static_cast<double>(n) / size - n_to_zero, 0.02 * rest / size);
+    for (int r = 1; r < size; ++r)
+      fraction[r] = static_cast<double>(n) / size;
+    const double sum = std::accumulate(fraction.begin(), fraction.end(), 0.0);
+    for (auto& f : fraction)
+      f /= sum;
+  }
+  Mat graph = nullptr;
+  MatPartitioning partitioning = nullptr;
+  IS part = nullptr, all = nullptr;
+  std::vector<PetscInt> coarse_part(m, 0);
+  const auto destroy = [&] {
+    ISDestroy(&all);
+    ISDestroy(&part);
+    MatPartitioningDestroy(&partitioning);
+    MatDestroy(&graph);
+  };
+  try {
+    check(MatCreateMPIAdj(PETSC_COMM_WORLD, local_nodes, n_nodes, ia, ja, nullptr, &graph),
+          "MatCreateMPIAdj");
+    check(MatPartitioningCreate(PETSC_COMM_WORLD, &partitioning), "MatPartitioningCreate");
+    check(MatPartitioningSetAdjacency(partitioning, graph), "MatPartitioningSetAdjacency");
+    check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH),
+          "MatPartitioningSetType(ptscotch)");
+    check(MatPartitioningSetNParts(partitioning, size), "MatPartitioningSetNParts");
+    check(MatPartitioningSetVertexWeights(partitioning, w), "MatPartitioningSetVertexWeights");
+    w = nullptr;
+    PetscReal* fractions = nullptr;
+    check(PetscMalloc1(size, &fractions), "PetscMalloc1");
+    std::copy(fraction.begin(), fraction.end(), fractions);
+    check(MatPartitioningSetPartitionWeights(partitioning, fractions),
+          "MatPartitioningSetPartitionWeights");
+    check(MatPartitioningApply(partitioning, &part), "MatPartitioningApply");
+    check(ISAllGather(part, &all), "ISAllGather");
+    const PetscInt* owner = nullptr;
+    check(ISGetIndices(all, &owner), "ISGetIndices");
+    for (PetscInt c = 0; c < m; ++c)
+      if (node[c] >= 0)
+        coarse_part[c] = owner[node[c]];
+    check(ISRestoreIndices(all, &owner), "ISRestoreIndices");
+    destroy();
+  } catch (...) {
+    PetscFree(w);
+    destroy();
+    throw;
+  }
+  // Rows: a process's equations after the previous processes'; an equation with no free
+  // vertex (rare: a midpoint between two boundary vertices) by its place in the numbering.
+  const auto number = [size](const std::vector<PetscInt>& part_of, std::vector<PetscInt>& out,
+                             std::vector<PetscInt>& count) {
+    count.assign(size + 1, 0);
+    for (PetscInt p : part_of)
+      ++count[p + 1];
+    for (int r = 1; r <= size; ++r)
+      count[r] += count[r - 1];
+    std::vector<PetscInt> next(count.begin(), count.end() - 1);
+    out.resize(part_of.size());
+    for (std::size_t i = 0; i < part_of.size(); ++i)
+      out[i] = next[part_of[i]]++;
+  };
+  std::vector<PetscInt> part_of(n), start;
+  for (PetscInt i = 0; i < n; ++i)
+    part_of[i] = in_shell[i]    ? 0
+                 : with[i] >= 0 ? coarse_part[with[i]]
+                                : static_cast<PetscInt>((static_cast<long long>(i) * size) / n);
+  number(part_of, order, start);
+  own_begin = start[rank];
+  own_end = start[rank + 1];
+  local_equations.resize(own_end - own_begin);
+  for (PetscInt i = 0; i < n; ++i)
+    if (part_of[i] == rank)
+      local_equations[order[i] - own_begin] = i;
+  number(coarse_part, coarse_order, start);
+  coarse_local = start[rank + 1] - start[rank];
 }
 
 PetscErrorCode PetscKspSolver::Impl::monitor(KSP, PetscInt it, PetscReal rnorm, void* self) {
@@ -634,6 +934,7 @@ void PetscKspSolver::setup(const Eigen::SparseMatrix<double>& lower) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
   m.release();
+  m.distributed = false;
   m.to_full_csr(lower);
   const auto n = static_cast<PetscInt>(lower.rows());
   check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, m.row_start.data(), m.column.data(),
@@ -773,13 +1074,22 @@ KrylovOutcome PetscKspSolver::Impl::outcome(double b_norm) const {
 void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
-  if (m.options.preconditioner == "pmg")
-    throw SolveError("internal: p-multigrid is not available distributed");
   m.release();
+  m.distributed = true;
   PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
-  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
+  // pmg: rows by a partition of the mesh (kept across Newton steps: the same pattern).
+  if (m.options.preconditioner == "pmg" && m.options.prolongation) {
+    if (m.order.size() != static_cast<std::size_t>(n))
+      m.partition_for_pmg(lower_pattern);
+    local = m.own_end - m.own_begin;
+  } else {
+    m.order.clear();
+    check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
+  }
   MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
   const PetscInt begin = end - local;
+  m.own_begin = begin;
+  m.own_end = end;
   // Exact preallocation: per owned row, its columns inside the owned block (the "diagonal"
   // part) and outside it. Without it every MatSetValues that opens a new entry reallocates.
   std::vector<PetscInt> in_block(local, 0), off_block(local, 0);
@@ -789,10 +1099,10 @@ void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_
   };
   for (PetscInt j = 0; j < n; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
-      const auto i = static_cast<PetscInt>(it.row());
-      count(i, j);
-      if (i != j)
-        count(j, i);
+      const auto i = m.row_of(static_cast<PetscInt>(it.row())), jj = m.row_of(j);
+      count(i, jj);
+      if (i != jj)
+        count(jj, i);
     }
   check(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, in_block.data(), 0, off_block.data(),
                      &m.a),
@@ -810,7 +1120,8 @@ void PetscKspSolver::add_lower_share(const Eigen::SparseMatrix<double>& lower) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
       if (it.value() == 0)
         continue;
-      const auto row = static_cast<PetscInt>(it.row()), col = static_cast<PetscInt>(j);
+      const auto row = m.row_of(static_cast<PetscInt>(it.row())),
+                 col = m.row_of(static_cast<PetscInt>(j));
       check(MatSetValue(m.a, row, col, it.value(), ADD_VALUES), "MatSetValue");
       if (row != col)
         check(MatSetValue(m.a, col, row, it.value(), ADD_VALUES), "MatSetValue");
@@ -833,7 +1144,8 @@ KrylovOutcome PetscKspSolver::solve_distributed(const Eigen::VectorXd& rhs, Eige
     check(VecGetOwnershipRange(m.rhs, &begin, &end), "VecGetOwnershipRange");
     PetscScalar* own = nullptr;
     check(VecGetArray(m.rhs, &own), "VecGetArray");
-    std::copy(rhs.data() + begin, rhs.data() + end, own);
+    for (PetscInt r = begin; r < end; ++r)
+      own[r - begin] = rhs[m.equation_of(r)];
     check(VecRestoreArray(m.rhs, &own), "VecRestoreArray");
   }
   PetscReal b_norm = 0;
@@ -873,7 +1185,9 @@ KrylovOutcome PetscKspSolver::solve_distributed(const Eigen::VectorXd& rhs, Eige
     check(VecGetLocalSize(all, &n_all), "VecGetLocalSize");
     const PetscScalar* values = nullptr;
     check(VecGetArrayRead(all, &values), "VecGetArrayRead");
-    x = Eigen::Map<const Eigen::VectorXd>(values, n_all); // the whole solution
+    x.resize(n_all); // the whole solution, back in equation order
+    for (PetscInt i = 0; i < n_all; ++i)
+      x[i] = values[m.row_of(i)];
     VecRestoreArrayRead(all, &values);
     destroy();
     return out;
