@@ -34,15 +34,17 @@ std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
     if (o.progress)
       o.progress->note(notes.back());
   };
+  const std::string pmg =
+      "CG + p-multigrid on a partition of the mesh, smoothed by block Jacobi across the "
+      "processes (Gauss-Seidel within each" +
+      std::string(o.smoother_block && !o.smoother_block->empty()
+                      ? "; the open-boundary shell whole on process 0, by Cholesky"
+                      : "") +
+      ")";
   const bool automatic_pmg = cg && o.preconditioner == PreconditionerKind::automatic &&
                              coarse_space && o.petsc_options.empty();
   if ((cg && o.preconditioner == PreconditionerKind::pmg && coarse_space) || automatic_pmg) {
-    note("CG + p-multigrid on a partition of the mesh, smoothed by block Jacobi across the "
-         "processes (Gauss-Seidel within each" +
-         std::string(o.smoother_block && !o.smoother_block->empty()
-                         ? "; the open-boundary shell whole on process 0, by Cholesky"
-                         : "") +
-         ")");
+    note(pmg);
     return "pmg";
   }
   if (cg && o.preconditioner == PreconditionerKind::pmg) {
@@ -56,7 +58,7 @@ std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
   else if (o.preconditioner == PreconditionerKind::ichol)
     asked = "incomplete Cholesky";
   if (coarse_space && o.petsc_options.empty()) {
-    note("CG + p-multigrid in place of " + asked + ", which runs on one process only");
+    note(pmg + " in place of " + asked + ", which runs on one process only");
     return "pmg";
   }
   note("CG + BoomerAMG in place of " + asked + ", which runs on one process only");
