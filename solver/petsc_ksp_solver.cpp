@@ -16,7 +16,10 @@
 
 #include "core/input_error.hpp"
 #include "core/progress.hpp"
+#include "solver/block_smoother.hpp"
 #include "solver/galerkin_product.hpp"
+#include "solver/petsc_check.hpp"
+#include "solver/pmg_partition.hpp"
 #include "solver/simultaneous_pcg.hpp"
 #include "solver/singleton_session_dir.hpp"
 
@@ -37,6 +40,8 @@ PetscErrorCode record_error(MPI_Comm, int, const char*, const char*, PetscErrorC
   return code;
 }
 
+} // namespace
+
 void check(PetscErrorCode code, const char* what) {
   if (code == 0)
     return;
@@ -49,6 +54,8 @@ void check(PetscErrorCode code, const char* what) {
   last_petsc_message().clear();
   throw SolveError(std::string("PETSc: ") + what + " failed" + (text.empty() ? "" : ": " + text));
 }
+
+namespace {
 
 // PETSc and MPI for the life of the process, started on first use so that runs that never
 // need AMG (2D, small 3D) never pay MPI's start-up.
@@ -153,202 +160,6 @@ void start_petsc(bool any_thread_calls_mpi) {
 
 namespace {
 
-// The fine-level smoother of pmg when some equations form a block (the open-boundary shell):
-// block Gauss-Seidel with that block solved exactly (CHOLMOD) and point Gauss-Seidel on every
-// other equation. Down (before the coarse correction): the block, then a forward sweep over
-// the others; up (after it): a backward sweep, then the block. Up is the transpose of down,
-// so the V-cycle stays symmetric, as CG needs. Why a block: in the shell the metric's
-// tangential coefficient exceeds the radial one by (r / (R2 - r))^2, which reaches
-// (R2 / h)^2 in the outermost layer of elements: anisotropy that grows under refinement and
-// that no point smoother (Gauss-Seidel, Jacobi, Chebyshev over either) removes.
-//
-// The block's factorization outlives the smoother (BlockFactorCache): Newton sets the
-// preconditioner up again at every step, but the shell holds air only, so its block is the
-// same matrix every time, and its Cholesky factor (most of the set-up: 99 M entries, 9 s at
-// 2 M unknowns) is reused as long as the block's entries are bit for bit the ones it was
-// computed from. Any change (iron next to the shell, a new mesh) factorizes again.
-using BlockFactor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
-struct BlockFactorCache {
-  std::vector<int> outer, inner;       // the block's lower triangle, CSC
-  std::vector<double> values;          // ... and its entries
-  std::shared_ptr<BlockFactor> factor; // computed from exactly these
-  int factorizations = 0;              // how many were computed (not reused)
-};
-
-// s -= (row i of the CSR matrix) x, for every column of x at once. Plain loops over a row's
-// columns (contiguous in the row-major block) rather than an Eigen expression per entry: this
-// is the inner loop of the block solve's smoother and product, and the expression's set-up
-// per matrix entry cost as much as the arithmetic.
-void subtract_row_products(const PetscInt* row_start, const PetscInt* column,
-                           const PetscScalar* value, PetscInt i, const ColumnBlock& x, double* s) {
-  const Eigen::Index m = x.cols();
-  const double* xd = x.data();
-  for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
-    const double a = value[k];
-    const double* xk = xd + static_cast<Eigen::Index>(column[k]) * m;
-    for (Eigen::Index c = 0; c < m; ++c)
-      s[c] -= a * xk[c];
-  }
-}
-
-class BlockSmoother {
-public:
-  // `row_start`, `column`, `value`: the whole symmetric matrix in CSR (sorted columns); they
-  // must outlive the smoother. `block`: sorted equations. `cache`: the last factorization.
-  BlockSmoother(const std::vector<PetscInt>& row_start, const std::vector<PetscInt>& column,
-                const std::vector<PetscScalar>& value, const std::vector<int>& block,
-                BlockFactorCache& cache)
-      : row_start_(row_start), column_(column), value_(value) {
-    const auto n = static_cast<PetscInt>(row_start.size()) - 1;
-    std::vector<PetscInt> local(n, -1);
-    for (int e : block) {
-      if (e < 0 || e >= n)
-        throw SolveError("internal: a smoother block equation is out of range");
-      local[e] = 0;
-    }
-    inv_diag_.assign(n, 0.0);
-    for (PetscInt i = 0; i < n; ++i) {
-      if (local[i] >= 0) {
-        local[i] = static_cast<PetscInt>(block_.size());
-        block_.push_back(i);
-      } else {
-        rest_.push_back(i);
-      }
-      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k)
-        if (column[k] == i && value[k] > 0)
-          inv_diag_[i] = 1 / value[k];
-      if (local[i] < 0 && inv_diag_[i] == 0)
-        throw SolveError("internal: a diagonal entry is not positive");
-    }
-    std::vector<Eigen::Triplet<double>> entries;
-    for (std::size_t b = 0; b < block_.size(); ++b) {
-      const PetscInt i = block_[b];
-      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
-        const PetscInt j = local[column[k]];
-        if (j >= 0 && j >= static_cast<PetscInt>(b))
-          entries.emplace_back(static_cast<int>(j), static_cast<int>(b), value[k]);
-      }
-    }
-    const auto m = static_cast<Eigen::Index>(block_.size());
-    Eigen::SparseMatrix<double> lower(m, m);
-    lower.setFromTriplets(entries.begin(), entries.end());
-    lower.makeCompressed();
-    r_.resize(m);
-    // Distributed, a process may own none of the block's equations: Gauss-Seidel alone.
-    if (m == 0)
-      return;
-    const auto same = [](const auto* data, Eigen::Index n, const auto& kept) {
-      return static_cast<std::size_t>(n) == kept.size() && std::equal(data, data + n, kept.begin());
-    };
-    if (!cache.factor || !same(lower.outerIndexPtr(), m + 1, cache.outer) ||
-        !same(lower.innerIndexPtr(), lower.nonZeros(), cache.inner) ||
-        !same(lower.valuePtr(), lower.nonZeros(), cache.values)) {
-      auto factor = std::make_shared<BlockFactor>();
-      // Nested dissection: the shell is a thick spherical layer, where METIS's ordering fills
-      // in a third of what AMD's does (11 against 35 GFlop at 53k equations).
-      factor->cholmod().nmethods = 1;
-      factor->cholmod().method[0].ordering = CHOLMOD_METIS;
-      factor->compute(lower);
-      if (factor->info() != Eigen::Success)
-        throw SolveError("the p-multigrid smoother's block is not positive definite");
-      cache.outer.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + m + 1);
-      cache.inner.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
-      cache.values.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
-      cache.factor = std::move(factor);
-      ++cache.factorizations;
-    }
-    factor_ = cache.factor;
-  }
-
-  // x <- x + M^-1 (b - A x), `its` times; M = down's or up's splitting.
-  void smooth(const double* b, double* x, bool down, bool zero_guess, PetscInt its) {
-    const auto n = static_cast<PetscInt>(inv_diag_.size());
-    if (zero_guess)
-      std::fill(x, x + n, 0.0);
-    for (PetscInt it = 0; it < its; ++it) {
-      if (down) {
-        solve_block(b, x, zero_guess && it == 0);
-        for (PetscInt i : rest_)
-          relax(b, x, i);
-      } else {
-        for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
-          relax(b, x, *i);
-        solve_block(b, x, false);
-      }
-    }
-  }
-
-  // The same sweeps on a block of columns (row-major: a row's columns side by side), all
-  // columns in one pass over the matrix; the block's solves in one CHOLMOD call.
-  void smooth_many(const ColumnBlock& b, ColumnBlock& x, bool down, bool zero_guess) {
-    if (zero_guess)
-      x.setZero();
-    if (down) {
-      solve_block_many(b, x, zero_guess);
-      for (PetscInt i : rest_)
-        relax_many(b, x, i);
-    } else {
-      for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
-        relax_many(b, x, *i);
-      solve_block_many(b, x, false);
-    }
-  }
-
-private:
-  void residual_many(const ColumnBlock& b, const ColumnBlock& x, PetscInt i,
-                     Eigen::RowVectorXd& s) const {
-    s = b.row(i);
-    subtract_row_products(row_start_.data(), column_.data(), value_.data(), i, x, s.data());
-  }
-  void relax_many(const ColumnBlock& b, ColumnBlock& x, PetscInt i) {
-    residual_many(b, x, i, s_);
-    x.row(i) += inv_diag_[i] * s_;
-  }
-  void solve_block_many(const ColumnBlock& b, ColumnBlock& x, bool x_is_zero) {
-    if (block_.empty())
-      return;
-    Eigen::MatrixXd rb(static_cast<Eigen::Index>(block_.size()), b.cols());
-    for (std::size_t k = 0; k < block_.size(); ++k) {
-      if (x_is_zero)
-        s_ = b.row(block_[k]);
-      else
-        residual_many(b, x, block_[k], s_);
-      rb.row(static_cast<Eigen::Index>(k)) = s_;
-    }
-    const Eigen::MatrixXd dx = factor_->solve(rb);
-    for (std::size_t k = 0; k < block_.size(); ++k)
-      x.row(block_[k]) += dx.row(static_cast<Eigen::Index>(k));
-  }
-  double residual(const double* b, const double* x, PetscInt i) const {
-    double sum = b[i];
-    for (PetscInt k = row_start_[i]; k < row_start_[i + 1]; ++k)
-      sum -= value_[k] * x[column_[k]];
-    return sum;
-  }
-  void relax(const double* b, double* x, PetscInt i) const {
-    x[i] += residual(b, x, i) * inv_diag_[i];
-  }
-  // x_B += K_BB^-1 (b - A x)_B; with x = 0 the residual is b.
-  void solve_block(const double* b, double* x, bool x_is_zero) {
-    if (block_.empty())
-      return;
-    for (std::size_t k = 0; k < block_.size(); ++k)
-      r_[static_cast<Eigen::Index>(k)] = x_is_zero ? b[block_[k]] : residual(b, x, block_[k]);
-    const Eigen::VectorXd dx = factor_->solve(r_);
-    for (std::size_t k = 0; k < block_.size(); ++k)
-      x[block_[k]] += dx[static_cast<Eigen::Index>(k)];
-  }
-
-  const std::vector<PetscInt>& row_start_;
-  const std::vector<PetscInt>& column_;
-  const std::vector<PetscScalar>& value_;
-  std::vector<PetscInt> block_, rest_;
-  std::vector<double> inv_diag_;
-  std::shared_ptr<const BlockFactor> factor_;
-  Eigen::VectorXd r_;
-  Eigen::RowVectorXd s_;
-};
-
 // The block smoother is built when PETSc sets the smoothers up, not before: options that
 // replace it (-mg_levels_pc_type sor, the one-sweep SSOR smoother of before) then cost no
 // factorization. Down and up share it.
@@ -430,11 +241,9 @@ struct PetscKspSolver::Impl {
   // the smoother block's equations among its rows (local numbering).
   bool distributed = false;
   std::vector<int> local_block;
-  // Distributed pmg (partition_for_pmg): the row of each equation in the distributed matrix,
-  // the coarse row of each P1 unknown, and the equation of each row this process owns
-  // [own_begin, own_end). Empty order: rows are equations, in contiguous blocks.
-  std::vector<PetscInt> order, coarse_order, local_equations;
-  PetscInt own_begin = 0, own_end = 0, coarse_local = 0;
+  // Distributed pmg: the rows each process owns (pmg_partition.hpp). Empty: rows are
+  // equations, in contiguous blocks.
+  PmgPartition partition;
 
   ~Impl() {
     release();
@@ -458,10 +267,12 @@ struct PetscKspSolver::Impl {
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
-  void partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern);
-  PetscInt row_of(PetscInt equation) const { return order.empty() ? equation : order[equation]; }
+  PetscInt row_of(PetscInt equation) const {
+    return partition.order.empty() ? equation : partition.order[equation];
+  }
+  // `row`: one this process owns.
   PetscInt equation_of(PetscInt row) const {
-    return order.empty() ? row : local_equations[row - own_begin];
+    return partition.order.empty() ? row : partition.local_equations[row - partition.own_begin];
   }
   void set_up_serial_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
   void set_up_distributed_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
@@ -637,11 +448,12 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
   PetscInt n = 0, begin = 0, end = 0;
   check(MatGetSize(a, &n, nullptr), "MatGetSize");
-  if (q.rows() != n || !q.isCompressed() || order.size() != static_cast<std::size_t>(n))
+  if (q.rows() != n || !q.isCompressed() || partition.order.size() != static_cast<std::size_t>(n))
     throw SolveError("internal: the coarse space does not fit the system");
   check(MatGetOwnershipRange(a, &begin, &end), "MatGetOwnershipRange");
   const auto m = static_cast<PetscInt>(q.cols());
   PetscInt c_end = 0;
+  const PetscInt coarse_local = partition.coarse_local;
   MPI_Scan(&coarse_local, &c_end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
   const PetscInt c_begin = c_end - coarse_local;
   const int* q_start = q.outerIndexPtr();
@@ -650,7 +462,7 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
   for (PetscInt r = begin; r < end; ++r) {
     const PetscInt i = equation_of(r);
     for (int k = q_start[i]; k < q_start[i + 1]; ++k) {
-      const PetscInt c = coarse_order[q_column[k]];
+      const PetscInt c = partition.coarse_order[q_column[k]];
       ++(c >= c_begin && c < c_end ? in_block : off_block)[r - begin];
     }
   }
@@ -662,7 +474,7 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
     const PetscInt i = equation_of(r);
     columns.clear();
     for (int k = q_start[i]; k < q_start[i + 1]; ++k)
-      columns.push_back(coarse_order[q_column[k]]);
+      columns.push_back(partition.coarse_order[q_column[k]]);
     check(MatSetValues(p, 1, &r, static_cast<PetscInt>(columns.size()), columns.data(),
                        q.valuePtr() + q_start[i], INSERT_VALUES),
           "MatSetValues (interpolation)");
@@ -698,185 +510,6 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
       if (const PetscInt r = row_of(e); r >= begin && r < end)
         local_block.push_back(r - begin);
   std::sort(local_block.begin(), local_block.end());
-}
-
-// Distributed pmg: which rows each process owns. The DOF numbering puts the vertices first
-// and the edge midpoints after, by vertex pair, so contiguous blocks of it cut through the
-// whole mesh, and block Jacobi across the processes then drops most couplings (magnetized
-// sphere at --mesh-scale 2.5, 2 processes: 81 CG iterations against 19 serially). Instead
-// the mesh is partitioned: the P1 graph (vertex equations, coupled where a tetrahedron joins
-// them) by PT-Scotch (PETSc's MatPartitioning), one part per process, each vertex weighted by
-// the equations that go with it (itself and the edge midpoints whose first free end it is).
-// The open-boundary shell (the smoother block) goes whole to process 0, which solves it by
-// one Cholesky factor as the serial smoother does: cut between processes, block Jacobi drops
-// the shell's strong tangential couplings at the cut (40 iterations on the sphere against 21
-// with the shell whole); process 0 takes correspondingly less of the rest (part weights).
-// Each process's rows follow the previous process's, in equation order within (the serial
-// Gauss-Seidel order); the P1 unknowns likewise by their vertex's part. The same on every
-// process (the partition is gathered to all).
-void PetscKspSolver::Impl::partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern) {
-  const Eigen::SparseMatrix<double, Eigen::RowMajor>& q = *options.prolongation;
-  const auto n = static_cast<PetscInt>(lower_pattern.rows());
-  const auto m = static_cast<PetscInt>(q.cols());
-  if (q.rows() != n || !q.isCompressed())
-    throw SolveError("internal: the coarse space does not fit the system");
-  int rank = 0, size = 1;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  const int* q_start = q.outerIndexPtr();
-  const int* q_column = q.innerIndexPtr();
-  // The P1 unknown of a vertex equation (its row of P is a single 1), and the P1 unknown an
-  // equation goes with (a midpoint: its first free end; -1: none, both ends constrained).
-  std::vector<PetscInt> vertex_coarse(n, -1), with(n, -1);
-  for (PetscInt i = 0; i < n; ++i) {
-    if (q_start[i + 1] == q_start[i])
-      continue;
-    with[i] = q_column[q_start[i]];
-    if (q_start[i + 1] - q_start[i] == 1 && q.valuePtr()[q_start[i]] == 1.0)
-      vertex_coarse[i] = with[i];
-  }
-  // The shell's equations, and every equation that goes with a shell vertex, to process 0.
-  std::vector<char> in_shell(n, 0), shell_vertex(m, 0);
-  if (options.smoother_block)
-    for (int e : *options.smoother_block) {
-      in_shell[e] = 1;
-      if (vertex_coarse[e] >= 0)
-        shell_vertex[vertex_coarse[e]] = 1;
-    }
-  // The graph: the P1 unknowns outside the shell, numbered in order.
-  std::vector<PetscInt> node(m, -1), weight;
-  PetscInt n_nodes = 0;
-  for (PetscInt c = 0; c < m; ++c)
-    if (!shell_vertex[c])
-      node[c] = n_nodes++;
-  weight.assign(n_nodes, 0);
-  double n_to_zero = 0; // equations given to process 0 beforehand
-  for (PetscInt i = 0; i < n; ++i) {
-    if (with[i] >= 0 && (in_shell[i] || shell_vertex[with[i]]))
-      in_shell[i] = 1;
-    if (in_shell[i])
-      n_to_zero += 1;
-    else if (with[i] >= 0)
-      ++weight[node[with[i]]];
-  }
-  PetscInt local_nodes = PETSC_DECIDE, all_nodes = n_nodes, g_end = 0;
-  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_nodes, &all_nodes), "PetscSplitOwnership");
-  MPI_Scan(&local_nodes, &g_end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
-  const PetscInt g_begin = g_end - local_nodes;
-  std::vector<std::vector<PetscInt>> neighbours(local_nodes);
-  for (Eigen::Index j = 0; j < lower_pattern.outerSize(); ++j) {
-    const PetscInt cj = vertex_coarse[j];
-    if (cj < 0 || node[cj] < 0)
-      continue;
-    const PetscInt gj = node[cj];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
-      const PetscInt ci = vertex_coarse[it.row()];
-      if (ci < 0 || node[ci] < 0 || ci == cj)
-        continue;
-      const PetscInt gi = node[ci];
-      if (gi >= g_begin && gi < g_end)
-        neighbours[gi - g_begin].push_back(gj);
-      if (gj >= g_begin && gj < g_end)
-        neighbours[gj - g_begin].push_back(gi);
-    }
-  }
-  // MatCreateMPIAdj and both weights take PetscMalloc'ed arrays and free them.
-  PetscInt *ia = nullptr, *ja = nullptr, *w = nullptr;
-  std::size_t n_adj = 0;
-  for (auto& row : neighbours) {
-    std::sort(row.begin(), row.end());
-    row.erase(std::unique(row.begin(), row.end()), row.end());
-    n_adj += row.size();
-  }
-  check(PetscMalloc1(local_nodes + 1, &ia), "PetscMalloc1");
-  check(PetscMalloc1(std::max<std::size_t>(n_adj, 1), &ja), "PetscMalloc1");
-  check(PetscMalloc1(std::max<PetscInt>(local_nodes, 1), &w), "PetscMalloc1");
-  ia[0] = 0;
-  for (PetscInt k = 0; k < local_nodes; ++k) {
-    std::copy(neighbours[k].begin(), neighbours[k].end(), ja + ia[k]);
-    ia[k + 1] = ia[k] + static_cast<PetscInt>(neighbours[k].size());
-    w[k] = std::max<PetscInt>(weight[g_begin + k], 1);
-  }
-  neighbours = {};
-  // Fractions of the rest: each process n / size equations in all, process 0 its share less
-  // what it has (at least a sliver, should the shell alone exceed a share).
-  std::vector<PetscReal> fraction(size, 1.0);
-  const double rest = std::max(1.0, static_cast<double>(n) - n_to_zero);
-  if (size > 1) {
-    fraction[0] = std::max(static_cast<double>(n) / size - n_to_zero, 0.02 * rest / size);
-    for (int r = 1; r < size; ++r)
-      fraction[r] = static_cast<double>(n) / size;
-    const double sum = std::accumulate(fraction.begin(), fraction.end(), 0.0);
-    for (auto& f : fraction)
-      f /= sum;
-  }
-  Mat graph = nullptr;
-  MatPartitioning partitioning = nullptr;
-  IS part = nullptr, all = nullptr;
-  std::vector<PetscInt> coarse_part(m, 0);
-  const auto destroy = [&] {
-    ISDestroy(&all);
-    ISDestroy(&part);
-    MatPartitioningDestroy(&partitioning);
-    MatDestroy(&graph);
-  };
-  try {
-    check(MatCreateMPIAdj(PETSC_COMM_WORLD, local_nodes, n_nodes, ia, ja, nullptr, &graph),
-          "MatCreateMPIAdj");
-    check(MatPartitioningCreate(PETSC_COMM_WORLD, &partitioning), "MatPartitioningCreate");
-    check(MatPartitioningSetAdjacency(partitioning, graph), "MatPartitioningSetAdjacency");
-    check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH),
-          "MatPartitioningSetType(ptscotch)");
-    check(MatPartitioningSetNParts(partitioning, size), "MatPartitioningSetNParts");
-    check(MatPartitioningSetVertexWeights(partitioning, w), "MatPartitioningSetVertexWeights");
-    w = nullptr;
-    PetscReal* fractions = nullptr;
-    check(PetscMalloc1(size, &fractions), "PetscMalloc1");
-    std::copy(fraction.begin(), fraction.end(), fractions);
-    check(MatPartitioningSetPartitionWeights(partitioning, fractions),
-          "MatPartitioningSetPartitionWeights");
-    check(MatPartitioningApply(partitioning, &part), "MatPartitioningApply");
-    check(ISAllGather(part, &all), "ISAllGather");
-    const PetscInt* owner = nullptr;
-    check(ISGetIndices(all, &owner), "ISGetIndices");
-    for (PetscInt c = 0; c < m; ++c)
-      if (node[c] >= 0)
-        coarse_part[c] = owner[node[c]];
-    check(ISRestoreIndices(all, &owner), "ISRestoreIndices");
-    destroy();
-  } catch (...) {
-    PetscFree(w);
-    destroy();
-    throw;
-  }
-  // Rows: a process's equations after the previous processes'; an equation with no free
-  // vertex (rare: a midpoint between two boundary vertices) by its place in the numbering.
-  const auto number = [size](const std::vector<PetscInt>& part_of, std::vector<PetscInt>& out,
-                             std::vector<PetscInt>& count) {
-    count.assign(size + 1, 0);
-    for (PetscInt p : part_of)
-      ++count[p + 1];
-    for (int r = 1; r <= size; ++r)
-      count[r] += count[r - 1];
-    std::vector<PetscInt> next(count.begin(), count.end() - 1);
-    out.resize(part_of.size());
-    for (std::size_t i = 0; i < part_of.size(); ++i)
-      out[i] = next[part_of[i]]++;
-  };
-  std::vector<PetscInt> part_of(n), start;
-  for (PetscInt i = 0; i < n; ++i)
-    part_of[i] = in_shell[i]    ? 0
-                 : with[i] >= 0 ? coarse_part[with[i]]
-                                : static_cast<PetscInt>((static_cast<long long>(i) * size) / n);
-  number(part_of, order, start);
-  own_begin = start[rank];
-  own_end = start[rank + 1];
-  local_equations.resize(own_end - own_begin);
-  for (PetscInt i = 0; i < n; ++i)
-    if (part_of[i] == rank)
-      local_equations[order[i] - own_begin] = i;
-  number(coarse_part, coarse_order, start);
-  coarse_local = start[rank + 1] - start[rank];
 }
 
 PetscErrorCode PetscKspSolver::Impl::monitor(KSP, PetscInt it, PetscReal rnorm, void* self) {
@@ -1079,17 +712,16 @@ void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_
   PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
   // pmg: rows by a partition of the mesh (kept across Newton steps: the same pattern).
   if (m.options.preconditioner == "pmg" && m.options.prolongation) {
-    if (m.order.size() != static_cast<std::size_t>(n))
-      m.partition_for_pmg(lower_pattern);
-    local = m.own_end - m.own_begin;
+    if (m.partition.order.size() != static_cast<std::size_t>(n))
+      m.partition =
+          partition_for_pmg(lower_pattern, *m.options.prolongation, m.options.smoother_block);
+    local = m.partition.own_end - m.partition.own_begin;
   } else {
-    m.order.clear();
+    m.partition = {};
     check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
   }
   MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
   const PetscInt begin = end - local;
-  m.own_begin = begin;
-  m.own_end = end;
   // Exact preallocation: per owned row, its columns inside the owned block (the "diagonal"
   // part) and outside it. Without it every MatSetValues that opens a new entry reallocates.
   std::vector<PetscInt> in_block(local, 0), off_block(local, 0);
