@@ -196,6 +196,21 @@ TEST_F(MpiSolve, PmgWithoutShellOnTwoProcessesKeepsTheSerialField) {
   fs::remove_all(dir);
 }
 
+// P2 with pmg for a coil (the inductance's sensitivity solves on the distributed pmg too) and
+// for Newton on saturable steel (the partition and each process's shell factor kept across
+// the steps): 10-20 s a run, label long.
+TEST_F(MpiSolve, LongP2CoilAndNonlinearCasesWithPmgOnTwoProcesses) {
+  for (const std::string example : {"3d/coil_over_plate.yaml", "3d/magnet_over_steel_plate.yaml"}) {
+    const fs::path dir = magfem::test::fresh_dir("p2_" + fs::path(example).stem().string());
+    const std::string args =
+        write_case(dir, example, "solver: {order: 2, preconditioner: pmg, linear_tolerance: 1e-12}")
+            .string() +
+        " --mesh-scale 4";
+    expect_serial_pmg(dir, args, 2, pmg_iteration_ratio);
+    fs::remove_all(dir);
+  }
+}
+
 // The coil's source field on each process's own tetrahedra, the distributed inductance solve.
 TEST_F(MpiSolve, CoilCaseOnTwoProcessesGivesTheSerialField) {
   const fs::path dir = magfem::test::fresh_dir("coil");
