@@ -257,11 +257,12 @@ public:
   }
   void prepare_solver(const Assembler3D& assembler) const {
     run_.threads = assembler.threads();
-    if (run_.spec.order != 2 || world_.distributed())
+    if (run_.spec.order != 2)
       return;
     auto& linear = run_.spec.newton.linear;
     // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
-    // preconditioner (O(unknowns) to build, unused by the other solvers and not distributed).
+    // preconditioner (O(unknowns) to build, unused by the other solvers). Distributed, every
+    // process builds the whole of it and uses its own rows.
     linear.coarse_prolongation =
         std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
             p1_prolongation(*run_.dofs, assembler.dof_to_equation()));

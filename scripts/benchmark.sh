@@ -202,6 +202,17 @@ if command -v mpirun > /dev/null; then
   solver_report "magnetized sphere amg, mesh-scale 2.5, 2 ranks" "$out/sph_2ranks"
   printf "mpirun -n 2 speed-up over 1 rank (wall, end to end): %.2f s / %.2f s = %.2fx\n" \
     "$t1" "$t2" "$(awk "BEGIN { print $t1 / $t2 }")"
+  # Issue 33's target (full runs): benchmark32 at its default mesh with p-multigrid,
+  # distributed (one thread per process) against the serial run on the machine's threads.
+  if ((full)); then
+    case=examples/3d/benchmark32_parallel.yaml
+    t1=$(wall $magfem solve $case --quiet --out "$out/b32_1rank")
+    t2=$(OMP_NUM_THREADS=1 wall "${mpirun_2[@]}" $magfem solve $case --quiet --out "$out/b32_2ranks")
+    solver_report "benchmark32 parallel, 1 rank" "$out/b32_1rank"
+    solver_report "benchmark32 parallel, 2 ranks" "$out/b32_2ranks"
+    printf "benchmark32 mpirun -n 2 speed-up over 1 rank (wall): %.2f s / %.2f s = %.2fx\n" \
+      "$t1" "$t2" "$(awk "BEGIN { print $t1 / $t2 }")"
+  fi
   # Items dealt to 2 processes against the serial run one at a time (--jobs 1): wall time and
   # whether the table is byte-identical. Arguments: what, the command, its table.
   two_processes_against_serial() {

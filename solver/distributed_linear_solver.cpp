@@ -15,28 +15,53 @@ double seconds_since(Clock::time_point t0) {
 }
 
 // The preconditioner a distributed solve uses for the one the case asks for, and the note
-// that says so when they differ: rather than refuse a case that runs serially, the
-// factorizations and p-multigrid become BoomerAMG, the preconditioner hypre distributes
-// natively, and the summary says so.
+// that says what ran. p-multigrid (asked for, or the automatic choice for P2 tetrahedra
+// without petsc_options, as serially) runs distributed with a smoother that differs from the
+// serial one across the processes (petsc_ksp_solver.cpp): the note says so. The
+// factorizations (CHOLMOD, incomplete Cholesky), which run on one process only, become
+// p-multigrid where there is a coarse space and BoomerAMG where not, with a note.
 std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
                                        std::vector<std::string>& notes) {
-  if (o.kind != LinearSolverKind::cholmod) {
-    if (o.preconditioner == PreconditionerKind::gamg)
-      return "gamg";
-    if (o.preconditioner == PreconditionerKind::boomeramg)
-      return "boomeramg";
+  const bool cg = o.kind != LinearSolverKind::cholmod;
+  if (cg && o.preconditioner == PreconditionerKind::gamg)
+    return "gamg";
+  if (cg && o.preconditioner == PreconditionerKind::boomeramg)
+    return "boomeramg";
+  const std::string over = "distributed over " + std::to_string(size) + " processes: ";
+  const bool coarse_space = o.coarse_prolongation != nullptr;
+  auto note = [&](const std::string& text) {
+    notes.push_back(over + text);
+    if (o.progress)
+      o.progress->note(notes.back());
+  };
+  const std::string pmg =
+      "CG + p-multigrid on a partition of the mesh, smoothed by block Jacobi across the "
+      "processes (Gauss-Seidel within each" +
+      std::string(o.smoother_block && !o.smoother_block->empty()
+                      ? "; the open-boundary shell whole on process 0, by Cholesky"
+                      : "") +
+      ")";
+  const bool automatic_pmg = cg && o.preconditioner == PreconditionerKind::automatic &&
+                             coarse_space && o.petsc_options.empty();
+  if ((cg && o.preconditioner == PreconditionerKind::pmg && coarse_space) || automatic_pmg) {
+    note(pmg);
+    return "pmg";
+  }
+  if (cg && o.preconditioner == PreconditionerKind::pmg) {
+    note("CG + BoomerAMG in place of p-multigrid, which needs P2 tetrahedra (no coarser "
+         "order here)");
+    return "boomeramg";
   }
   std::string asked = "the automatic choice (CHOLMOD or incomplete Cholesky)";
   if (o.kind == LinearSolverKind::cholmod)
     asked = "CHOLMOD";
   else if (o.preconditioner == PreconditionerKind::ichol)
     asked = "incomplete Cholesky";
-  else if (o.preconditioner == PreconditionerKind::pmg)
-    asked = "p-multigrid";
-  notes.push_back("distributed over " + std::to_string(size) + " processes: CG + BoomerAMG in " +
-                  "place of " + asked + ", which runs on one process only");
-  if (o.progress)
-    o.progress->note(notes.back());
+  if (coarse_space && o.petsc_options.empty()) {
+    note(pmg + " in place of " + asked + ", which runs on one process only");
+    return "pmg";
+  }
+  note("CG + BoomerAMG in place of " + asked + ", which runs on one process only");
   return "boomeramg";
 }
 
@@ -47,13 +72,15 @@ PetscSolverOptions petsc_options(const LinearSolverOptions& o, int size,
                             o.cg_tolerance,
                             o.cg_max_iterations,
                             o.progress,
-                            nullptr};
+                            o.coarse_prolongation.get(),
+                            o.smoother_block.get()};
 }
 
 } // namespace
 
 DistributedLinearSolver::DistributedLinearSolver(const LinearSolverOptions& options, int size)
-    : tolerance_(options.cg_tolerance), solver_(petsc_options(options, size, notes_)) {}
+    : coarse_prolongation_(options.coarse_prolongation), smoother_block_(options.smoother_block),
+      tolerance_(options.cg_tolerance), solver_(petsc_options(options, size, notes_)) {}
 
 void DistributedLinearSolver::factorize(const Eigen::SparseMatrix<double>& lower_part) {
   const auto t0 = Clock::now();

@@ -1,14 +1,15 @@
 #pragma once
-// CG with BoomerAMG or GAMG over the processes of an mpirun (MPI_COMM_WORLD): the tangent
-// solver of a distributed solve. Each process passes to factorize() the part of the matrix its
-// elements contributed (DistributedSystem3D), PETSc adds the parts into one MPIAIJ matrix
-// (rows owned in contiguous blocks) and sets the preconditioner up once; every solve() takes
-// the whole right-hand side, the same on every process, and returns the whole solution on
-// every process. All methods but the accessors are collective.
+// CG with p-multigrid, BoomerAMG or GAMG over the processes of an mpirun (MPI_COMM_WORLD): the
+// tangent solver of a distributed solve. Each process passes to factorize() the part of the
+// matrix its elements contributed (DistributedSystem3D), PETSc adds the parts into one MPIAIJ
+// matrix (rows owned in contiguous blocks) and sets the preconditioner up once; every solve()
+// takes the whole right-hand side, the same on every process, and returns the whole solution
+// on every process. All methods but the accessors are collective.
 //
-// Preconditioners that cannot run distributed become BoomerAMG, with a note: incomplete
-// Cholesky and CHOLMOD factor the whole matrix on one process, and p-multigrid's coarse space
-// (P1 interpolation) is built whole on one process too.
+// p-multigrid (P2 tetrahedra: options.coarse_prolongation given, the same on every process)
+// runs distributed, with block Jacobi across the processes as its smoother (a note says so).
+// Incomplete Cholesky and CHOLMOD, which factor the whole matrix on one process, become
+// p-multigrid where there is a coarse space and BoomerAMG where not, with a note.
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +43,9 @@ public:
 
 private:
   std::vector<std::string> notes_; // before solver_: its options name the preconditioner
+  // Kept alive for solver_, which points at them.
+  std::shared_ptr<const Eigen::SparseMatrix<double, Eigen::RowMajor>> coarse_prolongation_;
+  std::shared_ptr<const std::vector<int>> smoother_block_;
   double tolerance_;
   PetscSolver solver_;
   int last_iterations_ = 0;

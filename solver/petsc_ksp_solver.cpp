@@ -16,7 +16,10 @@
 
 #include "core/input_error.hpp"
 #include "core/progress.hpp"
+#include "solver/block_smoother.hpp"
 #include "solver/galerkin_product.hpp"
+#include "solver/petsc_check.hpp"
+#include "solver/pmg_partition.hpp"
 #include "solver/simultaneous_pcg.hpp"
 #include "solver/singleton_session_dir.hpp"
 
@@ -37,6 +40,8 @@ PetscErrorCode record_error(MPI_Comm, int, const char*, const char*, PetscErrorC
   return code;
 }
 
+} // namespace
+
 void check(PetscErrorCode code, const char* what) {
   if (code == 0)
     return;
@@ -49,6 +54,8 @@ void check(PetscErrorCode code, const char* what) {
   last_petsc_message().clear();
   throw SolveError(std::string("PETSc: ") + what + " failed" + (text.empty() ? "" : ": " + text));
 }
+
+namespace {
 
 // PETSc and MPI for the life of the process, started on first use so that runs that never
 // need AMG (2D, small 3D) never pay MPI's start-up.
@@ -153,195 +160,6 @@ void start_petsc(bool any_thread_calls_mpi) {
 
 namespace {
 
-// The fine-level smoother of pmg when some equations form a block (the open-boundary shell):
-// block Gauss-Seidel with that block solved exactly (CHOLMOD) and point Gauss-Seidel on every
-// other equation. Down (before the coarse correction): the block, then a forward sweep over
-// the others; up (after it): a backward sweep, then the block. Up is the transpose of down,
-// so the V-cycle stays symmetric, as CG needs. Why a block: in the shell the metric's
-// tangential coefficient exceeds the radial one by (r / (R2 - r))^2, which reaches
-// (R2 / h)^2 in the outermost layer of elements: anisotropy that grows under refinement and
-// that no point smoother (Gauss-Seidel, Jacobi, Chebyshev over either) removes.
-//
-// The block's factorization outlives the smoother (BlockFactorCache): Newton sets the
-// preconditioner up again at every step, but the shell holds air only, so its block is the
-// same matrix every time, and its Cholesky factor (most of the set-up: 99 M entries, 9 s at
-// 2 M unknowns) is reused as long as the block's entries are bit for bit the ones it was
-// computed from. Any change (iron next to the shell, a new mesh) factorizes again.
-using BlockFactor = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
-struct BlockFactorCache {
-  std::vector<int> outer, inner;       // the block's lower triangle, CSC
-  std::vector<double> values;          // ... and its entries
-  std::shared_ptr<BlockFactor> factor; // computed from exactly these
-  int factorizations = 0;              // how many were computed (not reused)
-};
-
-// s -= (row i of the CSR matrix) x, for every column of x at once. Plain loops over a row's
-// columns (contiguous in the row-major block) rather than an Eigen expression per entry: this
-// is the inner loop of the block solve's smoother and product, and the expression's set-up
-// per matrix entry cost as much as the arithmetic.
-void subtract_row_products(const PetscInt* row_start, const PetscInt* column,
-                           const PetscScalar* value, PetscInt i, const ColumnBlock& x, double* s) {
-  const Eigen::Index m = x.cols();
-  const double* xd = x.data();
-  for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
-    const double a = value[k];
-    const double* xk = xd + static_cast<Eigen::Index>(column[k]) * m;
-    for (Eigen::Index c = 0; c < m; ++c)
-      s[c] -= a * xk[c];
-  }
-}
-
-class BlockSmoother {
-public:
-  // `row_start`, `column`, `value`: the whole symmetric matrix in CSR (sorted columns); they
-  // must outlive the smoother. `block`: sorted equations. `cache`: the last factorization.
-  BlockSmoother(const std::vector<PetscInt>& row_start, const std::vector<PetscInt>& column,
-                const std::vector<PetscScalar>& value, const std::vector<int>& block,
-                BlockFactorCache& cache)
-      : row_start_(row_start), column_(column), value_(value) {
-    const auto n = static_cast<PetscInt>(row_start.size()) - 1;
-    std::vector<PetscInt> local(n, -1);
-    for (int e : block) {
-      if (e < 0 || e >= n)
-        throw SolveError("internal: a smoother block equation is out of range");
-      local[e] = 0;
-    }
-    inv_diag_.assign(n, 0.0);
-    for (PetscInt i = 0; i < n; ++i) {
-      if (local[i] >= 0) {
-        local[i] = static_cast<PetscInt>(block_.size());
-        block_.push_back(i);
-      } else {
-        rest_.push_back(i);
-      }
-      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k)
-        if (column[k] == i && value[k] > 0)
-          inv_diag_[i] = 1 / value[k];
-      if (local[i] < 0 && inv_diag_[i] == 0)
-        throw SolveError("internal: a diagonal entry is not positive");
-    }
-    std::vector<Eigen::Triplet<double>> entries;
-    for (std::size_t b = 0; b < block_.size(); ++b) {
-      const PetscInt i = block_[b];
-      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
-        const PetscInt j = local[column[k]];
-        if (j >= 0 && j >= static_cast<PetscInt>(b))
-          entries.emplace_back(static_cast<int>(j), static_cast<int>(b), value[k]);
-      }
-    }
-    const auto m = static_cast<Eigen::Index>(block_.size());
-    Eigen::SparseMatrix<double> lower(m, m);
-    lower.setFromTriplets(entries.begin(), entries.end());
-    lower.makeCompressed();
-    const auto same = [](const auto* data, Eigen::Index n, const auto& kept) {
-      return static_cast<std::size_t>(n) == kept.size() && std::equal(data, data + n, kept.begin());
-    };
-    if (!cache.factor || !same(lower.outerIndexPtr(), m + 1, cache.outer) ||
-        !same(lower.innerIndexPtr(), lower.nonZeros(), cache.inner) ||
-        !same(lower.valuePtr(), lower.nonZeros(), cache.values)) {
-      auto factor = std::make_shared<BlockFactor>();
-      // Nested dissection: the shell is a thick spherical layer, where METIS's ordering fills
-      // in a third of what AMD's does (11 against 35 GFlop at 53k equations).
-      factor->cholmod().nmethods = 1;
-      factor->cholmod().method[0].ordering = CHOLMOD_METIS;
-      factor->compute(lower);
-      if (factor->info() != Eigen::Success)
-        throw SolveError("the p-multigrid smoother's block is not positive definite");
-      cache.outer.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + m + 1);
-      cache.inner.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
-      cache.values.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
-      cache.factor = std::move(factor);
-      ++cache.factorizations;
-    }
-    factor_ = cache.factor;
-    r_.resize(m);
-  }
-
-  // x <- x + M^-1 (b - A x), `its` times; M = down's or up's splitting.
-  void smooth(const double* b, double* x, bool down, bool zero_guess, PetscInt its) {
-    const auto n = static_cast<PetscInt>(inv_diag_.size());
-    if (zero_guess)
-      std::fill(x, x + n, 0.0);
-    for (PetscInt it = 0; it < its; ++it) {
-      if (down) {
-        solve_block(b, x, zero_guess && it == 0);
-        for (PetscInt i : rest_)
-          relax(b, x, i);
-      } else {
-        for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
-          relax(b, x, *i);
-        solve_block(b, x, false);
-      }
-    }
-  }
-
-  // The same sweeps on a block of columns (row-major: a row's columns side by side), all
-  // columns in one pass over the matrix; the block's solves in one CHOLMOD call.
-  void smooth_many(const ColumnBlock& b, ColumnBlock& x, bool down, bool zero_guess) {
-    if (zero_guess)
-      x.setZero();
-    if (down) {
-      solve_block_many(b, x, zero_guess);
-      for (PetscInt i : rest_)
-        relax_many(b, x, i);
-    } else {
-      for (auto i = rest_.rbegin(); i != rest_.rend(); ++i)
-        relax_many(b, x, *i);
-      solve_block_many(b, x, false);
-    }
-  }
-
-private:
-  void residual_many(const ColumnBlock& b, const ColumnBlock& x, PetscInt i,
-                     Eigen::RowVectorXd& s) const {
-    s = b.row(i);
-    subtract_row_products(row_start_.data(), column_.data(), value_.data(), i, x, s.data());
-  }
-  void relax_many(const ColumnBlock& b, ColumnBlock& x, PetscInt i) {
-    residual_many(b, x, i, s_);
-    x.row(i) += inv_diag_[i] * s_;
-  }
-  void solve_block_many(const ColumnBlock& b, ColumnBlock& x, bool x_is_zero) {
-    Eigen::MatrixXd rb(static_cast<Eigen::Index>(block_.size()), b.cols());
-    for (std::size_t k = 0; k < block_.size(); ++k) {
-      if (x_is_zero)
-        s_ = b.row(block_[k]);
-      else
-        residual_many(b, x, block_[k], s_);
-      rb.row(static_cast<Eigen::Index>(k)) = s_;
-    }
-    const Eigen::MatrixXd dx = factor_->solve(rb);
-    for (std::size_t k = 0; k < block_.size(); ++k)
-      x.row(block_[k]) += dx.row(static_cast<Eigen::Index>(k));
-  }
-  double residual(const double* b, const double* x, PetscInt i) const {
-    double sum = b[i];
-    for (PetscInt k = row_start_[i]; k < row_start_[i + 1]; ++k)
-      sum -= value_[k] * x[column_[k]];
-    return sum;
-  }
-  void relax(const double* b, double* x, PetscInt i) const {
-    x[i] += residual(b, x, i) * inv_diag_[i];
-  }
-  // x_B += K_BB^-1 (b - A x)_B; with x = 0 the residual is b.
-  void solve_block(const double* b, double* x, bool x_is_zero) {
-    for (std::size_t k = 0; k < block_.size(); ++k)
-      r_[static_cast<Eigen::Index>(k)] = x_is_zero ? b[block_[k]] : residual(b, x, block_[k]);
-    const Eigen::VectorXd dx = factor_->solve(r_);
-    for (std::size_t k = 0; k < block_.size(); ++k)
-      x[block_[k]] += dx[static_cast<Eigen::Index>(k)];
-  }
-
-  const std::vector<PetscInt>& row_start_;
-  const std::vector<PetscInt>& column_;
-  const std::vector<PetscScalar>& value_;
-  std::vector<PetscInt> block_, rest_;
-  std::vector<double> inv_diag_;
-  std::shared_ptr<const BlockFactor> factor_;
-  Eigen::VectorXd r_;
-  Eigen::RowVectorXd s_;
-};
-
 // The block smoother is built when PETSc sets the smoothers up, not before: options that
 // replace it (-mg_levels_pc_type sor, the one-sweep SSOR smoother of before) then cost no
 // factorization. Down and up share it.
@@ -418,6 +236,14 @@ struct PetscKspSolver::Impl {
   std::vector<PetscScalar> value, p_value;
   CsrMatrix coarse_csr; // the arrays behind `coarse`
   double rhs_norm = 1;
+  // Distributed mode (begin_distributed): `a` is one MPIAIJ matrix over MPI_COMM_WORLD, and
+  // pmg's row_start, column and value hold this process's diagonal block of it, local_block
+  // the smoother block's equations among its rows (local numbering).
+  bool distributed = false;
+  std::vector<int> local_block;
+  // Distributed pmg: the rows each process owns (pmg_partition.hpp). Empty: rows are
+  // equations, in contiguous blocks.
+  PmgPartition partition;
 
   ~Impl() {
     release();
@@ -441,6 +267,15 @@ struct PetscKspSolver::Impl {
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
+  PetscInt row_of(PetscInt equation) const {
+    return partition.order.empty() ? equation : partition.order[equation];
+  }
+  // `row`: one this process owns.
+  PetscInt equation_of(PetscInt row) const {
+    return partition.order.empty() ? row : partition.local_equations[row - partition.own_begin];
+  }
+  void set_up_serial_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
+  void set_up_distributed_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
   bool runs_block_vcycle() const;
   void multiply_many(const ColumnBlock& x, ColumnBlock& y) const;
   void vcycle_many(const ColumnBlock& r, ColumnBlock& z);
@@ -515,36 +350,34 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
 // BoomerAMG V-cycle instead of CHOLMOD 43 / 55; the shell by CHOLMOD 23 / 23 / 23, also
 // faster (2.0 against 4.6 s of CG at 255k). The point smoothers all grow alike: the shell's
 // anisotropy grows under refinement (BlockSmoother), which the P1 space cannot take up.
+//
+// Distributed (issue 33), the same two levels over MPI_COMM_WORLD: the interpolation and
+// the coarse operator as MPIAIJ matrices (set_up_distributed_coarse_space), BoomerAMG on the
+// coarse level, and as smoother block Jacobi across the processes whose local part is the
+// serial smoother on the process's diagonal block: Gauss-Seidel (PETSc's SOR on MPIAIJ is
+// local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
+// Each sweep takes the other processes' values from the start of the sweep, through the
+// residual b - A x that PETSc's Richardson computes over the whole matrix.
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& q = *options.prolongation;
-  if (q.rows() != static_cast<Eigen::Index>(row_start.size()) - 1 || !q.isCompressed())
-    throw SolveError("internal: the coarse space does not fit the system");
-  p_row_start.assign(q.outerIndexPtr(), q.outerIndexPtr() + q.rows() + 1);
-  p_column.assign(q.innerIndexPtr(), q.innerIndexPtr() + q.nonZeros());
-  p_value.assign(q.valuePtr(), q.valuePtr() + q.nonZeros());
-  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(q.rows()),
-                                  static_cast<PetscInt>(q.cols()), p_row_start.data(),
-                                  p_column.data(), p_value.data(), &p),
-        "MatCreateSeqAIJWithArrays (interpolation)");
+  if (distributed)
+    set_up_distributed_coarse_space(q);
+  else
+    set_up_serial_coarse_space(q);
   check(PCSetType(pc, PCMG), "PCSetType(mg)");
   check(PCMGSetLevels(pc, 2, nullptr), "PCMGSetLevels");
   check(PCMGSetType(pc, PC_MG_MULTIPLICATIVE), "PCMGSetType");
   check(PCMGSetCycleType(pc, PC_MG_CYCLE_V), "PCMGSetCycleType");
   check(PCMGSetInterpolation(pc, 1, p), "PCMGSetInterpolation");
-  // The Galerkin operator by our row-wise product (galerkin_product.hpp), not PETSc's general
-  // one: the same matrix, a fifth of the time.
-  coarse_csr = galerkin_product(row_start.data(), column.data(), value.data(), q);
-  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, coarse_csr.rows, coarse_csr.cols,
-                                  coarse_csr.row_start.data(), coarse_csr.column.data(),
-                                  coarse_csr.value.data(), &coarse),
-        "MatCreateSeqAIJWithArrays (coarse operator)");
   check(PCMGSetGalerkin(pc, PC_MG_GALERKIN_NONE), "PCMGSetGalerkin");
   KSP coarse_ksp = nullptr;
+  // The global block decides (every process must set the same smoother type up).
   if (options.smoother_block && !options.smoother_block->empty()) {
     block_smoother = std::make_unique<BlockSmootherSlot>(BlockSmootherSlot{
-        &row_start, &column, &value, options.smoother_block, &block_factor, nullptr});
+        &row_start, &column, &value, distributed ? &local_block : options.smoother_block,
+        &block_factor, nullptr});
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
@@ -556,9 +389,12 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
       check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
       check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
       const bool is_down = smoother == down;
-      check(PCShellSetApplyRichardson(shell,
-                                      is_down ? smooth_richardson<true> : smooth_richardson<false>),
-            "PCShellSetApplyRichardson");
+      // Distributed, the smoother sees only its diagonal block: Richardson forms the residual
+      // over the whole matrix and applies the local sweep to it from zero.
+      if (!distributed)
+        check(PCShellSetApplyRichardson(shell, is_down ? smooth_richardson<true>
+                                                       : smooth_richardson<false>),
+              "PCShellSetApplyRichardson");
       check(PCShellSetApply(shell, is_down ? smooth_apply<true> : smooth_apply<false>),
             "PCShellSetApply");
     }
@@ -577,6 +413,103 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   check(KSPGetPC(coarse_ksp, &coarse_pc), "KSPGetPC");
   check(PCSetType(coarse_pc, PCHYPRE), "PCSetType(hypre)");
   check(PCHYPRESetType(coarse_pc, "boomeramg"), "PCHYPRESetType");
+}
+
+// Serial: the interpolation over the caller's arrays, and the Galerkin operator by our
+// row-wise product (galerkin_product.hpp), not PETSc's general one: the same matrix, a fifth
+// of the time.
+void PetscKspSolver::Impl::set_up_serial_coarse_space(
+    const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
+  if (q.rows() != static_cast<Eigen::Index>(row_start.size()) - 1 || !q.isCompressed())
+    throw SolveError("internal: the coarse space does not fit the system");
+  p_row_start.assign(q.outerIndexPtr(), q.outerIndexPtr() + q.rows() + 1);
+  p_column.assign(q.innerIndexPtr(), q.innerIndexPtr() + q.nonZeros());
+  p_value.assign(q.valuePtr(), q.valuePtr() + q.nonZeros());
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, static_cast<PetscInt>(q.rows()),
+                                  static_cast<PetscInt>(q.cols()), p_row_start.data(),
+                                  p_column.data(), p_value.data(), &p),
+        "MatCreateSeqAIJWithArrays (interpolation)");
+  coarse_csr = galerkin_product(row_start.data(), column.data(), value.data(), q);
+  check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, coarse_csr.rows, coarse_csr.cols,
+                                  coarse_csr.row_start.data(), coarse_csr.column.data(),
+                                  coarse_csr.value.data(), &coarse),
+        "MatCreateSeqAIJWithArrays (coarse operator)");
+}
+
+// Distributed: every process holds the whole interpolation `q` and puts its own rows (those
+// it owns of the fine matrix) into an MPIAIJ matrix. The columns (the P1 unknowns) are split
+// evenly over the processes rather than following the fine rows of their vertices: the DOF
+// numbering puts the vertices first, so with rows in contiguous blocks the first process
+// would own every P1 unknown and do the whole coarse level alone. The coarse operator
+// P^T A P by PETSc's distributed triple product. Then the process's diagonal block of `a`
+// (its rows, its columns) into row_start/column/value for the smoother, and the smoother
+// block's equations among its rows.
+void PetscKspSolver::Impl::set_up_distributed_coarse_space(
+    const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
+  PetscInt n = 0, begin = 0, end = 0;
+  check(MatGetSize(a, &n, nullptr), "MatGetSize");
+  if (q.rows() != n || !q.isCompressed() || partition.order.size() != static_cast<std::size_t>(n))
+    throw SolveError("internal: the coarse space does not fit the system");
+  check(MatGetOwnershipRange(a, &begin, &end), "MatGetOwnershipRange");
+  const auto m = static_cast<PetscInt>(q.cols());
+  PetscInt c_end = 0;
+  const PetscInt coarse_local = partition.coarse_local;
+  MPI_Scan(&coarse_local, &c_end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  const PetscInt c_begin = c_end - coarse_local;
+  const int* q_start = q.outerIndexPtr();
+  const int* q_column = q.innerIndexPtr();
+  std::vector<PetscInt> in_block(end - begin, 0), off_block(end - begin, 0);
+  for (PetscInt r = begin; r < end; ++r) {
+    const PetscInt i = equation_of(r);
+    for (int k = q_start[i]; k < q_start[i + 1]; ++k) {
+      const PetscInt c = partition.coarse_order[q_column[k]];
+      ++(c >= c_begin && c < c_end ? in_block : off_block)[r - begin];
+    }
+  }
+  check(MatCreateAIJ(PETSC_COMM_WORLD, end - begin, coarse_local, n, m, 0, in_block.data(), 0,
+                     off_block.data(), &p),
+        "MatCreateAIJ (interpolation)");
+  std::vector<PetscInt> columns;
+  for (PetscInt r = begin; r < end; ++r) {
+    const PetscInt i = equation_of(r);
+    columns.clear();
+    for (int k = q_start[i]; k < q_start[i + 1]; ++k)
+      columns.push_back(partition.coarse_order[q_column[k]]);
+    check(MatSetValues(p, 1, &r, static_cast<PetscInt>(columns.size()), columns.data(),
+                       q.valuePtr() + q_start[i], INSERT_VALUES),
+          "MatSetValues (interpolation)");
+  }
+  check(MatAssemblyBegin(p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin (interpolation)");
+  check(MatAssemblyEnd(p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd (interpolation)");
+  check(MatPtAP(a, p, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse), "MatPtAP (coarse operator)");
+
+  Mat diag = a, off = nullptr;
+  const PetscInt* off_columns = nullptr;
+  PetscBool is_mpi = PETSC_FALSE;
+  check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(a), MATMPIAIJ, &is_mpi),
+        "PetscObjectTypeCompare");
+  if (is_mpi)
+    check(MatMPIAIJGetSeqAIJ(a, &diag, &off, &off_columns), "MatMPIAIJGetSeqAIJ");
+  PetscInt rows = 0;
+  const PetscInt *ia = nullptr, *ja = nullptr;
+  PetscBool done = PETSC_FALSE;
+  check(MatGetRowIJ(diag, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done), "MatGetRowIJ");
+  if (!done || rows != end - begin)
+    throw SolveError("internal: the diagonal block's rows are not available");
+  const PetscScalar* v = nullptr;
+  check(MatSeqAIJGetArrayRead(diag, &v), "MatSeqAIJGetArrayRead");
+  row_start.assign(ia, ia + rows + 1);
+  column.assign(ja, ja + ia[rows]);
+  value.assign(v, v + ia[rows]);
+  check(MatSeqAIJRestoreArrayRead(diag, &v), "MatSeqAIJRestoreArrayRead");
+  check(MatRestoreRowIJ(diag, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done),
+        "MatRestoreRowIJ");
+  local_block.clear();
+  if (options.smoother_block)
+    for (int e : *options.smoother_block)
+      if (const PetscInt r = row_of(e); r >= begin && r < end)
+        local_block.push_back(r - begin);
+  std::sort(local_block.begin(), local_block.end());
 }
 
 PetscErrorCode PetscKspSolver::Impl::monitor(KSP, PetscInt it, PetscReal rnorm, void* self) {
@@ -634,6 +567,7 @@ void PetscKspSolver::setup(const Eigen::SparseMatrix<double>& lower) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
   m.release();
+  m.distributed = false;
   m.to_full_csr(lower);
   const auto n = static_cast<PetscInt>(lower.rows());
   check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, m.row_start.data(), m.column.data(),
@@ -773,11 +707,19 @@ KrylovOutcome PetscKspSolver::Impl::outcome(double b_norm) const {
 void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) {
   const std::lock_guard lock(petsc_mutex());
   Impl& m = *impl_;
-  if (m.options.preconditioner == "pmg")
-    throw SolveError("internal: p-multigrid is not available distributed");
   m.release();
+  m.distributed = true;
   PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
-  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
+  // pmg: rows by a partition of the mesh (kept across Newton steps: the same pattern).
+  if (m.options.preconditioner == "pmg" && m.options.prolongation) {
+    if (m.partition.order.size() != static_cast<std::size_t>(n))
+      m.partition =
+          partition_for_pmg(lower_pattern, *m.options.prolongation, m.options.smoother_block);
+    local = m.partition.own_end - m.partition.own_begin;
+  } else {
+    m.partition = {};
+    check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
+  }
   MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
   const PetscInt begin = end - local;
   // Exact preallocation: per owned row, its columns inside the owned block (the "diagonal"
@@ -789,10 +731,10 @@ void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_
   };
   for (PetscInt j = 0; j < n; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
-      const auto i = static_cast<PetscInt>(it.row());
-      count(i, j);
-      if (i != j)
-        count(j, i);
+      const auto i = m.row_of(static_cast<PetscInt>(it.row())), jj = m.row_of(j);
+      count(i, jj);
+      if (i != jj)
+        count(jj, i);
     }
   check(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, in_block.data(), 0, off_block.data(),
                      &m.a),
@@ -810,7 +752,8 @@ void PetscKspSolver::add_lower_share(const Eigen::SparseMatrix<double>& lower) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
       if (it.value() == 0)
         continue;
-      const auto row = static_cast<PetscInt>(it.row()), col = static_cast<PetscInt>(j);
+      const auto row = m.row_of(static_cast<PetscInt>(it.row())),
+                 col = m.row_of(static_cast<PetscInt>(j));
       check(MatSetValue(m.a, row, col, it.value(), ADD_VALUES), "MatSetValue");
       if (row != col)
         check(MatSetValue(m.a, col, row, it.value(), ADD_VALUES), "MatSetValue");
@@ -833,7 +776,8 @@ KrylovOutcome PetscKspSolver::solve_distributed(const Eigen::VectorXd& rhs, Eige
     check(VecGetOwnershipRange(m.rhs, &begin, &end), "VecGetOwnershipRange");
     PetscScalar* own = nullptr;
     check(VecGetArray(m.rhs, &own), "VecGetArray");
-    std::copy(rhs.data() + begin, rhs.data() + end, own);
+    for (PetscInt r = begin; r < end; ++r)
+      own[r - begin] = rhs[m.equation_of(r)];
     check(VecRestoreArray(m.rhs, &own), "VecRestoreArray");
   }
   PetscReal b_norm = 0;
@@ -873,7 +817,9 @@ KrylovOutcome PetscKspSolver::solve_distributed(const Eigen::VectorXd& rhs, Eige
     check(VecGetLocalSize(all, &n_all), "VecGetLocalSize");
     const PetscScalar* values = nullptr;
     check(VecGetArrayRead(all, &values), "VecGetArrayRead");
-    x = Eigen::Map<const Eigen::VectorXd>(values, n_all); // the whole solution
+    x.resize(n_all); // the whole solution, back in equation order
+    for (PetscInt i = 0; i < n_all; ++i)
+      x[i] = values[m.row_of(i)];
     VecRestoreArrayRead(all, &values);
     destroy();
     return out;

@@ -77,7 +77,8 @@ public:
   // order (add_lower_share is local). Rows are owned in contiguous blocks, PETSc's default split
   // (the first n % size processes own one row more). `lower_pattern`: the lower triangle of
   // the whole system's sparsity (values unused), the same on every process; it gives the exact
-  // preallocation of this process's rows. Not for pmg (its coarse space is not distributed).
+  // preallocation of this process's rows. pmg: every process gives the whole interpolation
+  // and smoother block (options); each uses its own rows of them.
   void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern);
   // Adds this process's part of the symmetric matrix, given by its lower triangle (the whole
   // system's size; what this process's elements contributed, zero elsewhere). Its non-zero

@@ -1,10 +1,11 @@
-// The distributed 3D solve with coils and nonlinear iron (issue 33 item 2): `mpirun -n N magfem
-// solve` against the serial run of the same case, for a coil over a permeable plate (the coil
-// source field evaluated per process, the inductance's sensitivity solve distributed) and a
-// magnet over a saturable steel plate (Newton with distributed residuals and tangents).
-// The energy and the coil's flux linkage agree to 1e-8, the inductance to 1e-6 (both runs'
-// sensitivity solves are loose and corrected), and every probe value to 1e-6 of the largest
-// |B|; a Newton that does not converge ends every process with exit 3 and
+// The distributed 3D solve with coils, nonlinear iron and p-multigrid (issue 33 item 2):
+// `mpirun -n N magfem solve` against the serial run of the same case, for a coil over a
+// permeable plate (the coil source field evaluated per process, the inductance's sensitivity
+// solve distributed), a magnet over a saturable steel plate (Newton with distributed residuals
+// and tangents) and a P2 magnetized sphere with CG + pmg (the CG iteration count within 1.5x
+// of the serial one). The energy and the coil's flux linkage agree to 1e-8, the inductance to
+// 1e-6 (both runs' sensitivity solves are loose and corrected), and every probe value to 1e-6
+// of the largest |B|; a Newton that does not converge ends every process with exit 3 and
 // writes nothing.
 #include <gtest/gtest.h>
 
@@ -129,7 +130,86 @@ std::string steel_case(const fs::path& dir) {
          " --mesh-scale 4";
 }
 
+// P2 with p-multigrid (issue 33 step 1): serially CG + pmg, distributed the same two levels
+// with block Jacobi across the processes as the smoother, on a partition of the mesh with the
+// open-boundary shell whole on process 0 (petsc_ksp_solver.cpp). The smoother is weaker than
+// the serial one only at the partition's interfaces, so the iteration count stays near the
+// serial one: measured 22 / 24 / 24 CG iterations on 1 / 2 / 3 processes here (21 / 23 / 26
+// at --mesh-scale 4); the shell cut between processes took twice the serial count, rows in
+// contiguous blocks of the DOF numbering four times. 1.5x is the issue's bound. Without the
+// shell 15 or 16 against 14 serially; there a coarse operator off by a factor 2 (not P^T A
+// P) took 21, which 1.3x catches (with the shell it took 30, within 1.5x).
+constexpr double pmg_iteration_ratio = 1.5;
+constexpr double pmg_iteration_ratio_without_shell = 1.3;
+
+// The magnetized sphere, P2, CG + pmg to 1e-12 serially and distributed, coarse (35k
+// unknowns: seconds a run); `open` = false: a Dirichlet sphere, no shell (the smoother is
+// PETSc's local SSOR then).
+std::string sphere_pmg_case(const fs::path& dir, bool open) {
+  const fs::path file =
+      write_case(dir, "3d/magnetized_sphere.yaml",
+                 "solver: {order: 2, preconditioner: pmg, linear_tolerance: 1e-12}");
+  if (!open) {
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string shell = "boundary: {type: open, radius: 25, shell_ratio: 1.5}";
+    const auto at = text.find(shell);
+    EXPECT_NE(at, std::string::npos);
+    if (at != std::string::npos)
+      text.replace(at, shell.size(), "boundary: {type: dirichlet, radius: 25}");
+    in.close();
+    std::ofstream(file) << text;
+  }
+  return file.string() + " --mesh-scale 5";
+}
+
+// expect_serial_field, and both runs used pmg with the distributed one's CG iterations within
+// `ratio` of the serial one's.
+void expect_serial_pmg(const fs::path& dir, const std::string& args, int n, double ratio) {
+  expect_serial_field(dir, args, n);
+  const auto s = magfem::test::read_json(dir / "serial" / "summary.json");
+  const auto m = magfem::test::read_json(dir / ("ranks_" + std::to_string(n)) / "summary.json");
+  EXPECT_EQ(s["preconditioner"], "pmg");
+  EXPECT_EQ(m["preconditioner"], "pmg");
+  const int serial = s["linear_iterations"], distributed = m["linear_iterations"];
+  EXPECT_LE(distributed, ratio * serial) << serial << " serially";
+  std::printf("%d ranks: %d CG + pmg iterations against %d serially\n", n, distributed, serial);
+  ASSERT_EQ(m["solver_notes"].size(), 1u);
+  EXPECT_NE(std::string(m["solver_notes"][0]).find("p-multigrid"), std::string::npos);
+}
+
 } // namespace
+
+// The open-boundary shell: its block on process 0, by Cholesky.
+TEST_F(MpiSolve, PmgOnTwoAndThreeProcessesKeepsTheSerialField) {
+  const fs::path dir = magfem::test::fresh_dir("sphere_pmg");
+  const std::string args = sphere_pmg_case(dir, true);
+  for (int n : {2, 3})
+    expect_serial_pmg(dir, args, n, pmg_iteration_ratio);
+  fs::remove_all(dir);
+}
+
+// No shell: Gauss-Seidel alone within each process.
+TEST_F(MpiSolve, PmgWithoutShellOnTwoProcessesKeepsTheSerialField) {
+  const fs::path dir = magfem::test::fresh_dir("sphere_pmg_dirichlet");
+  expect_serial_pmg(dir, sphere_pmg_case(dir, false), 2, pmg_iteration_ratio_without_shell);
+  fs::remove_all(dir);
+}
+
+// P2 with pmg for a coil (the inductance's sensitivity solves on the distributed pmg too) and
+// for Newton on saturable steel (the partition and each process's shell factor kept across
+// the steps): 10-20 s a run, label long.
+TEST_F(MpiSolve, LongP2CoilAndNonlinearCasesWithPmgOnTwoProcesses) {
+  for (const std::string example : {"3d/coil_over_plate.yaml", "3d/magnet_over_steel_plate.yaml"}) {
+    const fs::path dir = magfem::test::fresh_dir("p2_" + fs::path(example).stem().string());
+    const std::string args =
+        write_case(dir, example, "solver: {order: 2, preconditioner: pmg, linear_tolerance: 1e-12}")
+            .string() +
+        " --mesh-scale 4";
+    expect_serial_pmg(dir, args, 2, pmg_iteration_ratio);
+    fs::remove_all(dir);
+  }
+}
 
 // The coil's source field on each process's own tetrahedra, the distributed inductance solve.
 TEST_F(MpiSolve, CoilCaseOnTwoProcessesGivesTheSerialField) {
