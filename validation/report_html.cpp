@@ -229,7 +229,9 @@ std::string table_row(const EntryResult& r) {
          "</div></td><td class=wrap title=\"" + html_escape(e.quantity) + "\"><div><a href=\"#" +
          html_escape(e.id) + "\">" + html_escape(short_quantity(e.quantity, 120)) +
          "</a></div></td><td>" + status_badge(r.status) + "</td><td class=n>" +
-         value_vs_reference(r) + "</td><td class=n>" + error_vs_tolerance(r) + "</td></tr>\n";
+         value_vs_reference(r) +
+         // The error may wrap: on one line its FE estimate was cut to "(FE e..." at 1400 px.
+         "</td><td class=\"n wrap\">" + error_vs_tolerance(r) + "</td></tr>\n";
 }
 
 // The results grouped by source (sources in order of first appearance, entries in run order
@@ -301,8 +303,8 @@ std::string values_text(const EntryResult& r) {
   return s;
 }
 
-// How the FE value was meshed: "solved to 1 % on probes.midgap from mesh scale 4: 2 passes,
-// 92,363 unknowns, converged" or "fixed mesh scales", then the catalogue's reason.
+// How the FE value was meshed: "solved adaptively to 1 % on probes.midgap: 2 passes, 92363
+// unknowns, converged" or "fixed mesh scales", then the catalogue's reason.
 std::string fe_mesh_text(const EntryResult& r, const PageText& text) {
   const CatalogueEntry& e = *r.entry;
   if (!r.fe || e.fe_reason.empty())
@@ -319,7 +321,7 @@ std::string fe_mesh_text(const EntryResult& r, const PageText& text) {
                                    ? " (" + std::to_string(*r.eval.fe_unknowns) + " unknowns)"
                                    : std::string());
   }
-  return s + ". " + text(e.fe_reason);
+  return s + ". " + (r.eval.fe_adapt ? "Why this accuracy: " : "Why fixed: ") + text(e.fe_reason);
 }
 
 std::string entry_facts(const EntryResult& r, const ValidationRun& run, const PageText& text) {

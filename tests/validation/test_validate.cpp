@@ -75,6 +75,24 @@ EntryResult judged(CatalogueEntry& e, std::optional<double> fe, std::optional<do
   return r;
 }
 
+// An entry published as 10 with a 5 % tolerance.
+CatalogueEntry entry_of_10() {
+  CatalogueEntry e;
+  e.id = "x";
+  e.source = "s";
+  e.published = 10.0;
+  e.tolerance_pct = 5;
+  return e;
+}
+
+// A result of `e` with the FE value `fe` (not judged yet).
+EntryResult fe_value(const CatalogueEntry& e, double fe) {
+  EntryResult r;
+  r.entry = &e;
+  r.eval.fe = r.fe = fe;
+  return r;
+}
+
 } // namespace
 
 TEST(Validate, TheShippedCatalogueReadsAndCoversEverySeed) {
@@ -117,12 +135,8 @@ TEST(Validate, JudgeAppliesRelativeAndAtMostTolerances) {
 }
 
 TEST(Validate, DiscretisationEstimateIsTheChangeFromTheCoarserMesh) {
-  CatalogueEntry e;
-  e.published = 10.0;
-  e.tolerance_pct = 5;
-  EntryResult r;
-  r.entry = &e;
-  r.eval.fe = r.fe = 10.0;
+  const CatalogueEntry e = entry_of_10();
+  EntryResult r = fe_value(e, 10.0);
   r.eval.fe_coarse = 10.2;
   judge(r);
   ASSERT_TRUE(r.discretisation_pct.has_value());
@@ -363,12 +377,8 @@ TEST(Validate, ALimitStoppedFeEntryIsReportedNotConverged) {
 // judge() alone: a value inside its tolerance whose adaptive solve stopped at a limit fails;
 // a finding keeps its status but carries the note.
 TEST(Validate, JudgeFailsAnUnconvergedFeValue) {
-  CatalogueEntry e;
-  e.published = 10.0;
-  e.tolerance_pct = 5;
-  EntryResult r;
-  r.entry = &e;
-  r.eval.fe = r.fe = 10.1;
+  CatalogueEntry e = entry_of_10();
+  EntryResult r = fe_value(e, 10.1);
   r.eval.fe_adapt = FeAdaptOutcome{0.5, 10, false, "max_passes (10) reached", 0.8};
   judge(r);
   EXPECT_EQ(r.status, "fail");
@@ -392,23 +402,15 @@ TEST(Validate, ResultsCsvAppendsTheAdaptiveColumns) {
   const std::string old_columns = "id,source,section,quantity,unit,published,fe,analytic,"
                                   "tolerance_pct,fe_error_pct,analytic_error_pct,status,seconds";
   EXPECT_EQ(std::string(validation_csv_header), old_columns + ",passes,unknowns,converged");
-  CatalogueEntry e;
-  e.id = "x";
-  e.source = "s";
-  e.published = 10.0;
-  e.tolerance_pct = 5;
+  const CatalogueEntry e = entry_of_10();
   ValidationRun run;
-  run.results.resize(2);
+  run.results = {fe_value(e, 10.1), fe_value(e, 10.1)};
   EntryResult& adaptive = run.results[0];
-  adaptive.entry = &e;
-  adaptive.eval.fe = adaptive.fe = 10.1;
   adaptive.eval.fe_adapt = FeAdaptOutcome{0.5, 3, false, "max_unknowns", 0.8};
   adaptive.eval.fe_unknowns = 123456;
   adaptive.seconds = 1.5;
   judge(adaptive);
   EntryResult& fixed = run.results[1];
-  fixed.entry = &e;
-  fixed.eval.fe = fixed.fe = 10.1;
   fixed.eval.fe_unknowns = 789;
   judge(fixed);
   std::stringstream csv(validation_csv(run));
