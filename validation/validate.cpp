@@ -309,6 +309,10 @@ int run_validate(const ValidateOptions& options) {
                                      done, run.results.size(), r.status.c_str(),
                                      r.entry->id.c_str(), r.seconds, elapsed_s,
                                      resumed ? " resumed" : "");
+                        // Why, where the report would be the only place to say it (an error,
+                        // an FE value short of its accuracy).
+                        if (r.status == "fail" && !r.note.empty())
+                          std::fprintf(stderr, "          %s\n", r.note.c_str());
                       });
 
   if (!options.world.is_root()) // rank 0 has the results, and writes and reports them

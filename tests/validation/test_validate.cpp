@@ -363,6 +363,7 @@ TEST(Validate, ALimitStoppedFeEntryIsReportedNotConverged) {
   std::filesystem::remove_all(out);
   const CliRun r = run_cli("--catalogue " + cat + " --out " + out.string(), "limit");
   EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("FE not converged"), std::string::npos) << "the console says why: " << r.err;
   const std::string csv = read_text(out / "results.csv");
   const std::string row = csv.substr(csv.find("limited.entry"));
   EXPECT_NE(row.find(",fail,"), std::string::npos) << row;
