@@ -57,15 +57,6 @@ std::string FeMesh::key() const {
   return buf + adapt->quantities.front();
 }
 
-std::string FeMesh::label() const {
-  char buf[64];
-  if (adapt)
-    std::snprintf(buf, sizeof buf, "adaptive to %g %%", adapt->accuracy_pct);
-  else
-    std::snprintf(buf, sizeof buf, "mesh scale %g", mesh_scale);
-  return buf;
-}
-
 void record_fe_solve(EvalResult& r, const FeProbes& solve) {
   r.fe_unknowns = std::max(r.fe_unknowns.value_or(0), solve.unknowns);
   if (!solve.adapt)

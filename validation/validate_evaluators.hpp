@@ -66,8 +66,7 @@ struct EvalResult {
 struct FeMesh {
   double mesh_scale = 0; // 0: the case's mesh
   std::optional<AdaptSpec> adapt;
-  std::string key() const;   // for the cache
-  std::string label() const; // "mesh scale 1.3", "adaptive to 0.3 %" (plot legends)
+  std::string key() const; // for the cache
 };
 
 struct EvalContext {
