@@ -235,6 +235,8 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  --tier quick (default): every analytic figure and the 2D FE ones, a few minutes on\n"
      "  2 cores; --tier full: also the 3D FE figures on publication meshes (the 32-magnet\n"
      "  benchmark, the compensator), about an hour on 2 cores and up to ~3 GB per job.\n"
+     "  FE entries that name an accuracy are solved adaptively to it (results.csv: passes,\n"
+     "  unknowns, converged); one that stops at a limit before it fails, saying why.\n"
      "  Finished entries are kept in DIR/.magfem-checkpoint.jsonl as they finish: after\n"
      "  Ctrl-C or kill, --resume evaluates only the rest (failed entries again) and writes\n"
      "  the same results as an uninterrupted run. --catalogue FILE runs another catalogue\n"

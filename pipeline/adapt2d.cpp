@@ -36,6 +36,8 @@ std::unique_ptr<Run2D> run_adaptive_2d(const CaseSpec& spec, const RunOverrides&
   std::optional<SizeField2D> sizes;
   std::unique_ptr<Run2D> run;
   AdaptSteps steps;
+  steps.dimension = 2;
+  steps.order = overrides.order > 0 ? overrides.order : spec.order;
   steps.solve = [&](int) {
     RunOverrides ov = overrides;
     ov.refine_sizes = sizes ? &*sizes : nullptr;

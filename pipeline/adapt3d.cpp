@@ -86,6 +86,8 @@ std::unique_ptr<Run3D> run_adaptive_3d(const CaseSpec& spec, const RunOverrides&
   };
   std::unique_ptr<Run3D> run;
   AdaptSteps steps;
+  steps.dimension = 3;
+  steps.order = overrides.order > 0 ? overrides.order : spec.order;
   steps.solve = [&](int) {
     run.reset(); // the previous pass's memory is free before the next one meshes
     run = run_case_3d(with_sizes(), overrides);

@@ -7,9 +7,10 @@
 // the quantities' error estimate and the stopping rule are the same, and live here.
 //
 // The error of a named quantity (force, torque, probe) is its change between the last two
-// passes, extrapolated with the observed ratio of successive changes; the energy's is the
-// estimator's. Reaching max_passes, max_unknowns or the memory guard first stops with
-// converged = false, a stop reason and a warning: never a silent pass.
+// passes, extrapolated to the limit with the order the last three passes show, bounded to
+// what the elements can show (extrapolated_error_pct); the energy's is the estimator's. Reaching
+// max_passes, max_unknowns or the memory guard first stops with converged = false, a stop reason
+// and a warning: never a silent pass.
 #include <cmath>
 #include <functional>
 #include <string>
@@ -71,7 +72,19 @@ struct AdaptPlan {
 struct AdaptSteps {
   std::function<AdaptMeasure(int pass)> solve;
   std::function<AdaptPlan(double target_pct, bool coarsen)> plan;
+  int dimension = 2; // of the mesh: its size h ~ elements^(-1/dimension)
+  int order = 2;     // of the elements: bounds the order a quantity's changes may show
 };
+
+// The estimated relative error (%) of the last of a quantity's values on successively refined
+// meshes (`elements` per pass; NaN for one value, the last change for two). From three on,
+// Richardson extrapolation with the order p at which an error C h^p gives the last two
+// changes, p bounded to [1, 2 order] (a ratio of changes beyond it is noise or
+// pre-asymptotic, not a rate). Where the order cannot be observed (changes of opposite signs:
+// the values bracket their limit; a zero change; a pass that hardly refined) it is the last
+// change itself.
+double extrapolated_error_pct(const std::vector<double>& values,
+                              const std::vector<double>& elements, int dimension, int order);
 
 // The quantities spec.adapt names, resolved (InputError at adapt.quantities otherwise).
 std::vector<AdaptQuantity> resolve_adapt_quantities(const CaseSpec& spec);

@@ -121,16 +121,19 @@ std::string value_vs_reference(const EntryResult& r) {
   return v + " vs " + (e.published ? with_unit(round_text(*e.published), e.unit) : "?");
 }
 
-// The FE value's discretisation estimate (its change from the next coarser mesh) beside its
-// error, where the entry has one: " (FE estimate 0.12 %)", points for a percentage value. It
-// informs the reader how much of the error the mesh may account for; the verdict is the
-// error's alone.
+// The FE value's discretisation estimate beside its error, where the entry has one:
+// " (FE estimate 0.12 %)", points for a percentage value; an adaptive value whose loop stopped
+// at a limit says so. It informs the reader how much of the error the mesh may account for;
+// the verdict is the error's alone (but an unconverged value fails: validate.hpp judge).
 std::string fe_estimate_text(const EntryResult& r) {
-  if (!r.fe || !r.discretisation_pct)
+  if (!r.fe)
     return "";
+  const bool unconverged = r.eval.fe_adapt && !r.eval.fe_adapt->converged;
+  if (!r.discretisation_pct)
+    return unconverged ? " <span class=muted>(FE <b>not converged</b>)</span>" : "";
   const bool points = r.entry->check == CatalogueEntry::Check::at_most;
   return " <span class=muted>(FE estimate " + round_text(*r.discretisation_pct, 2) +
-         (points ? " points" : " %") + ")</span>";
+         (points ? " points" : " %") + (unconverged ? ", <b>not converged</b>" : "") + ")</span>";
 }
 
 // The larger error of the two values against the tolerance: "-0.81 % within &plusmn;3 %", or
@@ -226,7 +229,9 @@ std::string table_row(const EntryResult& r) {
          "</div></td><td class=wrap title=\"" + html_escape(e.quantity) + "\"><div><a href=\"#" +
          html_escape(e.id) + "\">" + html_escape(short_quantity(e.quantity, 120)) +
          "</a></div></td><td>" + status_badge(r.status) + "</td><td class=n>" +
-         value_vs_reference(r) + "</td><td class=n>" + error_vs_tolerance(r) + "</td></tr>\n";
+         value_vs_reference(r) +
+         // The error may wrap: on one line its FE estimate was cut to "(FE e..." at 1400 px.
+         "</td><td class=\"n wrap\">" + error_vs_tolerance(r) + "</td></tr>\n";
 }
 
 // The results grouped by source (sources in order of first appearance, entries in run order
@@ -263,8 +268,10 @@ std::string entries_table(const ValidationRun& run) {
   }
   return h + "</table>\n<p class=muted>Error: the larger of the FE and analytic errors, in % of "
              "the published value; for entries whose value is itself a percentage (an rms "
-             "discrepancy), the value, against its limit. FE estimate: the change of the FE "
-             "value from the next coarser mesh (an estimate of its discretisation error).</p>\n";
+             "discrepancy), the value, against its limit. FE estimate: the estimated "
+             "discretisation error of the FE value, from the adaptive refinement's passes "
+             "(entries solved to an accuracy) or the change from the next coarser mesh (fixed "
+             "mesh scales).</p>\n";
 }
 
 std::string tolerance_text(const CatalogueEntry& e, const PageText& text) {
@@ -289,10 +296,32 @@ std::string values_text(const EntryResult& r) {
   add("FE", r.fe, r.fe_error_pct);
   add("analytic", r.analytic, r.analytic_error_pct);
   if (r.discretisation_pct)
-    s += "; discretisation estimate (change from the next coarser mesh) " +
+    s += std::string("; discretisation estimate (") +
+         (r.eval.fe_adapt ? "adaptive refinement's" : "change from the next coarser mesh") + ") " +
          round_text(*r.discretisation_pct, 2) +
          (e.check == CatalogueEntry::Check::at_most ? " points" : " %");
   return s;
+}
+
+// How the FE value was meshed: "solved adaptively to 1 % on probes.midgap: 2 passes, 92363
+// unknowns, converged" or "fixed mesh scales", then the catalogue's reason.
+std::string fe_mesh_text(const EntryResult& r, const PageText& text) {
+  const CatalogueEntry& e = *r.entry;
+  if (!r.fe || e.fe_reason.empty())
+    return "";
+  std::string s;
+  if (const auto& a = r.eval.fe_adapt) {
+    s = "solved adaptively to " + round_text(a->accuracy_pct, 3) + " % on " +
+        html_escape(e.fe_accuracy ? e.fe_accuracy->quantity : std::string("?")) + ": " +
+        std::to_string(a->passes) + " passes, " +
+        (r.eval.fe_unknowns ? std::to_string(*r.eval.fe_unknowns) + " unknowns, " : "") +
+        (a->converged ? "converged" : "<b>not converged</b> (" + html_escape(a->stop_reason) + ")");
+  } else {
+    s = "fixed mesh scales" + (r.eval.fe_unknowns
+                                   ? " (" + std::to_string(*r.eval.fe_unknowns) + " unknowns)"
+                                   : std::string());
+  }
+  return s + ". " + (r.eval.fe_adapt ? "Why this accuracy: " : "Why fixed: ") + text(e.fe_reason);
 }
 
 std::string entry_facts(const EntryResult& r, const ValidationRun& run, const PageText& text) {
@@ -310,6 +339,8 @@ std::string entry_facts(const EntryResult& r, const ValidationRun& run, const Pa
     h += "<dt>Method</dt><dd>" + text(r.eval.method) + "</dd>\n";
   if (!e.case_file.empty())
     h += "<dt>Case</dt><dd><code>" + text(e.case_file) + "</code></dd>\n";
+  if (const std::string mesh = fe_mesh_text(r, text); !mesh.empty())
+    h += "<dt>FE mesh</dt><dd>" + mesh + "</dd>\n";
   if (e.expect == CatalogueEntry::Expect::finding)
     h += "<dt>Finding</dt><dd>" + text(e.reason) + "</dd>\n";
   if (!r.note.empty())

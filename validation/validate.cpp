@@ -95,7 +95,7 @@ void evaluate(EntryResult& r, ValidationTier tier, ComputeCache& cache) {
     r.fe = r.eval.fe;
     r.analytic = r.eval.analytic;
     judge(r);
-    if (!r.fe && e.evaluate && e.evaluate->has("fe") && ctx.fe_scales().empty())
+    if (!r.fe && e.evaluate && e.evaluate->has("fe") && ctx.fe_meshes().empty())
       r.note = "FE in --tier full only";
   } catch (const std::exception& ex) {
     r.status = "fail";
@@ -110,9 +110,15 @@ void judge(EntryResult& r) {
   const CatalogueEntry& e = *r.entry;
   r.fe_error_pct = error_pct(e, r.fe);
   r.analytic_error_pct = error_pct(e, r.analytic);
-  // Discretisation estimate: the change from the next coarser mesh, in % of the FE value
-  // (in points for at_most entries, whose value is already a percentage).
-  if (r.fe && r.eval.fe_coarse) {
+  // Discretisation estimate: an adaptive value's is the loop's estimate for its quantity (the
+  // solves' relative estimates summed, adapt_loop.hpp; for at_most entries, whose value is an
+  // rms difference in % of the field, a relative field error of x % moves it by about x
+  // points); a fixed-scale value's is the change from the next coarser mesh, in % of the FE
+  // value (in points for at_most entries).
+  if (r.fe && r.eval.fe_adapt) {
+    if (std::isfinite(r.eval.fe_adapt->estimate_pct))
+      r.discretisation_pct = r.eval.fe_adapt->estimate_pct;
+  } else if (r.fe && r.eval.fe_coarse) {
     const double change = std::abs(*r.fe - *r.eval.fe_coarse);
     if (e.check == CatalogueEntry::Check::at_most)
       r.discretisation_pct = change;
@@ -126,6 +132,8 @@ void judge(EntryResult& r) {
   }
   if (e.expect == CatalogueEntry::Expect::finding) {
     r.status = "finding";
+    if (r.fe && r.eval.fe_adapt && !r.eval.fe_adapt->converged)
+      r.note = unconverged_note(*r.eval.fe_adapt);
     return;
   }
   bool ok = true;
@@ -133,6 +141,29 @@ void judge(EntryResult& r) {
     if (err && !(std::abs(*err) <= e.tolerance_pct))
       ok = false;
   r.status = ok ? "pass" : "fail";
+  // An FE value short of its accuracy is not a verdict the catalogue asked for: a limit (passes,
+  // unknowns, memory) stopped the loop, so the value may still carry an error the tolerance
+  // cannot absorb. Not a silent pass.
+  if (r.fe && r.eval.fe_adapt && !r.eval.fe_adapt->converged) {
+    r.status = "fail";
+    r.note = unconverged_note(*r.eval.fe_adapt);
+  }
+}
+
+std::string unconverged_note(const FeAdaptOutcome& a) {
+  char buf[160];
+  std::snprintf(
+      buf, sizeof buf,
+      "FE not converged: adaptive refinement stopped before %.3g %% after %d pass(es), estimate ",
+      a.accuracy_pct, a.passes);
+  std::string s = buf;
+  if (std::isfinite(a.estimate_pct)) {
+    std::snprintf(buf, sizeof buf, "%.3g %%", a.estimate_pct);
+    s += buf;
+  } else {
+    s += "unknown";
+  }
+  return s + " (" + a.stop_reason + ")";
 }
 
 namespace {
@@ -278,6 +309,10 @@ int run_validate(const ValidateOptions& options) {
                                      done, run.results.size(), r.status.c_str(),
                                      r.entry->id.c_str(), r.seconds, elapsed_s,
                                      resumed ? " resumed" : "");
+                        // Why, where the report would be the only place to say it (an error,
+                        // an FE value short of its accuracy).
+                        if (r.status == "fail" && !r.note.empty())
+                          std::fprintf(stderr, "          %s\n", r.note.c_str());
                       });
 
   if (!options.world.is_root()) // rank 0 has the results, and writes and reports them

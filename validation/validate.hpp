@@ -81,7 +81,11 @@ void evaluate_validation(ValidationRun& run, RunCheckpoint* checkpoint,
 // for bad input (unknown id, bad catalogue).
 int run_validate(const ValidateOptions& options);
 
-// Status and error columns of one evaluated entry (exposed for tests).
+// Status and error columns of one evaluated entry (exposed for tests). An FE value whose
+// adaptive solves stopped at a limit fails (a finding keeps its status), with the note of
+// unconverged_note.
 void judge(EntryResult& r);
+// "FE not converged: adaptive refinement stopped before 1 % after 3 pass(es), ..." .
+std::string unconverged_note(const FeAdaptOutcome& a);
 
 } // namespace magfem

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <set>
 
+#include "casefile/adapt_spec.hpp"
+#include "casefile/case_spec.hpp"
 #include "core/input_error.hpp"
 #include "validation/validate_evaluators.hpp"
 
@@ -33,6 +35,67 @@ namespace {
 // InputError at `node` whose message starts with the entry id, so a user sees which figure.
 [[noreturn]] void fail_entry(const YamlNode& node, const std::string& id, const std::string& what) {
   throw InputError(node.file(), node.line(), node.path(), "entry '" + id + "': " + what);
+}
+
+// An accuracy in percent: 0 and 100 or more are not accuracies a solve can aim at.
+double read_accuracy_pct(const YamlNode& n, const std::string& id) {
+  const double pct = n.as_double();
+  if (!(pct > 0 && pct < 100))
+    fail_entry(n, id, "accuracy_pct must be > 0 and < 100 (percent), got " + n.as_string());
+  return pct;
+}
+
+// evaluate.fe: mesh scales per tier ({quick: [...], full: [...]}, coarse to fine) or an
+// accuracy ({accuracy_pct: PCT or {quick: PCT, full: PCT}, quantity: NAME, start_scale: S,
+// max_passes: N, max_unknowns: N}); either way `reason` says why.
+void read_fe(const YamlNode& fe, CatalogueEntry& e, const Evaluator& evaluator) {
+  fe.allow_keys({"quick", "full", "accuracy_pct", "quantity", "start_scale", "max_passes",
+                 "max_unknowns", "reason"});
+  if (!fe.has("reason"))
+    fail_entry(fe, e.id, "evaluate.fe needs a reason: why this accuracy, or why fixed mesh scales");
+  e.fe_reason = fe.at("reason").as_string();
+  const auto acc = fe.find("accuracy_pct");
+  if (!acc) {
+    for (const char* key : {"quantity", "start_scale", "max_passes", "max_unknowns"})
+      if (fe.has(key))
+        fail_entry(fe.at(key), e.id,
+                   std::string(key) + " applies to an FE accuracy: give accuracy_pct");
+    return;
+  }
+  for (const char* tier : {"quick", "full"})
+    if (fe.has(tier))
+      fail_entry(fe.at(tier), e.id, "give mesh scales or accuracy_pct, not both");
+  // An evaluator that reads only mesh scales would drop the accuracy silently.
+  if (!evaluator.adapts)
+    fail_entry(*acc, e.id,
+               "evaluator " + e.evaluator + " runs at fixed mesh scales: give quick/full scales");
+  FeAccuracy a;
+  if (acc->is_map()) {
+    acc->allow_keys({"quick", "full"});
+    if (auto q = acc->find("quick"))
+      a.quick_pct = read_accuracy_pct(*q, e.id);
+    if (auto f = acc->find("full"))
+      a.full_pct = read_accuracy_pct(*f, e.id);
+  } else {
+    a.quick_pct = a.full_pct = read_accuracy_pct(*acc, e.id);
+  }
+  const YamlNode q = fe.at("quantity");
+  a.quantity = q.as_string();
+  if (!e.case_file.empty()) {
+    std::string why;
+    if (!parse_adapt_quantity(a.quantity, read_case(e.case_file), why))
+      fail_entry(q, e.id, why);
+  }
+  if (auto s = fe.find("start_scale"))
+    a.start_scale = s->as_positive();
+  if (auto m = fe.find("max_passes")) {
+    a.max_passes = m->as_int();
+    if (a.max_passes < 1)
+      fail_entry(*m, e.id, "max_passes must be >= 1");
+  }
+  if (auto m = fe.find("max_unknowns"))
+    a.max_unknowns = m->as_positive();
+  e.fe_accuracy = a;
 }
 
 void read_evaluate(const YamlNode& ev, CatalogueEntry& e, const std::filesystem::path& folder) {
@@ -77,6 +140,8 @@ void read_evaluate(const YamlNode& ev, CatalogueEntry& e, const std::filesystem:
       if (!std::filesystem::is_regular_file(path))
         fail_entry(*c, e.id, "case file not found: " + path.string());
     }
+  if (auto fe = ev.find("fe"))
+    read_fe(*fe, e, evaluator);
   e.evaluate = ev;
 }
 

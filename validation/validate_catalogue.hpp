@@ -13,6 +13,21 @@ namespace magfem {
 
 enum class ValidationTier { quick, full };
 
+// An FE value solved to an accuracy (evaluate.fe with accuracy_pct): the adaptive loop
+// (pipeline/adapt_loop.hpp) refines from a coarse first mesh until the estimated error of
+// `quantity` (and the energy's) is below the tier's accuracy. Entries without one keep fixed
+// mesh scales (evaluate.fe.quick / full) and say why in evaluate.fe.reason.
+struct FeAccuracy {
+  double quick_pct = 0, full_pct = 0; // per tier; 0: no FE in that tier
+  std::string quantity;               // energy, probes.NAME or forces.NAME.COMPONENT
+  double start_scale = 1;             // mesh scale of the first pass
+  int max_passes = 10;
+  double max_unknowns = 4.0e6;
+  double pct(ValidationTier tier) const {
+    return tier == ValidationTier::quick ? quick_pct : full_pct;
+  }
+};
+
 struct CatalogueEntry {
   std::string id;
   std::string source;  // seed file, e.g. 003_8d5b5c90a0e7438f.txt
@@ -32,9 +47,11 @@ struct CatalogueEntry {
   std::string paper;                           // what the paper says (report paragraph)
   ValidationTier tier = ValidationTier::quick; // lowest tier that runs the entry
   std::string evaluator;
-  std::string evaluator_quantity;   // evaluate.quantity
-  std::string case_file;            // resolved path, empty if none
-  std::optional<YamlNode> evaluate; // the whole evaluate map (evaluator parameters)
+  std::string evaluator_quantity;        // evaluate.quantity
+  std::string case_file;                 // resolved path, empty if none
+  std::optional<YamlNode> evaluate;      // the whole evaluate map (evaluator parameters)
+  std::optional<FeAccuracy> fe_accuracy; // evaluate.fe asks for an accuracy (else mesh scales)
+  std::string fe_reason;                 // evaluate.fe.reason: why the accuracy, or the scales
   int line = 0;
 };
 
@@ -54,7 +71,8 @@ struct Catalogue {
 };
 
 // Reads and checks the catalogue: every field, unique ids, the evaluator and its quantity
-// known to the registry, case files present (paths relative to the catalogue's folder), and
+// known to the registry, case files present, an FE accuracy in (0, 100) % with a quantity the
+// case has and an evaluator that can adapt, (paths relative to the catalogue's folder), and
 // when the catalogue lists `sources`, every entry's source among them.
 // Throws InputError naming the entry id, file and line.
 Catalogue read_catalogue(const std::string& path);

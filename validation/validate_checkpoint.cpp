@@ -1,5 +1,8 @@
 #include "validation/validate_checkpoint.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace magfem {
 namespace {
 
@@ -37,6 +40,26 @@ std::vector<Plot> plots_from_json(const nlohmann::json& j) {
   return plots;
 }
 
+nlohmann::json adapt_to_json(const std::optional<FeAdaptOutcome>& a) {
+  if (!a)
+    return nullptr;
+  return {{"accuracy_pct", a->accuracy_pct},
+          {"passes", a->passes},
+          {"converged", a->converged},
+          {"stop_reason", a->stop_reason},
+          {"estimate_pct",
+           optional_number(std::isfinite(a->estimate_pct) ? std::optional<double>(a->estimate_pct)
+                                                          : std::nullopt)}};
+}
+
+std::optional<FeAdaptOutcome> adapt_from_json(const nlohmann::json& j) {
+  if (j.is_null())
+    return std::nullopt;
+  return FeAdaptOutcome{
+      j.at("accuracy_pct"), j.at("passes"), j.at("converged"), j.at("stop_reason"),
+      number_or_none(j.at("estimate_pct")).value_or(std::numeric_limits<double>::quiet_NaN())};
+}
+
 } // namespace
 
 nlohmann::json entry_to_checkpoint(const EntryResult& r) {
@@ -51,6 +74,9 @@ nlohmann::json entry_to_checkpoint(const EntryResult& r) {
           {"eval_fe", optional_number(r.eval.fe)},
           {"eval_analytic", optional_number(r.eval.analytic)},
           {"eval_fe_coarse", optional_number(r.eval.fe_coarse)},
+          {"eval_fe_adapt", adapt_to_json(r.eval.fe_adapt)},
+          {"eval_fe_unknowns",
+           r.eval.fe_unknowns ? nlohmann::json(*r.eval.fe_unknowns) : nlohmann::json(nullptr)},
           {"method", r.eval.method},
           // As text: an ordered_json keeps its key order only through its own dump.
           {"details", r.eval.details.dump()},
@@ -69,6 +95,9 @@ void entry_from_checkpoint(const nlohmann::json& j, EntryResult& r) {
   r.eval.fe = number_or_none(j.at("eval_fe"));
   r.eval.analytic = number_or_none(j.at("eval_analytic"));
   r.eval.fe_coarse = number_or_none(j.at("eval_fe_coarse"));
+  r.eval.fe_adapt = adapt_from_json(j.at("eval_fe_adapt"));
+  if (const auto& u = j.at("eval_fe_unknowns"); !u.is_null())
+    r.eval.fe_unknowns = u.get<long>();
   r.eval.method = j.at("method");
   r.eval.details = nlohmann::ordered_json::parse(j.at("details").get<std::string>());
   r.eval.plots = plots_from_json(j.at("plots"));

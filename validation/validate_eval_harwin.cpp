@@ -118,17 +118,19 @@ CaseSpec with_gap(CaseSpec spec, double a, double gap) {
   return spec;
 }
 
-GapField fe_gap_field(const EvalContext& ctx, double gap, double scale, nlohmann::ordered_json& d) {
+GapField fe_gap_field(const EvalContext& ctx, double gap, const FeMesh& mesh, EvalResult& r) {
   const double a = ctx.number("magnet_radius_mm") * 1e-3;
   const CaseSpec spec = with_gap(*cached_case(ctx.cache, ctx.entry.case_file), a, gap);
-  const auto fe = fe_probes(ctx.cache, spec, ctx.entry.case_file + ":gap" + std::to_string(gap), scale);
+  const auto fe =
+      fe_probes(ctx.cache, spec, ctx.entry.case_file + ":gap" + std::to_string(gap), mesh);
+  record_fe_solve(r, *fe);
   const auto& t = fe->probe("midgap");
   std::vector<double> br;
   for (const auto& row : t.rows)
     br.push_back(row[t.column("Br")]);
   auto desc = fe->describe();
   desc["gap_mm"] = gap * 1e3;
-  d["fe"].push_back(desc);
+  r.details["fe"].push_back(desc);
   return stats(br);
 }
 
@@ -150,8 +152,8 @@ EvalResult table1(const EvalContext& ctx) {
   EvalResult r;
   r.analytic = value(analytic);
   std::vector<double> fe;
-  for (double s : ctx.fe_scales())
-    fe.push_back(value([&](double g) { return fe_gap_field(ctx, g, s, r.details); }));
+  for (const FeMesh& m : ctx.fe_meshes())
+    fe.push_back(value([&](double g) { return fe_gap_field(ctx, g, m, r); }));
   if (!fe.empty()) {
     r.fe = fe.back();
     if (fe.size() > 1)
@@ -188,7 +190,7 @@ EvalResult table1(const EvalContext& ctx) {
 
 void register_harwin(std::map<std::string, Evaluator>& r) {
   r["harwin_fit_current"] = {"harwin_fit_current", {}, false, fit_current};
-  r["harwin_table1"] = {"harwin_table1", {"max_ratio", "max_over_mean"}, false, table1};
+  r["harwin_table1"] = {"harwin_table1", {"max_ratio", "max_over_mean"}, false, table1, true};
 }
 
 } // namespace magfem

@@ -13,7 +13,7 @@ namespace magfem {
 
 const char* const validation_csv_header =
     "id,source,section,quantity,unit,published,fe,analytic,tolerance_pct,fe_error_pct,"
-    "analytic_error_pct,status,seconds";
+    "analytic_error_pct,status,seconds,passes,unknowns,converged";
 
 namespace {
 
@@ -47,6 +47,24 @@ std::optional<double> tolerance(const EntryResult& r) {
   return r.entry->tolerance_pct;
 }
 
+// The adaptive FE columns: passes and converged are empty for a value on fixed mesh scales
+// (or no FE value); unknowns is the largest FE mesh behind the value either way.
+std::optional<double> passes(const EntryResult& r) {
+  if (!r.fe || !r.eval.fe_adapt)
+    return std::nullopt;
+  return r.eval.fe_adapt->passes;
+}
+std::optional<double> unknowns(const EntryResult& r) {
+  if (!r.fe || !r.eval.fe_unknowns)
+    return std::nullopt;
+  return static_cast<double>(*r.eval.fe_unknowns);
+}
+std::string converged(const EntryResult& r) {
+  if (!r.fe || !r.eval.fe_adapt)
+    return "";
+  return r.eval.fe_adapt->converged ? "yes" : "no";
+}
+
 std::map<std::string, int> counts(const ValidationRun& run) {
   std::map<std::string, int> c;
   for (const auto& r : run.results)
@@ -72,7 +90,10 @@ std::string validation_csv(const ValidationRun& run) {
                                             num(r.fe_error_pct, "%.4g"),
                                             num(r.analytic_error_pct, "%.4g"),
                                             r.status,
-                                            num(r.seconds, "%.2f")};
+                                            num(r.seconds, "%.2f"),
+                                            num(passes(r), "%.0f"),
+                                            num(unknowns(r), "%.0f"),
+                                            converged(r)};
     for (std::size_t i = 0; i < cells.size(); ++i) {
       if (i)
         out += ',';
@@ -125,6 +146,16 @@ std::string validation_json(const ValidationRun& run) {
       x["note"] = r.note;
     x["fe_coarse"] = opt(r.eval.fe_coarse);
     x["discretisation_pct"] = opt(r.discretisation_pct);
+    x["passes"] = opt(passes(r));
+    x["unknowns"] = opt(unknowns(r));
+    if (r.fe && r.eval.fe_adapt) {
+      x["converged"] = r.eval.fe_adapt->converged;
+      x["accuracy_pct"] = r.eval.fe_adapt->accuracy_pct;
+      if (!r.eval.fe_adapt->converged)
+        x["stop_reason"] = r.eval.fe_adapt->stop_reason;
+    }
+    if (!e.fe_reason.empty())
+      x["fe_reason"] = e.fe_reason;
     x["evaluator"] = e.evaluator;
     x["evaluator_quantity"] = e.evaluator_quantity;
     if (!e.case_file.empty())
@@ -163,8 +194,10 @@ std::string validation_markdown(const ValidationRun& run) {
            num(r.analytic_error_pct, "%.2g") + " | " + num(r.discretisation_pct, "%.2g") + " | " +
            (r.status == "fail" ? "**fail**" : r.status) + " |\n";
   }
-  out += "\nFE disc. %: change of the FE value from the next coarser mesh (discretisation error "
-         "estimate; points for entries whose value is a percentage). at_most entries (tol "
+  out += "\nFE disc. %: the FE value's discretisation error estimate (adaptive entries: the "
+         "refinement loop's estimate for the quantity it refines for; fixed mesh scales: the "
+         "change from the next coarser mesh; points for entries whose value is a percentage). "
+         "at_most entries (tol "
          "`<= x`) are error measures themselves: their error columns repeat the value.\n";
   std::string notes;
   for (const auto& r : run.results)

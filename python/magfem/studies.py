@@ -397,11 +397,14 @@ class ValidationResult:
 
     def table(self):
         """id and status as lists; published, fe, analytic, tolerance_pct, fe_error_pct,
-        analytic_error_pct and seconds as numpy arrays (NaN where an entry has none)."""
+        analytic_error_pct, seconds, passes and unknowns as numpy arrays (NaN where an entry
+        has none: passes for an FE value solved to an accuracy only) and converged as a list
+        (True, False, or None for no adaptive FE value), as in results.csv."""
         out = {"id": [r["id"] for r in self.rows], "status": [r["status"] for r in self.rows]}
         for key in ("published", "fe", "analytic", "tolerance_pct", "fe_error_pct",
-                    "analytic_error_pct", "seconds"):
+                    "analytic_error_pct", "seconds", "passes", "unknowns"):
             out[key] = np.array([np.nan if r[key] is None else r[key] for r in self.rows])
+        out["converged"] = [r.get("converged") for r in self.rows]
         return out
 
     def __repr__(self):

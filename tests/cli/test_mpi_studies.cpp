@@ -28,6 +28,7 @@
 #include "tests/case_helpers.hpp"
 #include "tests/cli/mpi_helpers.hpp"
 #include "tests/run_cli.hpp"
+#include "tests/validation_csv.hpp"
 
 namespace fs = std::filesystem;
 using magfem::test::CliOutcome;
@@ -208,16 +209,12 @@ std::string harwin_entries() {
   return "validate --source 000 --jobs 1";
 }
 
-// The outputs without what a rerun does not reproduce: every time (each entry's seconds, the
-// last CSV column; the JSON `seconds` of the entries and of the solves in their details; the
+// The outputs without what a rerun does not reproduce: every time (each entry's seconds, a
+// CSV column; the JSON `seconds` of the entries and of the solves in their details; the
 // run's wall time in results.json and the reports' "in N s"; the details the HTML report
 // shows).
 std::string csv_without_seconds(const fs::path& csv) {
-  std::stringstream in(text_of(csv));
-  std::string line, out;
-  while (std::getline(in, line))
-    out += line.substr(0, line.rfind(',')) + "\n";
-  return out;
+  return magfem::test::validation_csv_without_seconds(text_of(csv));
 }
 void erase_seconds(nlohmann::json& j) {
   if (j.is_object()) {

@@ -25,6 +25,7 @@
 #include "pipeline/run_checkpoint.hpp"
 #include "tests/case_helpers.hpp"
 #include "tests/test_paths.hpp"
+#include "tests/validation_csv.hpp"
 
 namespace fs = std::filesystem;
 
@@ -185,13 +186,10 @@ TEST(Interrupt, ResumeRefusesTheCheckpointOfADifferentRun) {
 
 namespace {
 
-// results.csv without its last column (seconds: the time of each entry, which a rerun does
-// not reproduce).
+// results.csv without its seconds column (the time of each entry, which a rerun does not
+// reproduce).
 std::string results_without_seconds(const fs::path& csv) {
-  std::stringstream in(text_of(csv)), out;
-  for (std::string line; std::getline(in, line);)
-    out << line.substr(0, line.rfind(',')) << "\n";
-  return out.str();
+  return magfem::test::validation_csv_without_seconds(text_of(csv));
 }
 
 int run_validate(const fs::path& out, bool resume) {

@@ -362,6 +362,11 @@ class Validate(unittest.TestCase):
         self.assertEqual(table["id"], [self.ENTRY])
         # The FE ratio within the entry's tolerance of the published one (the row's own check).
         self.assertLess(abs(table["fe_error_pct"][0]), table["tolerance_pct"][0])
+        # Solved to the entry's accuracy: more than one pass (the first has no estimate of the
+        # probe's error), converged, on a mesh of some size.
+        self.assertGreater(table["passes"][0], 1)
+        self.assertEqual(table["converged"], [True])
+        self.assertGreater(table["unknowns"][0], 0)
 
     def test_bad_arguments_name_the_field(self):
         for kwargs, field in [(dict(tier="slow"), "tier"), (dict(entries=["no.such"]), "--only"),
