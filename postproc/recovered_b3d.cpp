@@ -8,6 +8,7 @@
 
 #include "core/parallel_scatter.hpp"
 #include "core/thread_count.hpp"
+#include "postproc/element_field3d.hpp"
 #include "solver/tet_lagrange.hpp"
 
 namespace magfem {
@@ -73,8 +74,9 @@ RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
                                            mesh.nodes[tet[2]], mesh.nodes[tet[3]])
                                .volume;
         const int* dof = dofs_->element_dofs(t);
+        const ElementField3D element(field, t);
         for (int i = 0; i < n; ++i) {
-          const Eigen::Vector3d b = vol * field.B_at_node(t, i);
+          const Eigen::Vector3d b = vol * element.B_at_node(i);
           double* o = out + 5 * i;
           o[0] = b.x(), o[1] = b.y(), o[2] = b.z(), o[3] = vol;
           o[4] = slot(dof[i], mesh.tet_part[t]);
