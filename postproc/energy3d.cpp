@@ -6,6 +6,7 @@
 #include "core/constants.hpp"
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "postproc/element_field3d.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/tet_lagrange.hpp"
@@ -40,22 +41,23 @@ ElementEnergy element_energy(const Field3D& field, std::size_t t) {
   const bool in_shell = problem.is_shell(t);
   const Material& mat = *problem.physics(mesh.tet_part[t]).material;
   ElementEnergy e;
+  const ElementField3D element(field, t); // the tet's geometry once for its 24 points
   // Curved (isoparametric) tets: the volume element varies over the tet.
   const auto& rule = tet_rule(SourceFieldTable3D::rule_degree);
   for (int qi = 0; qi < static_cast<int>(rule.size()); ++qi) {
     const TetQuadPoint& q = rule[qi];
-    const double dv = q.weight * field.volume_density(t, q.bary);
-    const Eigen::Vector3d h = field.H_at(t, qi);
+    ElementField3D::Point p;
+    const Eigen::Vector3d h = element.H_at(qi, p);
+    const double dv = q.weight * p.density;
     double w = 0;
     if (!in_shell) {
       w = energy_density(mat, h);
     } else if (problem.source && problem.source->active()) {
       // Physical H' = H_s(x') + J^-1 (-grad phi), energy density times |det J|.
-      const Eigen::Vector3d x = field.point(t, q.bary);
-      const Eigen::Vector3d hp = problem.source->table.H(t, qi) + shell.inverse_jacobian(x) * h;
-      w = 0.5 * mu0 * hp.squaredNorm() * shell.det_jacobian(x);
+      const Eigen::Vector3d hp = problem.source->table.H(t, qi) + shell.inverse_jacobian(p.x) * h;
+      w = 0.5 * mu0 * hp.squaredNorm() * shell.det_jacobian(p.x);
     } else {
-      w = 0.5 * mu0 * h.dot(shell.metric<3>(field.point(t, q.bary)) * h);
+      w = 0.5 * mu0 * h.dot(shell.metric<3>(p.x) * h);
     }
     e.volume += dv;
     e.energy += dv * w;
@@ -64,7 +66,7 @@ ElementEnergy element_energy(const Field3D& field, std::size_t t) {
     return e;
   const int n_nodes = field.dofs().dofs_per_element();
   for (int i = 0; i < n_nodes; ++i)
-    e.peak_B = std::max(e.peak_B, field.B_at_node(t, i).norm());
+    e.peak_B = std::max(e.peak_B, element.B_at_node(i).norm());
   return e;
 }
 

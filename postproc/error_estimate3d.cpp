@@ -5,6 +5,7 @@
 #include "core/constants.hpp"
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "postproc/element_field3d.hpp"
 #include "solver/shell_transform.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -31,8 +32,9 @@ double element_eta2(const PatchRecovery3D& rec, std::size_t t) {
   const int n = rec.nodal_values(t, g_star);
   const std::array<Eigen::Vector3d, 4>& corner = rec.corners(t); // unused if curved
   double mu = 0, dmu = 0;
-  mat.permeability(0, mu, dmu); // linear media and magnets: the same mu at any H
-  const double volume = curved ? 0 : field.volume_density(t, {0.25, 0.25, 0.25, 0.25});
+  mat.permeability(0, mu, dmu);           // linear media and magnets: the same mu at any H
+  const ElementField3D element(field, t); // curved tets: the 14 points share its geometry
+  const double volume = curved ? 0 : element.at({0.25, 0.25, 0.25, 0.25}).density;
   double sum = 0;
   for (const auto& q : tet_rule(rule_degree)) {
     const auto& l = q.bary;
@@ -44,23 +46,25 @@ double element_eta2(const PatchRecovery3D& rec, std::size_t t) {
     // The coils' H_s (exact) cancels in H* - H_h. The law needs the total H only in
     // nonlinear iron, and iron is a total region (coil_source3d.hpp), where G_h is H_h; in
     // reduced regions (air, magnets: linear) B(h + d) - B(h) = mu d whatever h.
-    const Eigen::Vector3d h = curved ? rec.G_h(t, l)
+    ElementField3D::Point p;
+    if (curved || in_shell || mat.is_nonlinear())
+      p = element.at(l);
+    const Eigen::Vector3d h = curved ? Eigen::Vector3d(-p.grad_phi)
                                      : Eigen::Vector3d(l[0] * corner[0] + l[1] * corner[1] +
                                                        l[2] * corner[2] + l[3] * corner[3]);
     const Eigen::Vector3d d = g - h;
-    const double dv = q.weight * (curved ? field.volume_density(t, l) : volume);
+    const double dv = q.weight * (curved ? p.density : volume);
     if (in_shell) {
       // The mapped exterior: the physical error J^-1 d over dV' = |det J| dV carries the
       // metric T = |det J| J^-1 J^-T, as in the shell's stiffness (assembler3d.cpp).
-      sum += dv * mu0 * d.dot(shell.metric<3>(field.point(t, l)) * d);
+      sum += dv * mu0 * d.dot(shell.metric<3>(p.x) * d);
       continue;
     }
     if (!mat.is_nonlinear()) {
       sum += dv * mu * d.squaredNorm();
       continue;
     }
-    const Eigen::Vector3d x = field.point(t, l);
-    sum += dv * (field.B_of_H(t, x, h + d) - field.B_of_H(t, x, h)).dot(d);
+    sum += dv * (field.B_of_H(t, p.x, h + d) - field.B_of_H(t, p.x, h)).dot(d);
   }
   return sum;
 }

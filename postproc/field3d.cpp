@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "core/constants.hpp"
+#include "postproc/element_field3d.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -22,23 +23,16 @@ std::array<Eigen::Vector3d, 10> node_points(const DofMap3D& dofs, std::size_t t)
 } // namespace
 
 Eigen::Vector3d Field3D::point(std::size_t t, const std::array<double, 4>& bary) const {
-  if (dofs_.is_curved(t)) {
-    std::array<Eigen::Vector3d, 10> grad;
-    Eigen::Vector3d x;
-    tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
-    return x;
-  }
+  if (dofs_.is_curved(t))
+    return tet_iso_point(node_points(dofs_, t), bary);
   const auto& tet = problem_.mesh->tets[t];
   const auto& p = problem_.mesh->nodes;
   return bary[0] * p[tet[0]] + bary[1] * p[tet[1]] + bary[2] * p[tet[2]] + bary[3] * p[tet[3]];
 }
 
 double Field3D::volume_density(std::size_t t, const std::array<double, 4>& bary) const {
-  if (dofs_.is_curved(t)) {
-    std::array<Eigen::Vector3d, 10> grad;
-    Eigen::Vector3d x;
-    return tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
-  }
+  if (dofs_.is_curved(t))
+    return tet_iso_density(node_points(dofs_, t), bary);
   const auto& tet = problem_.mesh->tets[t];
   const auto& p = problem_.mesh->nodes;
   return TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]).volume;
@@ -55,24 +49,7 @@ double Field3D::potential(std::size_t t, const std::array<double, 4>& bary) cons
 }
 
 Eigen::Vector3d Field3D::grad_potential(std::size_t t, const std::array<double, 4>& bary) const {
-  const auto& tet = problem_.mesh->tets[t];
-  const auto& p = problem_.mesh->nodes;
-  const auto g = TetGeometry::of(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]);
-  std::array<Eigen::Vector3d, 10> grad;
-  int count = 10;
-  if (dofs_.is_curved(t)) {
-    Eigen::Vector3d x;
-    tet_iso_gradients(node_points(dofs_, t), bary, grad.data(), x);
-  } else {
-    count = tet_gradients(dofs_.order(), g, bary, grad.data());
-  }
-  const int* dof = dofs_.element_dofs(t);
-  const CoilSource3D* src = problem_.source;
-  const bool total = src && src->active() && src->is_total(t);
-  Eigen::Vector3d grad_phi = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i)
-    grad_phi += (phi_[dof[i]] + (total ? src->offset[dof[i]] : 0.0)) * grad[i];
-  return grad_phi;
+  return ElementField3D(*this, t).at(bary).grad_phi;
 }
 
 bool Field3D::adds_source(std::size_t t) const {
@@ -87,23 +64,18 @@ Eigen::Vector3d Field3D::H(std::size_t t, const std::array<double, 4>& bary) con
 }
 
 Eigen::Vector3d Field3D::H_at(std::size_t t, int q) const {
-  const auto& bary = tet_rule(SourceFieldTable3D::rule_degree)[q].bary;
-  if (adds_source(t))
-    return problem_.source->table.H(t, q) - grad_potential(t, bary);
-  return -grad_potential(t, bary);
+  ElementField3D::Point p;
+  return ElementField3D(*this, t).H_at(q, p);
 }
 
 Eigen::Vector3d Field3D::B_at_node(std::size_t t, int i) const {
-  const auto& bary = tet_dof_nodes[i];
-  Eigen::Vector3d h = -grad_potential(t, bary);
-  if (adds_source(t))
-    h += problem_.source->table.H_at_dof(dofs_.element_dofs(t)[i]);
-  return B_of_H(t, point(t, bary), h);
+  return ElementField3D(*this, t).B_at_node(i);
 }
 
 Eigen::Vector3d Field3D::B_at(std::size_t t, int q) const {
-  const auto& bary = tet_rule(SourceFieldTable3D::rule_degree)[q].bary;
-  return B_of_H(t, point(t, bary), H_at(t, q));
+  ElementField3D::Point p;
+  const Eigen::Vector3d h = ElementField3D(*this, t).H_at(q, p);
+  return B_of_H(t, p.x, h);
 }
 
 int Field3D::shape_gradients(std::size_t t, const std::array<double, 4>& bary,

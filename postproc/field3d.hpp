@@ -54,10 +54,12 @@ public:
   Eigen::Vector3d interpolate(const std::vector<Eigen::Vector3d>& nodal, std::size_t t,
                               const std::array<double, 4>& bary) const;
 
+  // Reduced tet outside the shell, with coils: H adds the coils' source field.
+  bool adds_source(std::size_t t) const;
+
 private:
   // grad of the potential (u, plus the source potential in total regions) at bary.
   Eigen::Vector3d grad_potential(std::size_t t, const std::array<double, 4>& bary) const;
-  bool adds_source(std::size_t t) const; // reduced tet outside the shell, with coils
 
   const Problem3D& problem_;
   const DofMap3D& dofs_;

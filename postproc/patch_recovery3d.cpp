@@ -9,6 +9,7 @@
 
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "postproc/element_field3d.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -125,6 +126,13 @@ void PatchRecovery3D::build_slots() {
   }
 }
 
+// A DOF inside one region has one slot: the asking tet's (which holds the DOF), without
+// reading the slot's region, a cache miss per DOF (3 % of benchmark32's run when every
+// lookup of the recovery read it).
+int PatchRecovery3D::own_slot(int dof, int part) const {
+  return first_[dof + 1] - first_[dof] == 1 ? first_[dof] : slot(dof, part);
+}
+
 int PatchRecovery3D::slot(int dof, int part) const {
   for (int s = first_[dof]; s < first_[dof + 1]; ++s)
     if (part_[s] == part)
@@ -133,19 +141,7 @@ int PatchRecovery3D::slot(int dof, int part) const {
 }
 
 Eigen::Vector3d PatchRecovery3D::G_h(std::size_t t, const std::array<double, 4>& bary) const {
-  const Problem3D& problem = field_.problem();
-  const DofMap3D& dofs = field_.dofs();
-  std::array<Eigen::Vector3d, 10> grad;
-  Eigen::Vector3d x;
-  const int count = field_.shape_gradients(t, bary, grad, x);
-  const int* dof = dofs.element_dofs(t);
-  // Total regions: the source potential is part of the FE potential (as in Field3D).
-  const CoilSource3D* src = problem.source;
-  const bool total = src && src->active() && src->is_total(t);
-  Eigen::Vector3d g = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i)
-    g -= (field_.phi()[dof[i]] + (total ? src->offset[dof[i]] : 0.0)) * grad[i];
-  return g;
+  return -ElementField3D(field_, t).at(bary).grad_phi;
 }
 
 PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(field) {
@@ -172,38 +168,54 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
         at_tets[fill[v]++] = static_cast<int>(t);
   }
 
-  // G_h at the corners of every straight tet, once: there it is linear in the barycentric
-  // coordinates (constant for order 1), so the ~20 patches a tet belongs to interpolate
-  // their points from 96 bytes a tet instead of recomputing them (kept: the indicator reads
-  // them again). Curved tets (few: on spheres) are evaluated where needed.
-  std::vector<std::array<Eigen::Vector3d, 4>>& corner = corner_;
-  corner.resize(mesh.n_tets());
-  parallel_blocks(mesh.n_tets(), 4096, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
-    for (std::size_t t = lo; t < hi; ++t)
-      if (!dofs.is_curved(t))
-        for (int i = 0; i < 4; ++i)
-          corner[t][i] = G_h(t, tet_dof_nodes[i]);
-  });
   // The 4-point rule of degree 2 for both orders: exact for order 1's normal equations;
   // for order 2 (quartic matrix entries) the 14-point degree-5 rule is exact, but on the
   // magnetized-sphere tests it moved the effectivity by under 0.5 % (1.024 -> 1.020, 1.000
   // -> 0.995) at 3.5x the cost, and the fits are most of the estimator's time.
   const auto& rule = tet_rule(2);
+  // What the ~20 patches a tet belongs to read from it, computed once per tet: G_h at the
+  // corners of a straight tet (linear in the barycentric coordinates there, constant for
+  // order 1; kept: the indicator reads them again) and its volume; the samples themselves
+  // of a curved tet (on spheres, 15 % of benchmark32's tets, whose isoparametric gradients
+  // were half the estimator's time when every patch recomputed them).
+  std::vector<std::array<Eigen::Vector3d, 4>>& corner = corner_;
+  corner.resize(mesh.n_tets());
+  std::vector<double> volume(mesh.n_tets(), 0.0);
+  std::vector<int> curved_index(mesh.n_tets(), -1);
+  int n_curved = 0;
+  for (std::size_t t = 0; t < mesh.n_tets(); ++t)
+    if (dofs.is_curved(t))
+      curved_index[t] = n_curved++;
+  std::vector<std::array<Sample, 4>> curved_samples(static_cast<std::size_t>(n_curved));
+  parallel_blocks(mesh.n_tets(), 4096, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
+    for (std::size_t t = lo; t < hi; ++t) {
+      const ElementField3D element(field, t);
+      if (curved_index[t] < 0) {
+        for (int i = 0; i < 4; ++i)
+          corner[t][i] = -element.at(tet_dof_nodes[i]).grad_phi;
+        volume[t] = element.at(tet_dof_nodes[0]).density;
+        continue;
+      }
+      for (std::size_t i = 0; i < rule.size(); ++i) {
+        const ElementField3D::Point p = element.at(rule[i].bary);
+        curved_samples[curved_index[t]][i] = {p.x, -p.grad_phi, rule[i].weight * p.density};
+      }
+    }
+  });
   auto add_samples = [&](std::size_t t, std::vector<Sample>& out) {
-    const bool curved = dofs.is_curved(t);
+    if (curved_index[t] >= 0) {
+      const auto& own = curved_samples[curved_index[t]];
+      out.insert(out.end(), own.begin(), own.end());
+      return;
+    }
     const auto& k = mesh.tets[t];
     for (const auto& q : rule) {
       const auto& l = q.bary;
       Sample s;
-      s.w = q.weight * field.volume_density(t, l);
-      if (curved) {
-        s.x = field.point(t, l);
-        s.g = G_h(t, l);
-      } else {
-        s.x = l[0] * mesh.nodes[k[0]] + l[1] * mesh.nodes[k[1]] + l[2] * mesh.nodes[k[2]] +
-              l[3] * mesh.nodes[k[3]];
-        s.g = l[0] * corner[t][0] + l[1] * corner[t][1] + l[2] * corner[t][2] + l[3] * corner[t][3];
-      }
+      s.w = q.weight * volume[t];
+      s.x = l[0] * mesh.nodes[k[0]] + l[1] * mesh.nodes[k[1]] + l[2] * mesh.nodes[k[2]] +
+            l[3] * mesh.nodes[k[3]];
+      s.g = l[0] * corner[t][0] + l[1] * corner[t][1] + l[2] * corner[t][2] + l[3] * corner[t][3];
       out.push_back(s);
     }
   };
@@ -252,7 +264,8 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
     const auto ends = dofs.edge_ends(d);
     const Eigen::Vector3d& x = dofs.dof_points()[d];
     for (int s = first_[d]; s < first_[d + 1]; ++s)
-      value_[s] = 0.5 * (fits[slot(ends[0], part_[s])].at(x) + fits[slot(ends[1], part_[s])].at(x));
+      value_[s] =
+          0.5 * (fits[own_slot(ends[0], part_[s])].at(x) + fits[own_slot(ends[1], part_[s])].at(x));
   }
   keep_radial_at_infinity();
 }
@@ -277,7 +290,7 @@ int PatchRecovery3D::nodal_values(std::size_t t, std::array<Eigen::Vector3d, 10>
   const int part = field_.problem().mesh->tet_part[t];
   const int n = dofs.dofs_per_element();
   for (int i = 0; i < n; ++i)
-    out[i] = value_[slot(dof[i], part)];
+    out[i] = value_[own_slot(dof[i], part)];
   return n;
 }
 
@@ -289,7 +302,7 @@ Eigen::Vector3d PatchRecovery3D::G(std::size_t t, const std::array<double, 4>& b
   const int part = field_.problem().mesh->tet_part[t];
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)
-    g += n[i] * value_[slot(dof[i], part)];
+    g += n[i] * value_[own_slot(dof[i], part)];
   return g;
 }
 

@@ -83,6 +83,8 @@ private:
   void build_slots();
   void keep_radial_at_infinity();    // n x G* = 0 on the open boundary's outer sphere
   int slot(int dof, int part) const; // -1 if region part does not touch dof
+  // The slot of region `part` at `dof` for a tet of that region holding the DOF.
+  int own_slot(int dof, int part) const;
 
   const Field3D& field_;
   std::vector<int> first_;             // per DOF: its slots first_[d] .. first_[d + 1] - 1

@@ -47,6 +47,8 @@ public:
 
 private:
   int slot(int dof, int part) const; // -1 if region `part` does not touch `dof`
+  // The slot of region `part` at `dof` for a tet of that region holding the DOF.
+  int own_slot(int dof, int part) const;
   void build_slots(const Problem3D& problem);
 
   const Mesh3D* mesh_ = nullptr;

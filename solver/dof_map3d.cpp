@@ -167,15 +167,12 @@ double DofMap3D::min_jacobian_ratio(std::size_t t) const {
   std::array<Eigen::Vector3d, 10> straight = x;
   for (int e = 0; e < 6; ++e)
     straight[4 + e] = 0.5 * (x[tet_edges[e][0]] + x[tet_edges[e][1]]);
-  std::array<Eigen::Vector3d, 10> grad;
-  Eigen::Vector3d point;
-  const double volume = tet_iso_gradients(straight, {0.25, 0.25, 0.25, 0.25}, grad.data(), point);
-  std::vector<std::array<double, 4>> samples(tet_dof_nodes.begin(), tet_dof_nodes.end());
-  for (const TetQuadPoint& q : tet_rule(5))
-    samples.push_back(q.bary);
+  const double volume = tet_iso_density(straight, {0.25, 0.25, 0.25, 0.25});
   double least = std::numeric_limits<double>::infinity();
-  for (const auto& l : samples)
-    least = std::min(least, tet_iso_gradients(x, l, grad.data(), point) / volume);
+  for (const auto& l : tet_dof_nodes)
+    least = std::min(least, tet_iso_density(x, l) / volume);
+  for (const TetQuadPoint& q : tet_rule(5))
+    least = std::min(least, tet_iso_density(x, q.bary) / volume);
   return least;
 }
 

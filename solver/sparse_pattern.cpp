@@ -36,24 +36,33 @@ EquationElements elements_of_equations(int n_eqs, const std::vector<int>& elemen
 // Built column by column from the elements that share each equation, on all cores: the
 // triplet sort this replaces took 5 s of the 32-magnet benchmark's 14 s assembly (1.7 M P2
 // tetrahedra). Columns are cut into fixed blocks, so the pattern does not depend on the
-// thread count.
+// thread count. The scatter table is filled as each column is built, from the rows'
+// positions in it (a binary search per element entry afterwards, over columns scattered in
+// memory, was a third of the pattern's time), first relative to the column's block and
+// then shifted once the blocks' offsets are known.
 SparsePattern::SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int per_element)
     : per_element_(per_element) {
   const std::size_t n_elements = element_eqs.size() / per_element;
+  const std::size_t pe2 = static_cast<std::size_t>(per_element) * per_element;
   const EquationElements owners = elements_of_equations(n_eqs, element_eqs, per_element);
   const std::size_t block = 4096;
   const std::size_t n_blocks = block_count(static_cast<std::size_t>(n_eqs), block);
   std::vector<std::vector<int>> rows(n_blocks);               // the rows of a block's columns
   std::vector<int> count(static_cast<std::size_t>(n_eqs), 0); // entries per column
+  slot_.resize(n_elements * pe2);
   const int threads = available_threads();
   // mark[row] == column + 1 once `row` is in the column: duplicates (an equation shared by
-  // the ~20 elements around a vertex) are dropped before the sort, not by it.
-  std::vector<std::vector<int>> marks(threads);
+  // the ~20 elements around a vertex) are dropped before the sort, not by it. position[row]:
+  // where the row went in its block's list, for the current column.
+  std::vector<std::vector<int>> marks(threads), positions(threads);
   parallel_blocks_by_worker(
       n_eqs, block, threads, [&](int worker, std::size_t b, std::size_t lo, std::size_t hi) {
         std::vector<int>& mark = marks[worker];
-        if (mark.empty())
+        std::vector<int>& position = positions[worker];
+        if (mark.empty()) {
           mark.assign(static_cast<std::size_t>(n_eqs), 0);
+          position.resize(static_cast<std::size_t>(n_eqs));
+        }
         std::vector<int> column;
         for (std::size_t j = lo; j < hi; ++j) {
           column.clear();
@@ -67,11 +76,25 @@ SparsePattern::SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int
               }
           }
           std::sort(column.begin(), column.end());
+          const auto base = static_cast<int>(rows[b].size());
+          for (std::size_t r = 0; r < column.size(); ++r)
+            position[column[r]] = base + static_cast<int>(r);
           count[j] = static_cast<int>(column.size());
           rows[b].insert(rows[b].end(), column.begin(), column.end());
+          // column j, row eq[i] >= j (column-major storage) of every element holding j
+          for (std::size_t k = owners.start[j]; k < owners.start[j + 1]; ++k) {
+            const std::size_t e = owners.element[k];
+            const int* eq = &element_eqs[e * per_element];
+            for (int jj = 0; jj < per_element; ++jj)
+              if (eq[jj] == static_cast<int>(j))
+                for (int i = 0; i < per_element; ++i)
+                  if (eq[i] >= static_cast<int>(j))
+                    slot_[e * pe2 + i * per_element + jj] = position[eq[i]];
+          }
         }
       });
   marks = {};
+  positions = {};
 
   matrix_.resize(n_eqs, n_eqs);
   std::size_t nnz = 0;
@@ -87,19 +110,17 @@ SparsePattern::SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int
     std::copy(rows[b].begin(), rows[b].end(), inner + outer[b * block]);
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + nnz, 0.0);
 
-  slot_.assign(n_elements * per_element * per_element, -1);
   parallel_blocks(n_elements, block, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     for (std::size_t e = lo; e < hi; ++e) {
       const int* eq = &element_eqs[e * per_element];
+      int* slot = &slot_[e * pe2];
       for (int i = 0; i < per_element; ++i)
         for (int j = 0; j < per_element; ++j) {
+          int& s = slot[i * per_element + j];
           if (eq[i] < 0 || eq[j] < 0 || eq[i] < eq[j])
-            continue;
-          // column eq[j], row eq[i] (column-major storage)
-          const int* begin = inner + outer[eq[j]];
-          const int* end = inner + outer[eq[j] + 1];
-          const int* it = std::lower_bound(begin, end, eq[i]);
-          slot_[(e * per_element + i) * per_element + j] = static_cast<int>(it - inner);
+            s = -1;
+          else
+            s += outer[(static_cast<std::size_t>(eq[j]) / block) * block];
         }
     }
   });

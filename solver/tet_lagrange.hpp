@@ -82,24 +82,47 @@ inline int tet_gradients(int order, const TetGeometry& g, const std::array<doubl
 }
 
 // Isoparametric order-2 map of a curved tet from its 10 node positions x (vertices, then edge
-// nodes, which may lie off the edge midpoints). At barycentric point L: the physical
-// gradients of the 10 shape functions, the physical point, and the return value det J /
-// 6, the volume element relative to the barycentric measure (the straight tet's volume
-// when the edge nodes are midpoints).
+// nodes, which may lie off the edge midpoints), at barycentric point L: the physical point,
+// the Jacobian dx / dxi (with the reference gradients of the 10 shape functions in g_ref),
+// and from them tet_iso_gradients. The point and the volume element alone skip the inverse:
+// post-processing asks for them at far more points than for the gradients.
+inline Eigen::Vector3d tet_iso_point(const std::array<Eigen::Vector3d, 10>& x,
+                                     const std::array<double, 4>& L) {
+  std::array<double, 10> n{};
+  tet_values(2, L, n.data());
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 10; ++i)
+    point += n[i] * x[i];
+  return point;
+}
+
+inline Eigen::Matrix3d tet_iso_jacobian(const std::array<Eigen::Vector3d, 10>& x,
+                                        const std::array<double, 4>& L,
+                                        std::array<Eigen::Vector3d, 10>& g_ref) {
+  static const TetGeometry reference = TetGeometry::of({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  tet_gradients(2, reference, L, g_ref.data());
+  Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 10; ++i)
+    j += x[i] * g_ref[i].transpose();
+  return j;
+}
+
+// det J / 6: the volume element relative to the barycentric measure (the straight tet's
+// volume when the edge nodes are midpoints).
+inline double tet_iso_density(const std::array<Eigen::Vector3d, 10>& x,
+                              const std::array<double, 4>& L) {
+  std::array<Eigen::Vector3d, 10> g_ref;
+  return tet_iso_jacobian(x, L, g_ref).determinant() / 6.0;
+}
+
+// The physical gradients of the 10 shape functions, the physical point, and the return value
+// det J / 6 (tet_iso_density).
 inline double tet_iso_gradients(const std::array<Eigen::Vector3d, 10>& x,
                                 const std::array<double, 4>& L, Eigen::Vector3d* grad,
                                 Eigen::Vector3d& point) {
-  static const TetGeometry reference = TetGeometry::of({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
   std::array<Eigen::Vector3d, 10> g_ref;
-  tet_gradients(2, reference, L, g_ref.data());
-  std::array<double, 10> n{};
-  tet_values(2, L, n.data());
-  Eigen::Matrix3d j = Eigen::Matrix3d::Zero(); // dx / dxi
-  point.setZero();
-  for (int i = 0; i < 10; ++i) {
-    j += x[i] * g_ref[i].transpose();
-    point += n[i] * x[i];
-  }
+  const Eigen::Matrix3d j = tet_iso_jacobian(x, L, g_ref);
+  point = tet_iso_point(x, L);
   const Eigen::Matrix3d inv_t = j.inverse().transpose();
   for (int i = 0; i < 10; ++i)
     grad[i] = inv_t * g_ref[i];
