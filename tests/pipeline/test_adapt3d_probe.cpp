@@ -67,14 +67,17 @@ std::unique_ptr<Run3D> solve_with(const CaseSpec& spec, std::vector<SizeSample3D
 
 // One pass planned from the same coarse first mesh two ways: with the probe's goal (energy
 // aimed at 0.1 %, the probe at 0.5 % rms pointwise) and by the energy alone, aimed low enough
-// (0.006 %) to spend at least as many unknowns. Measured (order 2): first mesh 22.1k unknowns,
-// probe error 2.17 % true, 4.04 % estimated; goal 122k unknowns, 0.38 % true, 0.50 %
-// estimated; energy alone 139k unknowns, 0.61 % true (at 107k: 0.75 %). Planted: the probe
-// rule not applied (apply_probe_rule returning at once): the goal pass is the energy's 0.1 %
-// pass, 52k unknowns and 1.41 % true, and the comparison fails.
+// (0.0125 %) to spend more unknowns. Measured (order 2): first mesh 22.1k unknowns, probe
+// error 2.17 % true, 4.04 % estimated; goal 66.1k unknowns, 0.70 % true, 1.03 % estimated;
+// energy alone 107k unknowns, 0.75 % true (at 84k 0.99 %, at 139k 0.61 %). So the goal
+// reaches the energy rule's error with 1.6x fewer unknowns; asserted: 1.5x fewer and a lower
+// error (margins 8 % and 7 %; the meshes are deterministic). Planted: the probe rule not
+// applied (apply_probe_rule returning at once): the goal pass is the energy's 0.1 % pass, 52k
+// unknowns and 1.41 % true, and the error comparison fails.
 // The estimate's effectivity (estimated / true, both rms over the 40 points) is held to
 // issue 29's 3x both ways on both meshes: it is the tet's rms of |B* - B_h| where the probe
-// reads the recovered nodal B, an upper-side estimate (measured 1.86 and 1.32).
+// reads the recovered nodal B, an upper-side estimate (measured 1.86 and 1.46). Planted: mu
+// dropped from e_K (1658x).
 TEST(Adapt3DProbe, GoalRefinesAtTheProbeAndItsEstimateHolds) {
   const CaseSpec spec = probe_spec();
   const auto quantities = resolve_adapt_quantities(spec);
@@ -83,17 +86,15 @@ TEST(Adapt3DProbe, GoalRefinesAtTheProbeAndItsEstimateHolds) {
   ASSERT_EQ(goals.size(), 1u);
   ASSERT_EQ(goals[0].point_tets.size(), 40u);
   const auto goal = solve_with(spec, adapted_size_samples_3d(*first, 0.1, true, goals, 0.5));
-  const auto energy = solve_with(spec, adapted_size_samples_3d(*first, 0.006, true));
+  const auto energy = solve_with(spec, adapted_size_samples_3d(*first, 0.0125, true));
   const double goal_true = true_probe_error_pct(*goal), energy_true = true_probe_error_pct(*energy);
   std::cout << "first " << first->dofs->n_dofs() << " unknowns: " << true_probe_error_pct(*first)
             << " % true, " << goals[0].error_pct << " % estimated\ngoal " << goal->dofs->n_dofs()
             << ": " << goal_true << " %, " << probe_goals_3d(*goal, quantities)[0].error_pct
             << " % estimated\nenergy alone " << energy->dofs->n_dofs() << ": " << energy_true
             << " %\n";
-  EXPECT_LE(goal->dofs->n_dofs(), energy->dofs->n_dofs());
-  // 0.75: the measured ratio is 0.62; a goal rule that merely matched the energy's would
-  // read about 1 at equal unknowns.
-  EXPECT_LT(goal_true, 0.75 * energy_true);
+  EXPECT_LE(1.5 * goal->dofs->n_dofs(), energy->dofs->n_dofs());
+  EXPECT_LT(goal_true, energy_true);
   for (const Run3D* run : {first.get(), goal.get()}) {
     const double effectivity =
         probe_goals_3d(*run, quantities)[0].error_pct / true_probe_error_pct(*run);
