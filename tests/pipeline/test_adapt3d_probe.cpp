@@ -15,20 +15,11 @@ using namespace magfem;
 
 namespace {
 
-// The coarse sphere of test_adapt3d.cpp (a = 10 mm, B_r = 1 T; 22k P2 unknowns) with a patch
-// of 40 points at r = 12 mm, 2 mm outside the magnet, over an eighth of its surface.
-const std::string probe_sphere_case =
-    test::magnetized_sphere_case3d("4") + R"(boundary: {type: open, radius: 25, shell_ratio: 1.5}
-mesh: {size: 8, chord_tolerance: 0.5}
-solver: {order: 2}
-probes:
-  - {name: patch, type: sphere, radius: 12, theta: [30, 60], phi: [0, 90], step: 10}
-adapt: {accuracy_pct: 0.2, quantities: [probes.patch], max_passes: 3}
-)";
-
+// examples/3d/magnetized_sphere_probe_adaptive.yaml: the coarse sphere of test_adapt3d.cpp
+// (a = 10 mm, B_r = 1 T; 22k P2 unknowns) with a patch of 40 points at r = 12 mm, 2 mm
+// outside the magnet, over an eighth of its surface, named in adapt.quantities.
 CaseSpec probe_spec() {
-  const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  return read_case(test::write_temp_case("adapt3d_probe_" + name + ".yaml", probe_sphere_case));
+  return read_case(test::example("3d/magnetized_sphere_probe_adaptive.yaml"));
 }
 
 // The exact B (T) outside a sphere of radius a = 10 mm magnetized along z with B_r = 1 T: the
