@@ -43,9 +43,11 @@ struct ProbeGoal3D {
   double error_pct = 0;
 };
 
-// Vertex-sharing rings around a probe's tets that take the probe's size rule. One: on
-// benchmark32 (r56, from --mesh-scale 3) one ring is 11 % of the tets, and a second ring added
-// unknowns faster than it took error off the table.
+// Vertex-sharing rings around a probe's tets that take the probe's size rule. One ring is
+// 11 % of the tets of benchmark32 at --mesh-scale 3 (r56, 2116 points). Not measured apart:
+// two rings with the 0.3 clamp and the energy rule beside it reached r56 at 0.51-0.56 %
+// pointwise with 2.57M unknowns in two passes; one ring, 0.5 and the rule below, 0.36-0.43 %
+// with 1.90M in three.
 inline constexpr int probe_zone_rings = 1;
 
 // The goals of the probe quantities among `quantities` (others are skipped), in order.
@@ -58,9 +60,9 @@ std::vector<ProbeGoal3D> probe_goals_3d(const Run3D& run,
 // tet. Tets in a goal's zone take the smaller of that and the probe rule
 //   h_new = h * clamp((e_target / e_K)^(1/p), 0.5, 2),  e_target = probe_target_pct / 100 rms|B|,
 // (e_K: postproc/probe_error3d.hpp; the field error of a tet falls like h^p). 0.5, not the
-// energy rule's 0.3: a probe's zone is often clamped whole, and 0.3 made 37x its tets in one
-// pass (benchmark32: 380k -> 2.57M unknowns, the table at 0.54 % where half the target was
-// 0.25 %). Exposed for the tests.
+// energy rule's 0.3: a probe's zone is often clamped whole, and 0.3 allows 37x its tets in
+// one pass (benchmark32, with two rings: 380k -> 2.57M unknowns, the table at 0.54 % where
+// the aim was 0.25 %). Exposed for the tests.
 std::vector<SizeSample3D> adapted_size_samples_3d(const Run3D& run, double target_pct, bool coarsen,
                                                   const std::vector<ProbeGoal3D>& goals = {},
                                                   double probe_target_pct = 0);
