@@ -13,6 +13,7 @@
 // sizes by the minimum: the case's mesh is the coarsest the loop makes.
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "pipeline/adapt_loop.hpp"
@@ -25,11 +26,45 @@ namespace magfem {
 std::unique_ptr<Run3D> run_adaptive_3d(const CaseSpec& spec, const RunOverrides& overrides,
                                        const std::function<void(const AdaptPass&)>& on_pass = {});
 
+// A probe table named in adapt.quantities, as the marking and the estimate see it on one
+// mesh. Goal-oriented: the change of the table's rms |B| between passes says nothing about
+// its pointwise field (benchmark32's r56 "converged" at a 0.3 % change while 2.3-4 % off the
+// charge model pointwise), and the energy's indicators put the unknowns at the energy's hot
+// spots (magnet edges), not at the probe. The field error at a probe point is mostly the
+// local error of the tets around it (postproc/probe_error3d.hpp), plus pollution from the
+// energy error elsewhere, which the energy rule keeps reducing.
+struct ProbeGoal3D {
+  std::string name;
+  std::vector<std::size_t> point_tets; // the tet holding each point (physical tets)
+  std::vector<std::size_t> zone;       // those and their neighbours (probe_zone_rings)
+  double rms_B_T = 0;                  // rms |B| over the table (the quantity's value)
+  // 100 rms over the points of their tet's e_K / rms_B_T: the estimated rms pointwise
+  // error of the table (%), reported as the quantity's one-mesh estimate (AdaptMeasure).
+  double error_pct = 0;
+};
+
+// Vertex-sharing rings around a probe's tets that take the probe's size rule. One ring is
+// 11 % of the tets of benchmark32 at --mesh-scale 3 (r56, 2116 points). Not measured apart:
+// two rings with the 0.3 clamp and the energy rule beside it reached r56 at 0.51-0.56 %
+// pointwise with 2.57M unknowns in two passes; one ring, 0.5 and the rule below, 0.36-0.43 %
+// with 1.90M in three.
+inline constexpr int probe_zone_rings = 1;
+
+// The goals of the probe quantities among `quantities` (others are skipped), in order.
+std::vector<ProbeGoal3D> probe_goals_3d(const Run3D& run,
+                                        const std::vector<AdaptQuantity>& quantities);
+
 // The size sources of the next pass: at every node and tet centroid of run's mesh, the
 // size the tet was asked to have (Mesh3D::tet_size) times adapt_size_ratios (a node takes the
 // smallest of its tets'), the open boundary's shell by its own indicator like every other
-// tet. Exposed for the tests.
-std::vector<SizeSample3D> adapted_size_samples_3d(const Run3D& run, double target_pct,
-                                                  bool coarsen);
+// tet. Tets in a goal's zone take the smaller of that and the probe rule
+//   h_new = h * clamp((e_target / e_K)^(1/p), 0.5, 2),  e_target = probe_target_pct / 100 rms|B|,
+// (e_K: postproc/probe_error3d.hpp; the field error of a tet falls like h^p). 0.5, not the
+// energy rule's 0.3: a probe's zone is often clamped whole, and 0.3 allows 37x its tets in
+// one pass (benchmark32, with two rings: 380k -> 2.57M unknowns, the table at 0.54 % where
+// the aim was 0.25 %). Exposed for the tests.
+std::vector<SizeSample3D> adapted_size_samples_3d(const Run3D& run, double target_pct, bool coarsen,
+                                                  const std::vector<ProbeGoal3D>& goals = {},
+                                                  double probe_target_pct = 0);
 
 } // namespace magfem

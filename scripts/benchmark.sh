@@ -2,7 +2,8 @@
 # Speed and accuracy figures (printed, not asserted: the tests check physics, this script
 # checks the speed targets of the issues). Needs a build (bash scripts/build.sh).
 #   bash scripts/benchmark.sh          the quick set (~5 min on 2 cores)
-#   bash scripts/benchmark.sh --full   also the 3D FE sweep of the gravity compensator (long)
+#   bash scripts/benchmark.sh --full   also the 3D FE sweep of the gravity compensator, finer
+#                                      benchmark32 levels and a third adaptive pass (long)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 full=0
@@ -89,6 +90,40 @@ for scale in $levels; do
   $magfem solve examples/3d/benchmark32_parallel.yaml --mesh-scale $scale --out "$out/b32_$scale" > /dev/null
   report "benchmark32 parallel, P2, mesh-scale $scale" "$out/b32_$scale"
   $magfem compare "$out/b32a/r56.csv" "$out/b32_$scale/r56.csv" | tail -n +2 | sed 's/^/    /'
+done
+
+echo
+echo "== 3D benchmark32 probe field (issue 29 target: adaptive >= 2x fewer unknowns than uniform for the same r56 error)"
+# Pointwise rms error of the r56 table against the charge model (range over Bx, By, Bz), for
+# uniform --mesh-scale levels and for the adaptive passes with probes.r56 as the named
+# quantity (goal-oriented marking, pipeline/adapt3d.hpp), from the mesh-scale 3 start. Pass k
+# is the run stopped at --max-passes k (the loop is deterministic); its seconds are the sum
+# over its passes (pass 1 included).
+pointwise() { # reference test: "lo..hi" of pointwise_pct over Bx, By, Bz
+  $magfem compare "$1" "$2" | awk '$1 ~ /^B[xyz]$/ { v = $5; lo = (lo == "" || v < lo) ? v : lo;
+    hi = (v > hi) ? v : hi } END { printf "%.2f..%.2f", lo, hi }'
+}
+cp examples/3d/benchmark32_parallel.yaml "$out/b32_goal.yaml"
+echo "adapt: {accuracy_pct: 0.5, quantities: [probes.r56], max_passes: 4, max_unknowns: 3.0e6}" \
+  >> "$out/b32_goal.yaml"
+uniform_levels="3 2 1.6"
+((full)) && uniform_levels="3 2 1.6 1.3 1"
+for scale in $uniform_levels; do
+  [[ -d "$out/b32_$scale" ]] ||
+    $magfem solve examples/3d/benchmark32_parallel.yaml --mesh-scale $scale --quiet --out "$out/b32_$scale" > /dev/null
+  printf "    uniform  %9s unknowns  %7.1f s  pointwise %s %%  (mesh-scale %s)\n" \
+    "$(field "$out/b32_$scale" unknowns)" "$(timing "$out/b32_$scale" total)" \
+    "$(pointwise "$out/b32a/r56.csv" "$out/b32_$scale/r56.csv")" "$scale"
+done
+passes="2" # pass 1 is the mesh-scale 3 row above
+((full)) && passes="2 3"
+for k in $passes; do
+  $magfem solve "$out/b32_goal.yaml" --mesh-scale 3 --max-passes $k --quiet --out "$out/b32_goal$k" > /dev/null
+  sed -n '/"adapt"/,/"warnings"/p' "$out/b32_goal$k/summary.json" |
+    awk -F': *' '/"unknowns"/ { n = $2 } /"probes.r56"/ { e = $2 } /"seconds"/ { s += $2 }
+      END { gsub(/,/, "", n); gsub(/,/, "", e); printf "    adaptive %9d unknowns  %7.1f s  ", n, s;
+            printf "(estimated %s %%)  ", e == "null" || e == "" ? "unknown" : sprintf("%.3g", e) }'
+  printf "pointwise %s %%  (pass %s)\n" "$(pointwise "$out/b32a/r56.csv" "$out/b32_goal$k/r56.csv")" "$k"
 done
 
 echo
