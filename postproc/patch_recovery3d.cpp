@@ -9,6 +9,7 @@
 
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "mesh/vertex_tets3d.hpp"
 #include "postproc/element_field3d.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
@@ -153,20 +154,7 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
   if (threads <= 0)
     threads = element_loop_threads(mesh.n_tets());
 
-  // Vertex -> tets (CSR).
-  std::vector<int> at_first(n_vertices + 1, 0), at_tets;
-  for (std::size_t t = 0; t < mesh.n_tets(); ++t)
-    for (int v : mesh.tets[t])
-      ++at_first[v + 1];
-  for (int v = 0; v < n_vertices; ++v)
-    at_first[v + 1] += at_first[v];
-  at_tets.resize(at_first[n_vertices]);
-  {
-    std::vector<int> fill(at_first.begin(), at_first.end() - 1);
-    for (std::size_t t = 0; t < mesh.n_tets(); ++t)
-      for (int v : mesh.tets[t])
-        at_tets[fill[v]++] = static_cast<int>(t);
-  }
+  const VertexTets3D around(mesh);
 
   // The 4-point rule of degree 2 for both orders: exact for order 1's normal equations;
   // for order 2 (quartic matrix entries) the 14-point degree-5 rule is exact, but on the
@@ -231,16 +219,16 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
       for (int s = first_[v]; s < first_[v + 1]; ++s) {
         const int part = part_[s];
         patch.clear();
-        for (int k = at_first[v]; k < at_first[v + 1]; ++k)
-          if (mesh.tet_part[at_tets[k]] == part)
-            patch.push_back(at_tets[k]);
+        for (int n : around.of(v))
+          if (mesh.tet_part[n] == part)
+            patch.push_back(n);
         if (static_cast<int>(patch.size()) < min_patch_tets) {
           const std::vector<int> ring(patch);
           for (int t : ring)
             for (int w : mesh.tets[t])
-              for (int k = at_first[w]; k < at_first[w + 1]; ++k)
-                if (mesh.tet_part[at_tets[k]] == part)
-                  patch.push_back(at_tets[k]);
+              for (int n : around.of(w))
+                if (mesh.tet_part[n] == part)
+                  patch.push_back(n);
           std::sort(patch.begin(), patch.end());
           patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
         }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesh/mesh_quality3d.hpp"
+#include "mesh/vertex_tets3d.hpp"
 #include "postproc/point_locator3d.hpp"
 
 namespace magfem {
@@ -14,11 +16,9 @@ std::vector<double> tet_field_error_T(const Problem3D& problem, const std::vecto
     if (problem.is_shell(t))
       continue;
     const auto& k = mesh.tets[t];
-    const Eigen::Vector3d& a = mesh.nodes[k[0]];
     // The straight tet's volume: curved (P2) tets differ from it by the chord error only.
-    const double volume =
-        std::abs((mesh.nodes[k[1]] - a).cross(mesh.nodes[k[2]] - a).dot(mesh.nodes[k[3]] - a)) /
-        6.0;
+    const double volume = std::abs(
+        tet_volume(mesh.nodes[k[0]], mesh.nodes[k[1]], mesh.nodes[k[2]], mesh.nodes[k[3]]));
     const double mu = problem.physics(mesh.tet_part[t]).material->start_permeability();
     if (volume > 0)
       e[t] = std::sqrt(mu * std::max(eta2_J[t], 0.0) / volume);
@@ -39,18 +39,8 @@ std::vector<std::size_t> tets_at_points(const Mesh3D& mesh,
 
 std::vector<std::size_t> tets_near(const Mesh3D& mesh, const std::vector<std::size_t>& seeds,
                                    int rings) {
-  // Vertex -> tets (CSR), built once: a ring is every tet touching a vertex of the last one.
-  std::vector<int> first(mesh.n_nodes() + 1, 0), items(4 * mesh.n_tets());
-  for (const auto& k : mesh.tets)
-    for (int v : k)
-      ++first[v + 1];
-  for (std::size_t v = 0; v < mesh.n_nodes(); ++v)
-    first[v + 1] += first[v];
-  std::vector<int> fill(first.begin(), first.end() - 1);
-  for (std::size_t t = 0; t < mesh.n_tets(); ++t)
-    for (int v : mesh.tets[t])
-      items[fill[v]++] = int(t);
-
+  // A ring is every tet touching a vertex of the last one.
+  const VertexTets3D around(mesh);
   std::vector<char> in(mesh.n_tets(), 0);
   std::vector<std::size_t> front;
   for (std::size_t t : seeds)
@@ -63,10 +53,10 @@ std::vector<std::size_t> tets_near(const Mesh3D& mesh, const std::vector<std::si
     std::vector<std::size_t> next;
     for (std::size_t t : front)
       for (int v : mesh.tets[t])
-        for (int i = first[v]; i < first[v + 1]; ++i)
-          if (!in[items[i]]) {
-            in[items[i]] = 1;
-            next.push_back(std::size_t(items[i]));
+        for (int n : around.of(v))
+          if (!in[n]) {
+            in[n] = 1;
+            next.push_back(std::size_t(n));
           }
     out.insert(out.end(), next.begin(), next.end());
     front = std::move(next);
