@@ -116,11 +116,19 @@ std::string plot_script(const Plot& plot, const std::string& svg_file) {
   for (std::size_t k = 0; k < plot.series.size(); ++k)
     g << datablock(plot.series[k], k);
   g << "plot ";
+  // Point series take different markers (open circle, cross, open square): a computed point
+  // on top of a published one stays visible.
+  const int markers[] = {6, 2, 4};
+  int point_series = 0;
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
     const PlotSeries& s = plot.series[k];
-    g << (k ? ", \\\n     " : "") << "$d" << k << " using 1:2 "
-      << (s.points_only ? "with points pt 6 ps 1.2 lw 2" : "with lines lw 2") << " lc rgb '"
-      << colours[k % colours.size()] << "' title \"" << gnuplot_title(s.name) << "\"";
+    g << (k ? ", \\\n     " : "") << "$d" << k << " using 1:2 ";
+    if (s.points_only)
+      g << "with points pt " << markers[point_series++ % 3] << " ps 1.2 lw 2";
+    else
+      g << "with lines lw 2";
+    g << " lc rgb '" << colours[k % colours.size()] << "' title \"" << gnuplot_title(s.name)
+      << "\"";
   }
   return g.str() + "\n";
 }
