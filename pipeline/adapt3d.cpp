@@ -40,24 +40,21 @@ std::vector<double> requested_sizes_3d(const Mesh3D& mesh) {
   return h;
 }
 
-// As adapt_loop.cpp: the next pass aims at half the target.
-constexpr double aim_below_target = 0.5;
 // Refinement and coarsening limits of the probe rule per pass (adapt3d.hpp).
 constexpr double min_probe_ratio = 0.5, max_ratio = 2.0;
 
 // The probe rule's ratios folded into `ratio` (the smaller wins) over every goal's zone.
 void apply_probe_rule(const Run3D& run, const std::vector<ProbeGoal3D>& goals,
                       double probe_target_pct, std::vector<double>& ratio) {
-  if (goals.empty())
-    return;
-  const std::vector<double> e = tet_field_error_T(run.problem, run.error_estimate.eta2_J);
   const double power = 1.0 / run.spec.order;
   for (const auto& g : goals) {
     const double e_target = probe_target_pct / 100 * g.rms_B_T;
-    for (std::size_t t : g.zone) {
+    for (std::size_t k = 0; k < g.zone.size(); ++k) {
+      const std::size_t t = g.zone[k];
       if (run.problem.is_shell(t))
         continue;
-      const double r = e[t] > 0 ? std::pow(e_target / e[t], power) : max_ratio;
+      const double e = g.zone_error_T[k];
+      const double r = e > 0 ? std::pow(e_target / e, power) : max_ratio;
       ratio[t] = std::min(ratio[t], std::clamp(r, min_probe_ratio, max_ratio));
     }
   }
@@ -81,6 +78,8 @@ std::vector<ProbeGoal3D> probe_goals_3d(const Run3D& run,
     g.name = q.name;
     g.point_tets = tets_at_points(run.mesh, probe_points_3d(*spec));
     g.zone = tets_near(run.mesh, g.point_tets, probe_zone_rings);
+    for (std::size_t t : g.zone)
+      g.zone_error_T.push_back(e[t]);
     g.rms_B_T = adapt_quantity_value(q, 0, {}, run.probes, b_columns);
     g.error_pct = g.rms_B_T > 0 ? 100 * rms_over(e, g.point_tets) / g.rms_B_T : 0;
     out.push_back(std::move(g));

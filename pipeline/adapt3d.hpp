@@ -37,6 +37,7 @@ struct ProbeGoal3D {
   std::string name;
   std::vector<std::size_t> point_tets; // the tet holding each point (physical tets)
   std::vector<std::size_t> zone;       // those and their neighbours (probe_zone_rings)
+  std::vector<double> zone_error_T;    // e_K of each zone tet, parallel to zone (T)
   double rms_B_T = 0;                  // rms |B| over the table (the quantity's value)
   // 100 rms over the points of their tet's e_K / rms_B_T: the estimated rms pointwise
   // error of the table (%), reported as the quantity's one-mesh estimate (AdaptMeasure).
