@@ -40,25 +40,39 @@ std::vector<double> requested_sizes_3d(const Mesh3D& mesh) {
   return h;
 }
 
-// As adapt_loop.cpp: the next pass aims at half the target.
-constexpr double aim_below_target = 0.5;
 // Refinement and coarsening limits of the probe rule per pass (adapt3d.hpp).
 constexpr double min_probe_ratio = 0.5, max_ratio = 2.0;
 
 // The probe rule's ratios folded into `ratio` (the smaller wins) over every goal's zone.
 void apply_probe_rule(const Run3D& run, const std::vector<ProbeGoal3D>& goals,
                       double probe_target_pct, std::vector<double>& ratio) {
-  if (goals.empty())
-    return;
-  const std::vector<double> e = tet_field_error_T(run.problem, run.error_estimate.eta2_J);
   const double power = 1.0 / run.spec.order;
   for (const auto& g : goals) {
     const double e_target = probe_target_pct / 100 * g.rms_B_T;
-    for (std::size_t t : g.zone) {
+    for (std::size_t k = 0; k < g.zone.size(); ++k) {
+      const std::size_t t = g.zone[k];
       if (run.problem.is_shell(t))
         continue;
-      const double r = e[t] > 0 ? std::pow(e_target / e[t], power) : max_ratio;
+      const double e = g.zone_error_T[k];
+      const double r = e > 0 ? std::pow(e_target / e, power) : max_ratio;
       ratio[t] = std::min(ratio[t], std::clamp(r, min_probe_ratio, max_ratio));
+    }
+  }
+}
+
+// Every probe point a source, sized from its tet's e_K in one jump (adapt3d.hpp): never
+// larger than the tet was asked to be, so a point within its target keeps its size.
+void add_probe_point_sources(const Run3D& run, const std::vector<ProbeGoal3D>& goals,
+                             double probe_target_pct, const std::vector<double>& h, double floor,
+                             std::vector<SizeSample3D>& out) {
+  const double power = 1.0 / run.spec.order;
+  for (const auto& g : goals) {
+    const double e_target = probe_target_pct / 100 * g.rms_B_T;
+    for (std::size_t i = 0; i < g.points.size(); ++i) {
+      const double e = g.point_error_T[i];
+      const double r = e > 0 ? std::pow(e_target / e, power) : 1.0;
+      out.push_back(
+          {g.points[i], std::max(floor, h[g.point_tets[i]] * std::clamp(r, min_point_ratio, 1.0))});
     }
   }
 }
@@ -79,8 +93,14 @@ std::vector<ProbeGoal3D> probe_goals_3d(const Run3D& run,
       continue; // not reached: the reader checked the names
     ProbeGoal3D g;
     g.name = q.name;
-    g.point_tets = tets_at_points(run.mesh, probe_points_3d(*spec));
+    for (const TetPoint3D& p : locate_points(run.mesh, probe_points_3d(*spec))) {
+      g.point_tets.push_back(p.tet);
+      g.points.push_back(p.x);
+      g.point_error_T.push_back(e[p.tet]);
+    }
     g.zone = tets_near(run.mesh, g.point_tets, probe_zone_rings);
+    for (std::size_t t : g.zone)
+      g.zone_error_T.push_back(e[t]);
     g.rms_B_T = adapt_quantity_value(q, 0, {}, run.probes, b_columns);
     g.error_pct = g.rms_B_T > 0 ? 100 * rms_over(e, g.point_tets) / g.rms_B_T : 0;
     out.push_back(std::move(g));
@@ -118,6 +138,7 @@ std::vector<SizeSample3D> adapted_size_samples_3d(const Run3D& run, double targe
   for (std::size_t v = 0; v < mesh.n_nodes(); ++v)
     if (std::isfinite(node_h[v]))
       out.push_back({mesh.nodes[v], node_h[v]});
+  add_probe_point_sources(run, goals, probe_target_pct, h, floor, out);
   return out;
 }
 

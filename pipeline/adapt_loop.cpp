@@ -16,8 +16,6 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // Refinement and coarsening limits per pass: beyond them the indicator of the old mesh says
 // little about the new one.
 constexpr double min_ratio = 0.3, max_ratio = 2.0;
-// The next pass aims at half the target: a pass that lands just above it would cost one more.
-constexpr double aim_below_target = 0.5;
 // Once the energy is within the target but a named quantity is not, each pass asks for this
 // fraction of the energy error reached, so that the mesh keeps getting finer.
 constexpr double quantity_push = 0.25;

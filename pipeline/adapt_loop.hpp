@@ -26,6 +26,10 @@
 
 namespace magfem {
 
+// The next pass aims at this fraction of the target: a pass that lands just above it would
+// cost one more. Shared by the energy rule (adapt_loop.cpp) and the 3D probe rule (adapt3d.cpp).
+inline constexpr double aim_below_target = 0.5;
+
 // One pass of an adaptive solve, as summary.json's adapt.passes[] reports it.
 struct AdaptPass {
   int pass = 0;

@@ -26,14 +26,27 @@ std::vector<double> tet_field_error_T(const Problem3D& problem, const std::vecto
   return e;
 }
 
-std::vector<std::size_t> tets_at_points(const Mesh3D& mesh,
-                                        const std::vector<Eigen::Vector3d>& points) {
+std::vector<TetPoint3D> locate_points(const Mesh3D& mesh,
+                                      const std::vector<Eigen::Vector3d>& points) {
   const PointLocator3D locator(mesh);
-  std::vector<std::size_t> out;
+  std::vector<TetPoint3D> out;
   out.reserve(points.size());
   for (const auto& x : points)
-    if (const auto loc = locator.locate(x))
-      out.push_back(loc->tet);
+    if (const auto loc = locator.locate(x)) {
+      // The barycentric weights place the point in the model's half of a cut mesh too.
+      Eigen::Vector3d in_model = Eigen::Vector3d::Zero();
+      for (int i = 0; i < 4; ++i)
+        in_model += loc->bary[i] * mesh.nodes[mesh.tets[loc->tet][i]];
+      out.push_back({loc->tet, in_model});
+    }
+  return out;
+}
+
+std::vector<std::size_t> tets_at_points(const Mesh3D& mesh,
+                                        const std::vector<Eigen::Vector3d>& points) {
+  std::vector<std::size_t> out;
+  for (const TetPoint3D& p : locate_points(mesh, points))
+    out.push_back(p.tet);
   return out;
 }
 

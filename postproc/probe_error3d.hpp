@@ -26,6 +26,18 @@ namespace magfem {
 // e_K (T) of every tet from its indicator eta2_J[K] (J); 0 for shell tets.
 std::vector<double> tet_field_error_T(const Problem3D& problem, const std::vector<double>& eta2_J);
 
+// A point found in the mesh: the tet holding it and where it lies in the model (metres): the
+// point itself, or its mirror image in a model cut at symmetry planes.
+struct TetPoint3D {
+  std::size_t tet = 0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+};
+
+// `points` (metres) found in the mesh, in point order; points outside the meshed domain are
+// skipped.
+std::vector<TetPoint3D> locate_points(const Mesh3D& mesh,
+                                      const std::vector<Eigen::Vector3d>& points);
+
 // The physical (non-shell) tets containing `points` (metres; at their mirror image in a model
 // cut at symmetry planes), one per point found, in point order; points outside the meshed
 // domain are skipped.
