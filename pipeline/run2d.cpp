@@ -180,6 +180,7 @@ public:
     return summarize_energy_2d(*run_.field, names);
   }
   void recover() const {}
+  PointLocator2D probe_locator() const { return PointLocator2D(run_.mesh); }
   ProbeTable sample_probe(const PointLocator2D& locator, const ProbeSpec& probe) const {
     return sample_probe_2d(*run_.field, locator, probe, run_.spec.length_unit);
   }

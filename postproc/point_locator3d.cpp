@@ -7,22 +7,59 @@
 
 namespace magfem {
 
+namespace {
+
+// The bounding box of tet t.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> tet_box(const Mesh3D& mesh, std::size_t t) {
+  Eigen::Vector3d a = mesh.nodes[mesh.tets[t][0]], b = a;
+  for (int k = 1; k < 4; ++k) {
+    a = a.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
+    b = b.cwiseMax(mesh.nodes[mesh.tets[t][k]]);
+  }
+  return {a, b};
+}
+
+bool boxes_meet(const Eigen::Vector3d& a_lo, const Eigen::Vector3d& a_hi,
+                const Eigen::Vector3d& b_lo, const Eigen::Vector3d& b_hi) {
+  return (a_lo.array() <= b_hi.array()).all() && (b_lo.array() <= a_hi.array()).all();
+}
+
+} // namespace
+
 PointLocator3D::PointLocator3D(const Mesh3D& mesh) : mesh_(mesh) {
+  const Eigen::Vector3d everywhere = Eigen::Vector3d::Constant(1e300);
+  index(-everywhere, everywhere);
+}
+
+PointLocator3D::PointLocator3D(const Mesh3D& mesh, const std::vector<Eigen::Vector3d>& points)
+    : mesh_(mesh) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-  std::size_t n_physical = 0;
+  for (const Eigen::Vector3d& x : points) {
+    const Eigen::Vector3d p = fold_point(mesh.symmetry, x).point;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  index(lo, hi);
+}
+
+void PointLocator3D::index(const Eigen::Vector3d& region_lo, const Eigen::Vector3d& region_hi) {
+  const Mesh3D& mesh = mesh_;
+  std::vector<int> kept;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
     if (mesh.tet_part[t] == region_shell_3d)
       continue;
-    ++n_physical;
-    for (int k = 0; k < 4; ++k) {
-      lo = lo.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
-      hi = hi.cwiseMax(mesh.nodes[mesh.tets[t][k]]);
-    }
+    const auto [a, b] = tet_box(mesh, t);
+    if (!boxes_meet(a, b, region_lo, region_hi))
+      continue;
+    kept.push_back(static_cast<int>(t));
+    lo = lo.cwiseMin(a);
+    hi = hi.cwiseMax(b);
   }
-  if (n_physical == 0)
+  if (kept.empty())
     lo = hi = Eigen::Vector3d::Zero();
   // About two tets per bucket keeps queries O(1).
-  const double cells = std::max(1.0, static_cast<double>(n_physical) / 2.0);
+  const double cells = std::max(1.0, static_cast<double>(kept.size()) / 2.0);
   const Eigen::Vector3d extent = (hi - lo).cwiseMax(1e-30);
   const double h = std::cbrt(extent.prod() / cells);
   for (int k = 0; k < 3; ++k)
@@ -41,14 +78,8 @@ PointLocator3D::PointLocator3D(const Mesh3D& mesh) : mesh_(mesh) {
       items_.resize(start_[n_buckets]);
       fill.assign(start_.begin(), start_.end() - 1);
     }
-    for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-      if (mesh.tet_part[t] == region_shell_3d)
-        continue;
-      Eigen::Vector3d a = mesh.nodes[mesh.tets[t][0]], b = a;
-      for (int k = 1; k < 4; ++k) {
-        a = a.cwiseMin(mesh.nodes[mesh.tets[t][k]]);
-        b = b.cwiseMax(mesh.nodes[mesh.tets[t][k]]);
-      }
+    for (int t : kept) {
+      const auto [a, b] = tet_box(mesh, static_cast<std::size_t>(t));
       const auto c0 = cell_of(a), c1 = cell_of(b);
       for (int k = c0[2]; k <= c1[2]; ++k)
         for (int j = c0[1]; j <= c1[1]; ++j)
@@ -57,7 +88,7 @@ PointLocator3D::PointLocator3D(const Mesh3D& mesh) : mesh_(mesh) {
             if (pass == 0)
               ++start_[bi + 1];
             else
-              items_[fill[bi]++] = static_cast<int>(t);
+              items_[fill[bi]++] = t;
           }
     }
   }

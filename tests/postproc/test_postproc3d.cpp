@@ -60,6 +60,38 @@ TEST(Field3D, P2FieldAndRecoveryAreExactForQuadraticPotential) {
   EXPECT_FALSE(locator.locate(Eigen::Vector3d(6, 0, 0) * mm).has_value());
 }
 
+// The locator over the probe points' box only (PointLocator3D(mesh, points)) against the
+// whole-mesh one: every point gets the same tet and the same barycentric coordinates, bit for
+// bit (a containing tet reaches into the box, and the tets are visited in the same order).
+// The mesh is cut at x = 0 (a symmetry plane), and half the points lie beyond it:
+// they are found at their mirror image, so the box must be the folded points' box. Would
+// fail on: the points not folded (their box misses the tets that hold their images), or
+// only the tets inside the box kept (those across its edge lost).
+TEST(PointLocator3D, OverTheProbePointsBoxFindsWhatTheWholeMeshLocatorFinds) {
+  Mesh3D mesh = test::structured_box({0, 0, 0}, {10 * mm, 10 * mm, 10 * mm}, 8);
+  mesh.symmetry = {SymmetryPlane3D{0, SymmetryField::normal}};
+  std::vector<Eigen::Vector3d> points;
+  // Two balls: one by the plane on the kept side, one beyond it whose image lies farther in.
+  for (int i = 0; i < 300; ++i) {
+    const double a = 0.37 * i, b = 0.11 * i, r = i % 2 ? 1 * mm : 0.5 * mm;
+    const double x = i % 2 ? -3 * mm : 1.5 * mm;
+    points.emplace_back(x + r * std::cos(a) * std::sin(b), 5 * mm + r * std::sin(a) * std::sin(b),
+                        5 * mm + r * std::cos(b));
+  }
+  const PointLocator3D whole(mesh), near(mesh, points);
+  int mirrored = 0;
+  for (const Eigen::Vector3d& x : points) {
+    const auto a = whole.locate(x), b = near.locate(x);
+    ASSERT_TRUE(a.has_value());
+    ASSERT_TRUE(b.has_value()) << "x = " << x.transpose();
+    EXPECT_EQ(a->tet, b->tet);
+    EXPECT_EQ(a->bary, b->bary);
+    EXPECT_EQ(a->b_map, b->b_map);
+    mirrored += x.x() < 0;
+  }
+  EXPECT_EQ(mirrored, 150);
+}
+
 TEST(Field3D, MaterialLawsAndMagnetization) {
   BoxField box(1, true);
   for (std::size_t t = 0; t < box.mesh.n_tets(); t += 11) {
