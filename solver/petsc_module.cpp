@@ -2,6 +2,7 @@
 // methods forward to the module's PETSc and MPI code.
 #include "solver/mpi_world_backend.hpp"
 #include "solver/petsc_ksp_solver.hpp"
+#include "solver/pmg_partition.hpp"
 
 namespace magfem::petsc_module {
 namespace {
@@ -16,6 +17,12 @@ public:
   }
   std::string petsc_options_problem(const PetscSolverOptions& options) override {
     return petsc_module::petsc_options_problem(options);
+  }
+  DistributedRows
+  partition_distributed_rows(const Eigen::SparseMatrix<double>& vertex_pattern,
+                             const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation,
+                             const std::vector<int>* smoother_block) override {
+    return partition_for_pmg(vertex_pattern, prolongation, smoother_block);
   }
   MpiWorld join_mpi_world(bool any_thread_calls_mpi) override {
     return petsc_module::join_mpi_world(any_thread_calls_mpi);
