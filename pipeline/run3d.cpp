@@ -302,6 +302,7 @@ public:
       run_.coil_sensitivity_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
+    lend_node_cores_to_root();
     return report;
   }
   // Rank 0 holds the solution and alone post-processes.

@@ -60,6 +60,7 @@ public:
   virtual void sum_on_every_rank(double* values, std::size_t n) = 0;
   virtual void sum_to_root(float* values, std::size_t n) = 0;
   virtual void idle_barrier() = 0;
+  virtual void lend_node_cores_to_root() = 0;
   virtual int code_of_root(int code) = 0;
   virtual std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items,
                                                              int workers) = 0;

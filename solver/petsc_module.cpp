@@ -36,6 +36,7 @@ public:
   }
   void sum_to_root(float* values, std::size_t n) override { petsc_module::sum_to_root(values, n); }
   void idle_barrier() override { petsc_module::idle_barrier(); }
+  void lend_node_cores_to_root() override { petsc_module::lend_node_cores_to_root(); }
   int code_of_root(int code) override { return petsc_module::code_of_root(code); }
   std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items, int workers) override {
     return std::make_unique<MpiWorkDealer>(std::move(items), workers);
