@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "solver/petsc_check.hpp"
@@ -52,20 +54,16 @@ Mat own_row_matrix(const Eigen::SparseMatrix<double>& lower, const PmgPartition&
       }
     }
   }
-  // Sorted columns per row, as MatCreateMPIAIJWithArrays expects.
-  std::vector<int> perm;
-  std::vector<PetscInt> c;
-  std::vector<PetscScalar> v;
+  // Columns ascending within each row, as a CSR matrix for PETSc has them (a row's columns are
+  // distinct: the diagonal comes once).
+  std::vector<std::pair<PetscInt, PetscScalar>> row;
   for (PetscInt r = 0; r < local; ++r) {
-    const PetscInt b = start[r], e = start[r + 1];
-    perm.resize(e - b);
-    std::iota(perm.begin(), perm.end(), 0);
-    std::sort(perm.begin(), perm.end(),
-              [&](int x, int y) { return column[b + x] < column[b + y]; });
-    c.assign(column.begin() + b, column.begin() + e);
-    v.assign(value.begin() + b, value.begin() + e);
-    for (PetscInt k = 0; k < e - b; ++k)
-      column[b + k] = c[perm[k]], value[b + k] = v[perm[k]];
+    row.clear();
+    for (PetscInt k = start[r]; k < start[r + 1]; ++k)
+      row.emplace_back(column[k], value[k]);
+    std::sort(row.begin(), row.end());
+    for (std::size_t k = 0; k < row.size(); ++k)
+      std::tie(column[start[r] + k], value[start[r] + k]) = row[k];
   }
   Mat a = nullptr;
   // Copies the arrays, preallocates from them exactly and sets each own row once.
