@@ -2,8 +2,9 @@
 // `mpirun -n N magfem solve` against the serial run of the same case, for a coil over a
 // permeable plate (the coil source field evaluated per process, the inductance's sensitivity
 // solve distributed), a magnet over a saturable steel plate (Newton with distributed residuals
-// and tangents) and a P2 magnetized sphere with CG + pmg (the CG iteration count within 1.5x
-// of the serial one). The energy and the coil's flux linkage agree to 1e-8, the inductance to
+// and tangents) and a P2 magnetized sphere with CG + pmg (the CG iteration count within 1.2x
+// of the serial one on 2 processes, 1.5x on 3); P2 without coils by own-row assembly (each
+// process the tetrahedra of its own rows, solver/distributed_rows.hpp), which the note says. The energy and the coil's flux linkage agree to 1e-8, the inductance to
 // 1e-6 (both runs' sensitivity solves are loose and corrected), and every probe value to 1e-6
 // of the largest |B|; a Newton that does not converge ends every process with exit 3 and
 // writes nothing.
