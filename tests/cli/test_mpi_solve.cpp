@@ -4,10 +4,10 @@
 // solve distributed), a magnet over a saturable steel plate (Newton with distributed residuals
 // and tangents) and a P2 magnetized sphere with CG + pmg (the CG iteration count within 1.2x
 // of the serial one on 2 processes, 1.5x on 3); P2 without coils by own-row assembly (each
-// process the tetrahedra of its own rows, solver/distributed_rows.hpp), which the note says. The energy and the coil's flux linkage agree to 1e-8, the inductance to
-// 1e-6 (both runs' sensitivity solves are loose and corrected), and every probe value to 1e-6
-// of the largest |B|; a Newton that does not converge ends every process with exit 3 and
-// writes nothing.
+// process the tetrahedra of its own rows, solver/distributed_rows.hpp), which the note says. The
+// energy and the coil's flux linkage agree to 1e-8, the inductance to 1e-6 (both runs' sensitivity
+// solves are loose and corrected), and every probe value to 1e-6 of the largest |B|; a Newton that
+// does not converge ends every process with exit 3 and writes nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -140,10 +140,12 @@ std::string steel_case(const fs::path& dir) {
 // 3 processes sharing 2 cores); the shell cut between processes took twice the serial count,
 // rows in contiguous blocks of the DOF numbering four times. 1.5x is the bound, kept
 // for 3 processes and the larger cases. On 2 processes the coarse sphere stays within 1.1x
-// (15-16 against 14 without the shell), so 1.2x there: a coarse operator off by a factor 2
-// (not P^T A P) took 30 with the shell (1.36x) and 20 without it (1.43x), which it catches.
+// with the shell, so 1.2x there, and within 1.21x without it (16-17 against 14), so 1.3x: a
+// coarse operator off by a factor 2 (not P^T A P) took 30 with the shell (1.36x) and 20
+// without it (1.43x), which they catch.
 constexpr double pmg_iteration_ratio = 1.5;
 constexpr double pmg_iteration_ratio_two_processes = 1.2;
+constexpr double pmg_iteration_ratio_without_shell = 1.3;
 
 // The magnetized sphere, P2, CG + pmg to 1e-12 serially and distributed, coarse (35k
 // unknowns: seconds a run); `open` = false: a Dirichlet sphere, no shell (the smoother is
@@ -200,7 +202,7 @@ TEST_F(MpiSolve, PmgOnTwoAndThreeProcessesKeepsTheSerialField) {
 // No shell: Gauss-Seidel alone within each process.
 TEST_F(MpiSolve, PmgWithoutShellOnTwoProcessesKeepsTheSerialField) {
   const fs::path dir = magfem::test::fresh_dir("sphere_pmg_dirichlet");
-  expect_serial_pmg(dir, sphere_pmg_case(dir, false), 2, pmg_iteration_ratio_two_processes);
+  expect_serial_pmg(dir, sphere_pmg_case(dir, false), 2, pmg_iteration_ratio_without_shell);
   fs::remove_all(dir);
 }
 
