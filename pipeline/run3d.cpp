@@ -32,6 +32,8 @@
 #include "postproc/probes3d.hpp"
 #include "postproc/vtu_export3d.hpp"
 #include "solver/assembler3d.hpp"
+#include "solver/distributed_linear_solver.hpp"
+#include "solver/distributed_rows.hpp"
 #include "solver/distributed_solve3d.hpp"
 #include "solver/mpi_context.hpp"
 #include "solver/p1_coarse_space.hpp"
@@ -250,26 +252,37 @@ public:
     }
   }
   // Distributed: this process's share of the tetrahedra, one thread (the processes share the
-  // cores).
+  // cores). With p-multigrid (P2) the share is own-row assembly's (solver/distributed_rows.hpp):
+  // the rows partitioned first, then the tetrahedra touching this process's rows; the
+  // numbering they need comes from an assembler of no tetrahedra. Coils keep the contiguous
+  // share, on which their source field table was evaluated (prepare_dofs).
   Assembler3D make_assembler() const {
+    auto& linear = run_.spec.newton.linear;
+    linear.distributed_rows = nullptr;
+    if (world_.distributed() && run_.spec.order == 2 && !run_.coils) {
+      const Assembler3D numbering(run_.problem, *run_.dofs,
+                                  {1, {}, std::make_shared<const std::vector<std::size_t>>()});
+      const std::vector<int>& dof_to_eq = numbering.dof_to_equation();
+      set_coarse_space(dof_to_eq);
+      if (distributed_runs_pmg(linear)) {
+        linear.distributed_rows = std::make_shared<const DistributedRows>(
+            partition_distributed_rows(vertex_coupling_pattern(run_.mesh, dof_to_eq),
+                                       *linear.coarse_prolongation, linear.smoother_block.get()));
+        return Assembler3D(
+            run_.problem, *run_.dofs,
+            {1,
+             {},
+             std::make_shared<const std::vector<std::size_t>>(tets_touching_own_rows(
+                 *run_.dofs, run_.mesh.n_tets(), dof_to_eq, *linear.distributed_rows))});
+      }
+    }
     return Assembler3D(run_.problem, *run_.dofs,
-                       AssemblyOptions3D{world_.distributed() ? 1 : 0, share()});
+                       AssemblyOptions3D{world_.distributed() ? 1 : 0, share(), nullptr});
   }
   void prepare_solver(const Assembler3D& assembler) const {
     run_.threads = assembler.threads();
-    if (run_.spec.order != 2)
-      return;
-    auto& linear = run_.spec.newton.linear;
-    // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
-    // preconditioner (O(unknowns) to build, unused by the other solvers). Distributed, every
-    // process builds the whole of it and uses its own rows.
-    linear.coarse_prolongation =
-        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
-            p1_prolongation(*run_.dofs, assembler.dof_to_equation()));
-    if (run_.problem.boundary == OuterKind3D::open)
-      linear.smoother_block = std::make_shared<const std::vector<int>>(
-          element_equations(*run_.dofs, assembler.dof_to_equation(), run_.mesh.n_tets(),
-                            [&](std::size_t t) { return run_.problem.is_shell(t); }));
+    if (run_.spec.order == 2 && !run_.spec.newton.linear.distributed_rows)
+      set_coarse_space(assembler.dof_to_equation());
   }
   NewtonReport solve(Assembler3D& assembler, Eigen::VectorXd& u) const {
     if (!world_.distributed()) {
@@ -289,6 +302,7 @@ public:
       run_.coil_sensitivity_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
+    lend_node_cores_to_root();
     return report;
   }
   // Rank 0 holds the solution and alone post-processes.
@@ -460,6 +474,20 @@ public:
   }
 
 private:
+  // The P1 functions on the same tetrahedra: the coarse level of the p-multigrid
+  // preconditioner (O(unknowns) to build, unused by the other solvers), and the shell's
+  // equations for its smoother. Distributed, every process builds the whole of them and uses
+  // its own rows.
+  void set_coarse_space(const std::vector<int>& dof_to_eq) const {
+    auto& linear = run_.spec.newton.linear;
+    linear.coarse_prolongation =
+        std::make_shared<const Eigen::SparseMatrix<double, Eigen::RowMajor>>(
+            p1_prolongation(*run_.dofs, dof_to_eq));
+    if (run_.problem.boundary == OuterKind3D::open)
+      linear.smoother_block = std::make_shared<const std::vector<int>>(
+          element_equations(*run_.dofs, dof_to_eq, run_.mesh.n_tets(),
+                            [&](std::size_t t) { return run_.problem.is_shell(t); }));
+  }
   // The tetrahedra this process assembles (all of them in a serial run).
   ElementRange share() const {
     return world_.distributed() ? element_share(run_.mesh.n_tets(), world_.rank, world_.size)

@@ -65,6 +65,18 @@ std::vector<int> equations_of_elements(const Mesh3D& mesh, const DofMap3D& dofs,
   return eqs;
 }
 
+// The pattern of the given tetrahedra only (own-row assembly), else of all.
+SparsePattern pattern_of(int n_eqs, const std::vector<int>& element_eqs, int per,
+                         const std::vector<std::size_t>* elements) {
+  if (!elements)
+    return SparsePattern(n_eqs, element_eqs, per);
+  std::vector<int> eqs;
+  eqs.reserve(elements->size() * per);
+  for (std::size_t t : *elements)
+    eqs.insert(eqs.end(), element_eqs.begin() + t * per, element_eqs.begin() + (t + 1) * per);
+  return SparsePattern(n_eqs, eqs, per);
+}
+
 } // namespace
 
 Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs, AssemblyOptions3D options)
@@ -72,7 +84,8 @@ Assembler3D::Assembler3D(const Problem3D& problem, const DofMap3D& dofs, Assembl
       options_(options), shell_{problem.mesh->shell_inner_radius, problem.mesh->shell_outer_radius},
       dof_to_eq_(number_equations(dofs.n_dofs(), constrained_dofs(problem, dofs), n_eqs_)),
       element_eqs_(equations_of_elements(*problem.mesh, dofs, dof_to_eq_)),
-      linear_(problem_is_linear(problem)), pattern_(n_eqs_, element_eqs_, dofs.dofs_per_element()) {
+      linear_(problem_is_linear(problem)),
+      pattern_(pattern_of(n_eqs_, element_eqs_, dofs.dofs_per_element(), options_.elements.get())) {
   if (problem_.source && problem_.source->active())
     source_load_ = source_load(-1);
   // The residual at phi = 0 is minus the external load (remanence and coils).
@@ -202,6 +215,8 @@ std::size_t Assembler3D::share_first() const {
 }
 
 std::size_t Assembler3D::share_count() const {
+  if (options_.elements)
+    return options_.elements->size();
   return std::min(options_.share.last, problem_.mesh->n_tets()) - share_first();
 }
 
@@ -231,16 +246,15 @@ void Assembler3D::assemble(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
   double* values = matrix ? matrix->valuePtr() : nullptr;
   // Equation i owns residual entry i and the stored matrix row i (the lower triangle keeps
   // local (i, j) at global row eq[i]), so each entry is summed by one thread in element order.
-  const std::size_t first = share_first();
   parallel_element_scatter(
       share_count(), n + (matrix ? n * n : 0), n_eqs_, loop_threads(),
       [&](std::size_t e, double* out) {
-        element(first + e, phi_full, out, matrix ? out + n : nullptr, kind, start_law);
+        element(share_tet(e), phi_full, out, matrix ? out + n : nullptr, kind, start_law);
       },
       [&](std::size_t e, const double* re, std::size_t lo, std::size_t hi) {
-        const std::size_t t = first + e;
+        const std::size_t t = share_tet(e);
         const int* eq = &element_eqs_[t * n];
-        const int* slot = matrix ? pattern_.slots(t) : nullptr;
+        const int* slot = matrix ? pattern_.slots(pattern_element(e)) : nullptr;
         for (int i = 0; i < n; ++i) {
           if (eq[i] < 0 || static_cast<std::size_t>(eq[i]) < lo ||
               static_cast<std::size_t>(eq[i]) >= hi)
@@ -309,12 +323,11 @@ void Assembler3D::element_source(std::size_t t, int coil, int n_coils, double* r
 Eigen::VectorXd Assembler3D::source_load(int coil) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(n_eqs_);
   const int n = dofs_.dofs_per_element();
-  const std::size_t first = share_first();
   parallel_element_scatter(
       share_count(), n, n_eqs_, loop_threads(),
-      [&](std::size_t e, double* re) { element_source(first + e, coil, 1, re); },
+      [&](std::size_t e, double* re) { element_source(share_tet(e), coil, 1, re); },
       [&](std::size_t e, const double* re, std::size_t lo, std::size_t hi) {
-        const int* eq = &element_eqs_[(first + e) * n];
+        const int* eq = &element_eqs_[share_tet(e) * n];
         for (int i = 0; i < n; ++i)
           if (eq[i] >= 0 && static_cast<std::size_t>(eq[i]) >= lo &&
               static_cast<std::size_t>(eq[i]) < hi && re[i] != 0)
@@ -340,11 +353,10 @@ Eigen::MatrixXd Assembler3D::current_derivative_columns(const Eigen::VectorXd& u
   const int n = dofs_.dofs_per_element();
   // Reduced regions: the source field's load per ampere. Total regions: r depends on the
   // current through u + I Phi_s, so dr/dI = K_e Phi_s, one element tangent for every coil.
-  const std::size_t share = share_first();
   parallel_element_scatter(
       share_count(), static_cast<std::size_t>(n * count), n_eqs_, loop_threads(),
       [&](std::size_t e, double* sum) {
-        const std::size_t t = share + e;
+        const std::size_t t = share_tet(e);
         if (!src.is_total(t)) {
           element_source(t, first, count, sum);
           return;
@@ -362,7 +374,7 @@ Eigen::MatrixXd Assembler3D::current_derivative_columns(const Eigen::VectorXd& u
         }
       },
       [&](std::size_t e, const double* sum, std::size_t lo, std::size_t hi) {
-        const int* eq = &element_eqs_[(share + e) * n];
+        const int* eq = &element_eqs_[share_tet(e) * n];
         for (int i = 0; i < n; ++i)
           if (eq[i] >= 0 && static_cast<std::size_t>(eq[i]) >= lo &&
               static_cast<std::size_t>(eq[i]) < hi)

@@ -10,6 +10,7 @@
 // outer faces are infinity (phi = 0); `dirichlet` also sets phi = 0 there; `neumann`
 // (B . n = 0 everywhere) fixes one gauge DOF instead.
 // Unknowns are the free DOFs; constrained DOFs are eliminated.
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,6 +32,9 @@ struct AssemblyOptions3D {
   // the load norm sum (default all): a process's share in a distributed solve, where the
   // residuals are then this share's part (DistributedSystem3D sums them over the processes).
   ElementRange share;
+  // When given, the tetrahedra (ascending) summed in place of `share`, and the only ones the
+  // sparsity pattern covers: a process's own-row assembly (distributed_rows.hpp).
+  std::shared_ptr<const std::vector<std::size_t>> elements = nullptr;
 };
 
 class Assembler3D : public NonlinearSystem {
@@ -85,6 +89,13 @@ private:
   // The share's first tetrahedron and count (AssemblyOptions3D::share, clamped to the mesh).
   std::size_t share_first() const;
   std::size_t share_count() const;
+  // The e-th tetrahedron of the share, and its element index in the pattern.
+  std::size_t share_tet(std::size_t e) const {
+    return options_.elements ? (*options_.elements)[e] : share_first() + e;
+  }
+  std::size_t pattern_element(std::size_t e) const {
+    return options_.elements ? e : share_first() + e;
+  }
 
   const Problem3D& problem_;
   const DofMap3D& dofs_;

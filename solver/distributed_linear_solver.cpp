@@ -40,7 +40,9 @@ std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
       std::string(o.smoother_block && !o.smoother_block->empty()
                       ? "; the open-boundary shell whole on process 0, by Cholesky"
                       : "") +
-      ")";
+      ")" +
+      std::string(o.distributed_rows ? "; each process assembled the tetrahedra of its own rows"
+                                     : "");
   const bool automatic_pmg = cg && o.preconditioner == PreconditionerKind::automatic &&
                              coarse_space && o.petsc_options.empty();
   if ((cg && o.preconditioner == PreconditionerKind::pmg && coarse_space) || automatic_pmg) {
@@ -73,20 +75,34 @@ PetscSolverOptions petsc_options(const LinearSolverOptions& o, int size,
                             o.cg_max_iterations,
                             o.progress,
                             o.coarse_prolongation.get(),
-                            o.smoother_block.get()};
+                            o.smoother_block.get(),
+                            o.distributed_rows.get()};
 }
 
 } // namespace
 
+bool distributed_runs_pmg(const LinearSolverOptions& options) {
+  LinearSolverOptions quiet = options;
+  quiet.progress = nullptr;
+  std::vector<std::string> notes;
+  return distributed_preconditioner(quiet, 2, notes) == "pmg";
+}
+
 DistributedLinearSolver::DistributedLinearSolver(const LinearSolverOptions& options, int size)
     : coarse_prolongation_(options.coarse_prolongation), smoother_block_(options.smoother_block),
-      tolerance_(options.cg_tolerance), solver_(petsc_options(options, size, notes_)) {}
+      rows_(options.distributed_rows), tolerance_(options.cg_tolerance),
+      solver_(petsc_options(options, size, notes_)) {}
 
 void DistributedLinearSolver::factorize(const Eigen::SparseMatrix<double>& lower_part) {
   const auto t0 = Clock::now();
-  // The part has the whole pattern (Assembler3D's), which gives the exact preallocation.
-  solver_.begin_distributed(lower_part);
-  solver_.add_lower_share(lower_part);
+  if (rows_) {
+    // Own-row assembly: the part holds this process's rows whole; only they are set.
+    solver_.assemble_own_rows(lower_part);
+  } else {
+    // The part has the whole pattern (Assembler3D's), which gives the exact preallocation.
+    solver_.begin_distributed(lower_part);
+    solver_.add_lower_share(lower_part);
+  }
   solver_.setup_distributed();
   setup_s_ += seconds_since(t0);
 }

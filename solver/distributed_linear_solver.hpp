@@ -20,6 +20,11 @@
 
 namespace magfem {
 
+// Whether a distributed solve with these options runs p-multigrid (the coarse space set, no
+// option asking for another preconditioner): then its rows are a partition of the mesh,
+// which own-row assembly decides before assembly (distributed_rows.hpp).
+bool distributed_runs_pmg(const LinearSolverOptions& options);
+
 class DistributedLinearSolver final : public TangentSolver {
 public:
   // `size`: the processes (for the note).
@@ -46,6 +51,7 @@ private:
   // Kept alive for solver_, which points at them.
   std::shared_ptr<const Eigen::SparseMatrix<double, Eigen::RowMajor>> coarse_prolongation_;
   std::shared_ptr<const std::vector<int>> smoother_block_;
+  std::shared_ptr<const DistributedRows> rows_;
   double tolerance_;
   PetscSolver solver_;
   int last_iterations_ = 0;

@@ -57,7 +57,7 @@ NewtonReport solve_distributed(const Assembler3D& share, int size, const NewtonO
   if (Progress* progress = options.linear.progress)
     progress->stage("distributed over " + std::to_string(size) +
                     " processes: " + std::to_string(share.n_unknowns()) + " unknowns");
-  const DistributedSystem3D system(share);
+  const DistributedSystem3D system(share, options.linear.distributed_rows.get());
   DistributedLinearSolver solver(options.linear, size);
   NewtonReport report = system.is_linear() ? solve_linear(system, solver, options.linear, u)
                                            : solve_nonlinear(system, u, options, solver);
@@ -71,7 +71,7 @@ CurrentSensitivities3D current_sensitivities_distributed(const Assembler3D& shar
   CurrentSensitivities3D out;
   if (n_coils == 0)
     return out;
-  const DistributedSystem3D system(share);
+  const DistributedSystem3D system(share, options.distributed_rows.get());
   DistributedLinearSolver solver(options, size);
   Eigen::VectorXd r;
   Eigen::SparseMatrix<double> part; // this process's part of the tangent
@@ -83,8 +83,7 @@ CurrentSensitivities3D current_sensitivities_distributed(const Assembler3D& shar
     rhs.col(j) = -system.current_derivative(u, j);
   const Eigen::MatrixXd du = solver.solve_many(rhs);
   // The whole K du: each process's part's product, summed as the residuals are.
-  Eigen::MatrixXd k_du = part.selfadjointView<Eigen::Lower>() * du;
-  sum_on_every_rank(k_du.data(), static_cast<std::size_t>(k_du.size()));
+  const Eigen::MatrixXd k_du = system.multiply_summed(part, du);
   out.correction = variational_correction(du, rhs, k_du);
   for (int j = 0; j < n_coils; ++j)
     out.du.push_back(du.col(j));

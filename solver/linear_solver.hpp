@@ -22,7 +22,8 @@
 namespace magfem {
 
 class Progress;
-struct KrylovOutcome; // petsc_solver.hpp
+struct KrylovOutcome;   // petsc_solver.hpp
+struct DistributedRows; // distributed_rows.hpp
 
 enum class LinearSolverKind { automatic, cholmod, cg };
 enum class PreconditionerKind { automatic, ichol, boomeramg, gamg, pmg };
@@ -64,6 +65,9 @@ struct LinearSolverOptions {
   std::shared_ptr<const Eigen::SparseMatrix<double, Eigen::RowMajor>> coarse_prolongation;
   // pmg: equations its smoother solves together (the open-boundary shell's), sorted.
   std::shared_ptr<const std::vector<int>> smoother_block;
+  // Distributed runs only: the rows each process owns, decided before assembly (own-row
+  // assembly, distributed_rows.hpp); null: the rows are decided from the assembled parts.
+  std::shared_ptr<const DistributedRows> distributed_rows;
   Progress* progress = nullptr; // not owned; null = silent
 };
 

@@ -50,6 +50,11 @@ void idle_barrier() {
     backend->idle_barrier();
 }
 
+void lend_node_cores_to_root() {
+  if (PetscBackend* backend = loaded_petsc_backend())
+    backend->lend_node_cores_to_root();
+}
+
 int code_of_root(int code) {
   PetscBackend* backend = loaded_petsc_backend();
   return backend ? backend->code_of_root(code) : code;

@@ -63,6 +63,13 @@ void sum_to_root(float* values, std::size_t n);
 // it the cores instead.
 void idle_barrier();
 
+// Collective: rank 0 may run its threads on every core that the run's processes on its machine
+// are bound to (the union of their CPU affinities), for the post-processing it does alone
+// while the others wait in idle_barrier, sleeping. mpirun binds each of two processes to one
+// core by default, so rank 0's post-processing threads would otherwise share its one core.
+// The others' affinities stay; no-op in a serial run.
+void lend_node_cores_to_root();
+
 // Collective: rank 0's `code` on every process (the exit code of a run whose outcome rank 0
 // decides), waiting as idle_barrier does.
 int code_of_root(int code);

@@ -16,6 +16,7 @@ bool same_on_every_rank(std::uint64_t value);
 void sum_on_every_rank(double* values, std::size_t n);
 void sum_to_root(float* values, std::size_t n);
 void idle_barrier();
+void lend_node_cores_to_root();
 int code_of_root(int code);
 // MPI_Abort when distributed; returns otherwise (the caller exits).
 void abort_mpi_world(int code);

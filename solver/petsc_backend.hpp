@@ -29,6 +29,7 @@ public:
   virtual void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) = 0;
   virtual void add_lower_share(const Eigen::SparseMatrix<double>& lower) = 0;
   virtual void setup_distributed() = 0;
+  virtual void assemble_own_rows(const Eigen::SparseMatrix<double>& lower) = 0;
   virtual KrylovOutcome solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) = 0;
   virtual std::string preconditioner_name() const = 0;
   virtual int block_factorizations() const = 0;
@@ -49,12 +50,17 @@ public:
   virtual void start_petsc(bool any_thread_calls_mpi) = 0;
   virtual std::unique_ptr<PetscSolverEngine> make_solver(PetscSolverOptions options) = 0;
   virtual std::string petsc_options_problem(const PetscSolverOptions& options) = 0;
+  virtual DistributedRows
+  partition_distributed_rows(const Eigen::SparseMatrix<double>& vertex_pattern,
+                             const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation,
+                             const std::vector<int>* smoother_block) = 0;
   virtual MpiWorld join_mpi_world(bool any_thread_calls_mpi) = 0;
   virtual MpiWorld started_mpi_world() = 0;
   virtual bool same_on_every_rank(std::uint64_t value) = 0;
   virtual void sum_on_every_rank(double* values, std::size_t n) = 0;
   virtual void sum_to_root(float* values, std::size_t n) = 0;
   virtual void idle_barrier() = 0;
+  virtual void lend_node_cores_to_root() = 0;
   virtual int code_of_root(int code) = 0;
   virtual std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items,
                                                              int workers) = 0;

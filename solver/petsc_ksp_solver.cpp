@@ -18,6 +18,7 @@
 #include "core/progress.hpp"
 #include "solver/block_smoother.hpp"
 #include "solver/galerkin_product.hpp"
+#include "solver/own_row_matrix.hpp"
 #include "solver/petsc_check.hpp"
 #include "solver/pmg_partition.hpp"
 #include "solver/simultaneous_pcg.hpp"
@@ -712,7 +713,9 @@ void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_
   PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
   // pmg: rows by a partition of the mesh (kept across Newton steps: the same pattern).
   if (m.options.preconditioner == "pmg" && m.options.prolongation) {
-    if (m.partition.order.size() != static_cast<std::size_t>(n))
+    if (m.options.rows)
+      m.partition = *m.options.rows;
+    else if (m.partition.order.size() != static_cast<std::size_t>(n))
       m.partition =
           partition_for_pmg(lower_pattern, *m.options.prolongation, m.options.smoother_block);
     local = m.partition.own_end - m.partition.own_begin;
@@ -758,6 +761,24 @@ void PetscKspSolver::add_lower_share(const Eigen::SparseMatrix<double>& lower) {
       if (row != col)
         check(MatSetValue(m.a, col, row, it.value(), ADD_VALUES), "MatSetValue");
     }
+}
+
+// Own-row assembly: the matrix from each process's own rows only (own_row_matrix.hpp), rows
+// as options.rows says (the partition computed before assembly).
+void PetscKspSolver::assemble_own_rows(const Eigen::SparseMatrix<double>& lower) {
+  const std::lock_guard lock(petsc_mutex());
+  Impl& m = *impl_;
+  if (!m.options.rows || m.options.rows->order.size() != static_cast<std::size_t>(lower.rows()))
+    throw SolveError("internal: own-row assembly without the rows of this system");
+  m.release();
+  m.distributed = true;
+  if (m.partition.order.empty())
+    m.partition = *m.options.rows;
+  m.a = own_row_matrix(lower, m.partition);
+  check(VecCreateMPI(PETSC_COMM_WORLD, m.partition.own_end - m.partition.own_begin,
+                     static_cast<PetscInt>(lower.rows()), &m.rhs),
+        "VecCreateMPI");
+  check(VecSet(m.rhs, 0.0), "VecSet");
 }
 
 void PetscKspSolver::setup_distributed() {

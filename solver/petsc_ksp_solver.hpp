@@ -26,6 +26,7 @@ public:
   void begin_distributed(const Eigen::SparseMatrix<double>& lower_pattern) override;
   void add_lower_share(const Eigen::SparseMatrix<double>& lower) override;
   void setup_distributed() override;
+  void assemble_own_rows(const Eigen::SparseMatrix<double>& lower) override;
   KrylovOutcome solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) override;
   std::string preconditioner_name() const override;
   int block_factorizations() const override;

@@ -2,6 +2,7 @@
 // methods forward to the module's PETSc and MPI code.
 #include "solver/mpi_world_backend.hpp"
 #include "solver/petsc_ksp_solver.hpp"
+#include "solver/pmg_partition.hpp"
 
 namespace magfem::petsc_module {
 namespace {
@@ -17,6 +18,12 @@ public:
   std::string petsc_options_problem(const PetscSolverOptions& options) override {
     return petsc_module::petsc_options_problem(options);
   }
+  DistributedRows
+  partition_distributed_rows(const Eigen::SparseMatrix<double>& vertex_pattern,
+                             const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation,
+                             const std::vector<int>* smoother_block) override {
+    return partition_for_pmg(vertex_pattern, prolongation, smoother_block);
+  }
   MpiWorld join_mpi_world(bool any_thread_calls_mpi) override {
     return petsc_module::join_mpi_world(any_thread_calls_mpi);
   }
@@ -29,6 +36,7 @@ public:
   }
   void sum_to_root(float* values, std::size_t n) override { petsc_module::sum_to_root(values, n); }
   void idle_barrier() override { petsc_module::idle_barrier(); }
+  void lend_node_cores_to_root() override { petsc_module::lend_node_cores_to_root(); }
   int code_of_root(int code) override { return petsc_module::code_of_root(code); }
   std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items, int workers) override {
     return std::make_unique<MpiWorkDealer>(std::move(items), workers);

@@ -14,6 +14,13 @@ std::string petsc_options_problem(const PetscSolverOptions& options) {
   return petsc_backend().petsc_options_problem(options);
 }
 
+DistributedRows
+partition_distributed_rows(const Eigen::SparseMatrix<double>& vertex_pattern,
+                           const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation,
+                           const std::vector<int>* smoother_block) {
+  return petsc_backend().partition_distributed_rows(vertex_pattern, prolongation, smoother_block);
+}
+
 PetscSolver::PetscSolver(PetscSolverOptions options)
     : engine_(petsc_backend().make_solver(std::move(options))) {}
 
@@ -45,6 +52,9 @@ void PetscSolver::add_lower_share(const Eigen::SparseMatrix<double>& lower) {
 
 void PetscSolver::setup_distributed() {
   engine_->setup_distributed();
+}
+void PetscSolver::assemble_own_rows(const Eigen::SparseMatrix<double>& lower) {
+  engine_->assemble_own_rows(lower);
 }
 
 KrylovOutcome PetscSolver::solve_distributed(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {

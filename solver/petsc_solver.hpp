@@ -17,6 +17,8 @@
 
 #include <Eigen/SparseCore>
 
+#include "solver/distributed_rows.hpp"
+
 namespace magfem {
 
 class Progress;
@@ -34,6 +36,9 @@ struct PetscSolverOptions {
   // pmg: equations (sorted) that the fine-level smoother solves together by a sparse
   // Cholesky factorization (the open-boundary shell); empty = none.
   const std::vector<int>* smoother_block = nullptr;
+  // Distributed pmg: the rows each process owns, decided before assembly
+  // (partition_distributed_rows); null: begin_distributed partitions the given pattern.
+  const DistributedRows* rows = nullptr;
 };
 
 // How a Krylov solve ended. `converged` only when it stopped on the tolerance.
@@ -87,6 +92,11 @@ public:
   // Collective: completes the assembly (off-process entries travel here) and sets up CG and
   // the preconditioner. Throws SolveError as setup() does.
   void setup_distributed();
+  // Own-row assembly (distributed_rows.hpp), in place of begin_distributed and
+  // add_lower_share: `lower` is this process's lower triangle (the whole system's size) with
+  // the complete entries of the rows it owns (options.rows, required); only those are set.
+  // Collective; setup_distributed() follows.
+  void assemble_own_rows(const Eigen::SparseMatrix<double>& lower);
   // Collective: CG on the assembled system from x = 0 for the right-hand side `rhs` (the whole
   // vector, the same on every process; each takes its own rows); fills
   // true_relative_residual. `x` receives the whole solution on every process. May be called
@@ -102,6 +112,14 @@ public:
 private:
   std::unique_ptr<PetscSolverEngine> engine_; // in the PETSc module
 };
+
+// Collective over MPI_COMM_WORLD: the rows of a distributed p-multigrid system each process
+// owns (pmg_partition.hpp), from the P1 graph (vertex_coupling_pattern), the interpolation
+// from the P1 unknowns and the smoother block (or null), all the same on every process.
+DistributedRows
+partition_distributed_rows(const Eigen::SparseMatrix<double>& vertex_pattern,
+                           const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation,
+                           const std::vector<int>* smoother_block);
 
 // Why PETSc would refuse `options.petsc_options` (their form: -name [value] pairs; a value or
 // a type name it does not know), or "" if it accepts them. Sets the preconditioner up with

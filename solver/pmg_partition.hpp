@@ -18,22 +18,24 @@
 
 #include <petscmat.h>
 
+#include <type_traits>
+
 #include <Eigen/SparseCore>
+
+#include "solver/distributed_rows.hpp"
 
 namespace magfem::petsc_module {
 
-struct PmgPartition {
-  std::vector<PetscInt> order;           // row of each equation in the distributed matrix
-  std::vector<PetscInt> coarse_order;    // coarse row of each P1 unknown
-  std::vector<PetscInt> local_equations; // equation of each row this process owns
-  PetscInt own_begin = 0, own_end = 0;   // the rows this process owns
-  PetscInt coarse_local = 0;             // how many coarse rows it owns
-};
+// The rows outside the module too (own-row assembly before the matrix exists): PETSc's
+// index type is int here (Debian's PETSc: 32-bit).
+static_assert(std::is_same_v<PetscInt, int>);
+using PmgPartition = DistributedRows;
 
 // Collective over PETSC_COMM_WORLD. `lower_pattern`: the whole system's lower triangle
-// (values unused), `q`: the interpolation from the P1 unknowns (p1_coarse_space.hpp),
-// `smoother_block`: the shell's equations (or null); all the same on every process. Throws
-// SolveError if PETSc fails.
+// (values unused; only the couplings of vertex equations are read, so the P1 graph of
+// vertex_coupling_pattern serves as well), `q`: the interpolation from the P1 unknowns
+// (p1_coarse_space.hpp), `smoother_block`: the shell's equations (or null); all the same on every
+// process. Throws SolveError if PETSc fails.
 PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
                                const Eigen::SparseMatrix<double, Eigen::RowMajor>& q,
                                const std::vector<int>* smoother_block);

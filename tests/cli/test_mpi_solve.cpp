@@ -2,11 +2,12 @@
 // `mpirun -n N magfem solve` against the serial run of the same case, for a coil over a
 // permeable plate (the coil source field evaluated per process, the inductance's sensitivity
 // solve distributed), a magnet over a saturable steel plate (Newton with distributed residuals
-// and tangents) and a P2 magnetized sphere with CG + pmg (the CG iteration count within 1.5x
-// of the serial one). The energy and the coil's flux linkage agree to 1e-8, the inductance to
-// 1e-6 (both runs' sensitivity solves are loose and corrected), and every probe value to 1e-6
-// of the largest |B|; a Newton that does not converge ends every process with exit 3 and
-// writes nothing.
+// and tangents) and a P2 magnetized sphere with CG + pmg (the CG iteration count within 1.2x
+// of the serial one on 2 processes, 1.5x on 3); P2 without coils by own-row assembly (each
+// process the tetrahedra of its own rows, solver/distributed_rows.hpp), which the note says. The
+// energy and the coil's flux linkage agree to 1e-8, the inductance to 1e-6 (both runs' sensitivity
+// solves are loose and corrected), and every probe value to 1e-6 of the largest |B|; a Newton that
+// does not converge ends every process with exit 3 and writes nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,12 +135,16 @@ std::string steel_case(const fs::path& dir) {
 // with block Jacobi across the processes as the smoother, on a partition of the mesh with the
 // open-boundary shell whole on process 0 (petsc_ksp_solver.cpp). The smoother is weaker than
 // the serial one only at the partition's interfaces, so the iteration count stays near the
-// serial one: measured 22 / 24 / 24 CG iterations on 1 / 2 / 3 processes here (21 / 23 / 26
-// at --mesh-scale 4); the shell cut between processes took twice the serial count, rows in
-// contiguous blocks of the DOF numbering four times. 1.5x is the bound. Without the
-// shell 15 or 16 against 14 serially; there a coarse operator off by a factor 2 (not P^T A
-// P) took 21, which 1.3x catches (with the shell it took 30, within 1.5x).
+// serial one: measured 22 / 23-24 / 24-27 CG iterations on 1 / 2 / 3 processes here (21 / 23 /
+// 26 at --mesh-scale 4; PT-Scotch's cut, and with it the count, varies from run to run, most on
+// 3 processes sharing 2 cores); the shell cut between processes took twice the serial count,
+// rows in contiguous blocks of the DOF numbering four times. 1.5x is the bound, kept
+// for 3 processes and the larger cases. On 2 processes the coarse sphere stays within 1.1x
+// with the shell, so 1.2x there, and within 1.21x without it (16-17 against 14), so 1.3x: a
+// coarse operator off by a factor 2 (not P^T A P) took 30 with the shell (1.36x) and 20
+// without it (1.43x), which they catch.
 constexpr double pmg_iteration_ratio = 1.5;
+constexpr double pmg_iteration_ratio_two_processes = 1.2;
 constexpr double pmg_iteration_ratio_without_shell = 1.3;
 
 // The magnetized sphere, P2, CG + pmg to 1e-12 serially and distributed, coarse (35k
@@ -164,8 +169,10 @@ std::string sphere_pmg_case(const fs::path& dir, bool open) {
 }
 
 // expect_serial_field, and both runs used pmg with the distributed one's CG iterations within
-// `ratio` of the serial one's.
-void expect_serial_pmg(const fs::path& dir, const std::string& args, int n, double ratio) {
+// `ratio` of the serial one's; `own_rows`: each process assembled the tetrahedra of its own
+// rows (solver/distributed_rows.hpp; P2 without coils), which the note says.
+void expect_serial_pmg(const fs::path& dir, const std::string& args, int n, double ratio,
+                       bool own_rows = true) {
   expect_serial_field(dir, args, n);
   const auto s = magfem::test::read_json(dir / "serial" / "summary.json");
   const auto m = magfem::test::read_json(dir / ("ranks_" + std::to_string(n)) / "summary.json");
@@ -175,7 +182,9 @@ void expect_serial_pmg(const fs::path& dir, const std::string& args, int n, doub
   EXPECT_LE(distributed, ratio * serial) << serial << " serially";
   std::printf("%d ranks: %d CG + pmg iterations against %d serially\n", n, distributed, serial);
   ASSERT_EQ(m["solver_notes"].size(), 1u);
-  EXPECT_NE(std::string(m["solver_notes"][0]).find("p-multigrid"), std::string::npos);
+  const std::string note = m["solver_notes"][0];
+  EXPECT_NE(note.find("p-multigrid"), std::string::npos);
+  EXPECT_EQ(note.find("tetrahedra of its own rows") != std::string::npos, own_rows) << note;
 }
 
 } // namespace
@@ -185,7 +194,8 @@ TEST_F(MpiSolve, PmgOnTwoAndThreeProcessesKeepsTheSerialField) {
   const fs::path dir = magfem::test::fresh_dir("sphere_pmg");
   const std::string args = sphere_pmg_case(dir, true);
   for (int n : {2, 3})
-    expect_serial_pmg(dir, args, n, pmg_iteration_ratio);
+    expect_serial_pmg(dir, args, n,
+                      n == 2 ? pmg_iteration_ratio_two_processes : pmg_iteration_ratio);
   fs::remove_all(dir);
 }
 
@@ -196,19 +206,36 @@ TEST_F(MpiSolve, PmgWithoutShellOnTwoProcessesKeepsTheSerialField) {
   fs::remove_all(dir);
 }
 
-// P2 with pmg for a coil (the inductance's sensitivity solves on the distributed pmg too) and
-// for Newton on saturable steel (the partition and each process's shell factor kept across
-// the steps): 10-20 s a run, label long.
-TEST_F(MpiSolve, LongP2CoilAndNonlinearCasesWithPmgOnTwoProcesses) {
+// P2 with pmg for a coil (the inductance's sensitivity solves on the distributed pmg too; the
+// coil's source field on contiguous shares of the tetrahedra, so not own-row assembly) and
+// for Newton on saturable steel (own-row assembly; the partition and each process's shell
+// factor kept across the steps), on 2 and 3 processes: 10-20 s a run, label long.
+TEST_F(MpiSolve, LongP2CoilAndNonlinearCasesWithPmgOnTwoAndThreeProcesses) {
   for (const std::string example : {"3d/coil_over_plate.yaml", "3d/magnet_over_steel_plate.yaml"}) {
     const fs::path dir = magfem::test::fresh_dir("p2_" + fs::path(example).stem().string());
     const std::string args =
         write_case(dir, example, "solver: {order: 2, preconditioner: pmg, linear_tolerance: 1e-12}")
             .string() +
         " --mesh-scale 4";
-    expect_serial_pmg(dir, args, 2, pmg_iteration_ratio);
+    for (int n : {2, 3})
+      expect_serial_pmg(dir, args, n, pmg_iteration_ratio,
+                        example.find("coil") == std::string::npos);
     fs::remove_all(dir);
   }
+}
+
+// Own-row assembly with Newton: every residual, the line search's too, from the rows each
+// process owns (the tetrahedra of its rows assembled, ghost ones included), P2 magnet over
+// saturable steel, coarse (107k unknowns, ~6 s a run).
+TEST_F(MpiSolve, OwnRowAssemblyOfNonlinearIronOnTwoProcessesGivesTheSerialField) {
+  const fs::path dir = magfem::test::fresh_dir("steel_own_rows");
+  const std::string args =
+      write_case(dir, "3d/magnet_over_steel_plate.yaml",
+                 "solver: {order: 2, preconditioner: pmg, linear_tolerance: 1e-12}")
+          .string() +
+      " --mesh-scale 6";
+  expect_serial_pmg(dir, args, 2, pmg_iteration_ratio);
+  fs::remove_all(dir);
 }
 
 // The coil's source field on each process's own tetrahedra, the distributed inductance solve.

@@ -1,13 +1,16 @@
 // The element shares of a distributed solve: every tetrahedron assembled by exactly one
 // process, in contiguous ranges whose sizes differ by at most one, and the shares' residuals
 // and tangents adding up to the whole mesh's. (The distributed solve itself runs under mpirun
-// in tests/cli/test_mpi.cpp and test_mpi_solve.cpp.)
+// in tests/cli/test_mpi.cpp and test_mpi_solve.cpp.) And own-row assembly: each process's
+// tetrahedra those touching its rows, whose rows then come out as the whole mesh's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 
 #include "box_problem3d.hpp"
 #include "materials/material_library.hpp"
+#include "solver/distributed_rows.hpp"
 #include "solver/distributed_solve3d.hpp"
 #include "solver/dof_map3d.hpp"
 
@@ -39,7 +42,7 @@ TEST(ElementShare, SharesResidualsAndTangentsSumToTheWholeMesh) {
   magfem::test::BoxProblem3D box(4, 2, magfem::OuterKind3D::dirichlet);
   box.problem.parts[1].material = magfem::MaterialLibrary::bundled().find("steel_1010");
   const magfem::DofMap3D dofs(box.mesh, 2);
-  const magfem::Assembler3D whole(box.problem, dofs, {1, {}});
+  const magfem::Assembler3D whole(box.problem, dofs, {1, {}, nullptr});
   ASSERT_FALSE(whole.is_linear());
   const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(whole.n_unknowns(), -300.0, 500.0);
   Eigen::VectorXd r_whole;
@@ -50,8 +53,8 @@ TEST(ElementShare, SharesResidualsAndTangentsSumToTheWholeMesh) {
   Eigen::VectorXd r_sum = Eigen::VectorXd::Zero(r_whole.size());
   Eigen::SparseMatrix<double> k_sum = k_whole * 0.0;
   for (int rank = 0; rank < size; ++rank) {
-    const magfem::Assembler3D share(box.problem, dofs,
-                                    {1, magfem::element_share(box.mesh.n_tets(), rank, size)});
+    const magfem::Assembler3D share(
+        box.problem, dofs, {1, magfem::element_share(box.mesh.n_tets(), rank, size), nullptr});
     Eigen::VectorXd r;
     Eigen::SparseMatrix<double> k;
     share.evaluate(u, r, &k, magfem::TangentKind::newton);
@@ -69,6 +72,70 @@ TEST(ElementShare, SharesResidualsAndTangentsSumToTheWholeMesh) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(diff, j); it; ++it)
       off = std::max(off, std::abs(it.value()));
   EXPECT_LE(off, 1e-12 * largest);
+}
+
+// Own-row assembly (solver/distributed_rows.hpp): three processes owning the equations in
+// slabs along x (a partition of the mesh, as PT-Scotch's), each assembling the tetrahedra that
+// touch its rows. Its own rows of the residual and the tangent are then the whole mesh's bit for
+// bit: a row's entries come only from the tetrahedra touching it, all of them there, summed in the
+// same element order. The own rows together are every row once, and a process's pattern is a part
+// of the whole one (the memory own-row assembly saves). A tetrahedron touching two processes' rows
+// assembled by one only, or a ghost tetrahedron dropped, leaves a row short.
+TEST(OwnRowAssembly, OwnRowsOfEachProcessAreTheWholeMeshsRows) {
+  magfem::test::BoxProblem3D box(4, 2, magfem::OuterKind3D::dirichlet);
+  box.problem.parts[1].material = magfem::MaterialLibrary::bundled().find("steel_1010");
+  const magfem::DofMap3D dofs(box.mesh, 2);
+  const magfem::Assembler3D whole(box.problem, dofs, {1, {}, nullptr});
+  const int n = whole.n_unknowns();
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(n, -300.0, 500.0);
+  Eigen::VectorXd r_whole;
+  Eigen::SparseMatrix<double> k_whole;
+  whole.evaluate(u, r_whole, &k_whole, magfem::TangentKind::newton);
+
+  // Rows in slabs along x, as a partition of the mesh gives them: equations ordered by the x
+  // of their DOF point.
+  std::vector<double> x(n);
+  for (int d = 0; d < dofs.n_dofs(); ++d)
+    if (const int eq = whole.dof_to_equation()[d]; eq >= 0)
+      x[eq] = dofs.dof_points()[d].x();
+  std::vector<int> by_x(n), order(n);
+  std::iota(by_x.begin(), by_x.end(), 0);
+  std::stable_sort(by_x.begin(), by_x.end(), [&](int a, int b) { return x[a] < x[b]; });
+  for (int row = 0; row < n; ++row)
+    order[by_x[row]] = row;
+  constexpr int size = 3;
+  std::vector<int> owners(n, 0);
+  std::size_t n_assembled = 0;
+  for (int rank = 0; rank < size; ++rank) {
+    magfem::DistributedRows rows;
+    rows.order = order;
+    rows.own_begin = n * rank / size;
+    rows.own_end = n * (rank + 1) / size;
+    const auto tets = std::make_shared<const std::vector<std::size_t>>(
+        magfem::tets_touching_own_rows(dofs, box.mesh.n_tets(), whole.dof_to_equation(), rows));
+    n_assembled += tets->size();
+    const magfem::Assembler3D share(box.problem, dofs, {1, {}, tets});
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> k;
+    share.evaluate(u, r, &k, magfem::TangentKind::newton);
+    EXPECT_LT(k.nonZeros(), k_whole.nonZeros()) << "rank " << rank;
+    for (int i = 0; i < n; ++i)
+      if (rows.owns(i)) {
+        ++owners[i];
+        EXPECT_EQ(r[i], r_whole[i]) << "residual row " << i << ", rank " << rank;
+      }
+    // Every lower entry (i, j) in an own row (i, or j by symmetry).
+    for (int j = 0; j < k_whole.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(k_whole, j); it; ++it)
+        if (rows.owns(static_cast<int>(it.row())) || rows.owns(j)) {
+          ASSERT_EQ(k.coeff(it.row(), j), it.value())
+              << "entry (" << it.row() << ", " << j << "), rank " << rank;
+        }
+  }
+  EXPECT_EQ(std::count(owners.begin(), owners.end(), 1), n);
+  // The ghost layer: some tetrahedra assembled twice, not all.
+  EXPECT_GT(n_assembled, box.mesh.n_tets());
+  EXPECT_LT(n_assembled, 2 * box.mesh.n_tets());
 }
 
 } // namespace

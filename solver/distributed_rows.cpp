@@ -1,0 +1,47 @@
+#include "solver/distributed_rows.hpp"
+
+#include <algorithm>
+
+#include "mesh/mesh3d.hpp"
+#include "solver/dof_map3d.hpp"
+
+namespace magfem {
+
+Eigen::SparseMatrix<double> vertex_coupling_pattern(const Mesh3D& mesh,
+                                                    const std::vector<int>& dof_to_eq) {
+  // The equations are numbered 0 .. n - 1 over the free DOFs.
+  const auto n = static_cast<Eigen::Index>(
+      std::count_if(dof_to_eq.begin(), dof_to_eq.end(), [](int eq) { return eq >= 0; }));
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(mesh.n_tets() * 6);
+  // The vertices are DOFs 0 .. n_vertices - 1 (dof_map3d.hpp): a tet's nodes are its vertex DOFs.
+  for (const auto& tet : mesh.tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const int i = dof_to_eq[tet[a]], j = dof_to_eq[tet[b]];
+        if (i >= 0 && j >= 0 && i > j)
+          entries.emplace_back(i, j, 1.0);
+      }
+  Eigen::SparseMatrix<double> pattern(n, n);
+  // Duplicates summed: only the pattern matters.
+  pattern.setFromTriplets(entries.begin(), entries.end());
+  return pattern;
+}
+
+std::vector<std::size_t> tets_touching_own_rows(const DofMap3D& dofs, std::size_t n_tets,
+                                                const std::vector<int>& dof_to_eq,
+                                                const DistributedRows& rows) {
+  std::vector<std::size_t> tets;
+  const int per = dofs.dofs_per_element();
+  for (std::size_t t = 0; t < n_tets; ++t) {
+    const int* dof = dofs.element_dofs(t);
+    for (int i = 0; i < per; ++i)
+      if (const int eq = dof_to_eq[dof[i]]; eq >= 0 && rows.owns(eq)) {
+        tets.push_back(t);
+        break;
+      }
+  }
+  return tets;
+}
+
+} // namespace magfem
