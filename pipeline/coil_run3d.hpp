@@ -77,6 +77,8 @@ void check_coils_in_air(const CaseSpec& spec, const CaseCoils& coils);
 // The linear solver options of the coils' sensitivity solves (the case's, at most 1e-5 tight:
 // the inductance takes the variational correction, coil_run3d.cpp).
 LinearSolverOptions sensitivity_solver_options(LinearSolverOptions options);
+// The same for the distributed solves under mpirun (a decade tighter: coil_run3d.cpp).
+LinearSolverOptions distributed_sensitivity_solver_options(LinearSolverOptions options);
 // u: the converged free-DOF solution. The sensitivities are run.coil_sensitivities when a
 // distributed solve computed them, else solved here.
 CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,

@@ -296,9 +296,9 @@ public:
     // alone. (A Newton that did not converge ends the run on every process anyway.)
     if (report.converged && run_.coils && run_.spec.coil_inductance) {
       const auto t0 = std::chrono::steady_clock::now();
-      run_.coil_sensitivities =
-          current_sensitivities_distributed(assembler, world_.size, u, run_.coils->n_coils(),
-                                            sensitivity_solver_options(run_.spec.newton.linear));
+      run_.coil_sensitivities = current_sensitivities_distributed(
+          assembler, world_.size, u, run_.coils->n_coils(),
+          distributed_sensitivity_solver_options(run_.spec.newton.linear));
       run_.coil_sensitivity_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
