@@ -101,7 +101,8 @@ double adapt_quantity_value(const AdaptQuantity& q, double energy_J,
                             const std::vector<std::string>& b_columns);
 
 // A force quantity's relative error (%) as the force's own one-mesh estimate gives it
-// (ForceResult::force_err, torque_err), or NaN (energy, probes, a force without an estimate).
+// (ForceResult::force_err, torque_err: 3D stress tensor and Lorentz), or NaN (energy, probes,
+// a force without an estimate).
 double adapt_quantity_mesh_error_pct(const AdaptQuantity& q,
                                      const std::vector<ForceResult>& forces);
 

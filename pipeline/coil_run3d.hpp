@@ -18,6 +18,8 @@
 
 namespace magfem {
 
+class PatchRecovery3D;
+
 class CoilField;
 struct Run3D;
 class Assembler3D;
@@ -85,6 +87,12 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
                                  const Eigen::VectorXd& u);
 // Lorentz force specs of the case (sums over the named coils) as force results.
 std::vector<ForceResult> coil_lorentz_forces(const Run3D& run);
+// Each Lorentz force result's one-mesh error estimate (force_err, torque_err): per
+// component, the difference between the reported integral of the element field and the same
+// integral of the patch-recovered field (coil_run3d.cpp says why). `forces` holds the
+// results by name, as coil_lorentz_forces made them.
+void estimate_lorentz_errors_3d(const Run3D& run, const PatchRecovery3D& recovery,
+                                std::vector<ForceResult>& forces);
 nlohmann::ordered_json coil_results_json(const CoilResults& results);
 // summary.json's coils (coil_results_json), inductance_H {names, matrix} when computed, and
 // coil_warnings.

@@ -341,11 +341,13 @@ public:
     run_.coil_results = compute_coil_results(run_, assembler, u);
     run_.report.factorized.reset(); // its memory is not needed after the sensitivity solves
   }
-  // The energy-norm estimate and one for each stress-tensor force, from one patch recovery.
+  // The energy-norm estimate and one for each stress-tensor and Lorentz force, from one patch
+  // recovery.
   void estimate_error() const {
     const PatchRecovery3D recovery(*run_.field);
     run_.error_estimate = estimate_error_3d(recovery, run_.energy.total_J);
     estimate_force_errors_3d(run_, recovery, run_.forces);
+    estimate_lorentz_errors_3d(run_, recovery, run_.forces);
   }
   void check_finite_fields() const {
     check_finite(run_.recovered_B.values(), "recovered flux density");

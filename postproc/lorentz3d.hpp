@@ -13,6 +13,7 @@
 
 #include "postproc/field3d.hpp"
 #include "postproc/maxwell_stress.hpp"
+#include "postproc/patch_recovery3d.hpp"
 #include "postproc/point_locator3d.hpp"
 
 namespace magfem {
@@ -27,5 +28,13 @@ struct CoilVolumePoint {
 ForceTorque lorentz_force_3d(const Field3D& field, const PointLocator3D& locator, int coil,
                              const std::vector<CoilVolumePoint>& points,
                              const Eigen::Vector3d& torque_point);
+
+// The same integral with the patch-recovered B* (patch_recovery3d.hpp) in place of the
+// element field: their difference is the reported force's one-mesh error estimate
+// (pipeline/coil_run3d.cpp). Throws std::invalid_argument as lorentz_force_3d.
+ForceTorque lorentz_force_recovered_3d(const PatchRecovery3D& recovery,
+                                       const PointLocator3D& locator, int coil,
+                                       const std::vector<CoilVolumePoint>& points,
+                                       const Eigen::Vector3d& torque_point);
 
 } // namespace magfem

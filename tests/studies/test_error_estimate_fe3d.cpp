@@ -13,6 +13,7 @@
 
 #include "core/constants.hpp"
 #include "pipeline/run3d.hpp"
+#include "pipeline/run_analytic.hpp"
 #include "studies/sweep.hpp"
 #include "tests/case_helpers.hpp"
 
@@ -103,4 +104,36 @@ TEST(ErrorEstimateFE3D, CompensatorTorqueWithinThreeEstimates) {
 TEST(ErrorEstimateFE3D, LongCompensatorTorqueAtFinerMeshes) {
   for (double scale : {2.0, 1.6})
     check_torque(compensator_at_90(scale));
+}
+
+// The Lorentz torque's one-mesh estimate (pipeline/coil_run3d.cpp: the element field's
+// integral against the patch-recovered field's) on the small spherical actuator with coil a1
+// at 1 A: the charge model's torque (run_case_analytic, exact for mu_r 1 magnets in air: the
+// actuator tests) is the exact answer. The bound, true error <= 3x the estimate, at
+// mesh scales 1 and 0.8 (88k and 146k unknowns; measured true / estimate 0.14 and 0.31).
+// What it cannot see: error carried in from elsewhere (coarse magnets: at mesh scale 1.5 the
+// torque was 4.5 % off with an estimate of 0.13 %, the field at the coil smooth and wrong);
+// the adaptive loop takes the larger of this and the change between passes, which does.
+TEST(ErrorEstimateFE3D, LorentzTorqueOnACoilWithinThreeEstimates) {
+  std::string text = test::small_actuator_case;
+  const std::string a1 = "axis_angles: [60, 0], turns: 100, current: 0";
+  text.replace(text.find(a1), a1.size(), "axis_angles: [60, 0], turns: 100, current: 1");
+  text += "forces:\n  - {name: a1, type: lorentz, coils: [a1]}\n";
+  const CaseSpec spec = read_case(test::write_temp_case("lorentz_estimate.yaml", text));
+  const Eigen::Vector3d exact = run_case_analytic(spec, {})->forces.at(0).torque;
+  for (double scale : {1.0, 0.8}) {
+    RunOverrides ov;
+    ov.mesh_scale = scale;
+    const auto run = run_case_3d(spec, ov);
+    const ForceResult& f = run->forces.at(0);
+    ASSERT_EQ(f.name, "a1");
+    ASSERT_TRUE(f.estimated);
+    const double truth = (f.torque - exact).norm(), estimate = f.torque_err.norm();
+    std::printf("mesh scale %.1f: Lorentz torque %.3g %% off the charge model, estimated %.3g %%\n",
+                scale, 100 * truth / exact.norm(), 100 * estimate / exact.norm());
+    EXPECT_LE(truth, 3 * estimate);
+    // A sanity check on its scale (an own field left in the recovered integral would be
+    // tens of per cent): measured 0.86 % and 0.45 %.
+    EXPECT_LT(estimate, 0.02 * exact.norm());
+  }
 }
