@@ -10,6 +10,7 @@
 
 #include "pipeline/build_info.hpp"
 #include "studies/gnuplot.hpp"
+#include "validation/number_text.hpp"
 #include "validation/report_plot.hpp"
 #include "validation/report_text.hpp"
 #include "validation/validate_report.hpp"
@@ -53,25 +54,6 @@ const char* const page_style =
     "figure svg{max-width:100%;height:auto;display:block}"
     "pre{font-size:12px;overflow-x:auto;background:#f7f7f7;padding:.5em}"
     ".muted{color:#666;font-size:.9em}";
-
-// A number to `sig` significant digits, without exponent in the range people read.
-std::string round_text(double v, int sig = 4) {
-  char buf[64];
-  const double a = std::abs(v);
-  if (v == 0 || (a >= 1e-4 && a < 1e7)) {
-    const int digits = v == 0 ? 0 : sig - 1 - static_cast<int>(std::floor(std::log10(a)));
-    std::snprintf(buf, sizeof buf, "%.*f", std::max(0, digits), v);
-    std::string s = buf;
-    if (s.find('.') != std::string::npos) { // 0.2500 -> 0.25
-      s.erase(s.find_last_not_of('0') + 1);
-      if (s.back() == '.')
-        s.pop_back();
-    }
-    return s;
-  }
-  std::snprintf(buf, sizeof buf, "%.*g", sig, v);
-  return buf;
-}
 
 std::string source_anchor(const std::string& file) {
   return "src-" + file.substr(0, file.find('.'));

@@ -10,6 +10,7 @@
 
 #include "analytic/closed_forms.hpp"
 #include "core/constants.hpp"
+#include "validation/number_text.hpp"
 #include "validation/validate_evaluators.hpp"
 
 namespace magfem {
@@ -136,12 +137,6 @@ GapField fe_gap_field(const EvalContext& ctx, double gap, const FeMesh& mesh, Ev
   return stats(br);
 }
 
-std::string with_digits(double v, int significant) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
-  return buf;
-}
-
 // The thickness of the case's current sheet (its sectors carrying current), 0 if it has none.
 // The sheet is non-magnetic, so it adds to the gap the series sees (a surface sheet).
 double sheet_thickness(const CaseSpec& spec) {
@@ -191,10 +186,10 @@ EvalResult table1(const EvalContext& ctx) {
     // To first order the sheet's thickness t widens every gap by t: B(g) ~ 1 / (g + t).
     const double t = paper ? sheet_thickness(*cached_case(ctx.cache, e.case_file)) : 0;
     if (t > 0 && ratio)
-      fe_text += " (its sheet, " + with_digits(t * 1e3, 3) +
+      fe_text += " (its sheet, " + round_text(t * 1e3, 3) +
                  " mm thick inside the core, adds to the gap: expected FE / series - 1 = t (1/" +
-                 with_digits(ref_gap * 1e3, 3) +
-                 " mm - 1/g) = " + with_digits(100 * t * (1 / ref_gap - 1 / gap), 3) + " %)";
+                 round_text(ref_gap * 1e3, 3) +
+                 " mm - 1/g) = " + round_text(100 * t * (1 / ref_gap - 1 / gap), 3) + " %)";
   }
   r.method =
       "Mid-gap radial field (magnet radius " + std::to_string(a * 1e3).substr(0, 4) + " mm) by " +
