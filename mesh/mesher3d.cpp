@@ -24,6 +24,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_quality3d.hpp"
 #include "mesh/size_field3d.hpp"
+#include "mesh/spatial_order3d.hpp"
 #include "mesh/surface_mesher3d.hpp"
 #include "mesh/surface_part_checks3d.hpp"
 #include "mesh/surface_part_rays3d.hpp"
@@ -501,6 +502,7 @@ Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
     m.shell_inner_radius = geo.outer.radius;
     m.shell_outer_radius = geo.outer.shell_ratio * geo.outer.radius;
   }
+  order_spatially(m); // TetGen's insertion order scatters every matrix row's columns
   m.quality = compute_quality_3d(m.nodes, m.tets);
   return m;
 }
