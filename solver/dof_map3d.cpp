@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <variant>
 
+#include "core/parallel_blocks.hpp"
+#include "core/thread_count.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
 
@@ -32,26 +35,65 @@ DofMap3D::DofMap3D(const Mesh3D& mesh, int order) : order_(order) {
       element_dofs_[t * per + i] = mesh.tets[t][i];
   if (order == 1)
     return;
+  number_edges(mesh);
+}
 
-  // Sort (edge key, slot) pairs once: numbers the edges deterministically and fills the
-  // element tables without a search per element edge.
-  std::vector<std::pair<long long, std::size_t>> slots;
-  slots.reserve(n_tets * 6);
-  for (std::size_t t = 0; t < n_tets; ++t)
-    for (int e = 0; e < 6; ++e)
-      slots.emplace_back(edge_key(mesh.tets[t][tet_edges[e][0]], mesh.tets[t][tet_edges[e][1]]),
-                         t * per + 4 + e);
-  std::sort(slots.begin(), slots.end());
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    if (k == 0 || slots[k].first != slots[k - 1].first) {
-      const long long key = slots[k].first;
-      edge_keys_.push_back(key);
-      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffLL);
-      points_.push_back(0.5 * (mesh.nodes[a] + mesh.nodes[b]));
-      ++n_dofs_;
-    }
-    element_dofs_[slots[k].second] = n_dofs_ - 1;
+// Edges numbered in sorted order of their vertex pair (a < b), as one sort of all 6 n_tets
+// (key, slot) pairs would number them, but bucketed by the lower vertex first: a bucket holds
+// about 7 edges, so sorting buckets is linear in the mesh and runs on all cores, where the
+// one sort of 9.5 M pairs was a serial second of benchmark32's assembly stage.
+void DofMap3D::number_edges(const Mesh3D& mesh) {
+  const std::size_t n_tets = mesh.n_tets();
+  const auto n_vertices = static_cast<std::size_t>(n_vertices_);
+  std::vector<std::size_t> first(n_vertices + 1, 0); // bucket of vertex a: first[a]..first[a+1]
+  for (const auto& tet : mesh.tets)
+    for (const auto& e : tet_edges)
+      ++first[std::min(tet[e[0]], tet[e[1]]) + 1];
+  for (std::size_t a = 0; a < n_vertices; ++a)
+    first[a + 1] += first[a];
+  // (upper vertex, element slot) per element edge, in its lower vertex's bucket.
+  std::vector<std::pair<int, std::size_t>> entries(first[n_vertices]);
+  {
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for (std::size_t t = 0; t < n_tets; ++t)
+      for (int e = 0; e < 6; ++e) {
+        const int a = mesh.tets[t][tet_edges[e][0]], b = mesh.tets[t][tet_edges[e][1]];
+        entries[next[std::min(a, b)]++] = {std::max(a, b), t * 10 + 4 + e};
+      }
   }
+  // Sorted buckets and each one's count of distinct edges; then the numbers, in vertex order.
+  const int threads = element_loop_threads(n_tets);
+  std::vector<int> n_edges(n_vertices + 1, 0);
+  parallel_blocks(n_vertices, 4096, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
+    for (std::size_t a = lo; a < hi; ++a) {
+      const auto begin = entries.begin() + static_cast<std::ptrdiff_t>(first[a]);
+      const auto end = entries.begin() + static_cast<std::ptrdiff_t>(first[a + 1]);
+      std::sort(begin, end);
+      for (auto it = begin; it != end; ++it)
+        if (it == begin || it->first != (it - 1)->first)
+          ++n_edges[a + 1];
+    }
+  });
+  for (std::size_t a = 0; a < n_vertices; ++a)
+    n_edges[a + 1] += n_edges[a];
+  const int n_edges_total = n_edges[n_vertices];
+  edge_keys_.resize(static_cast<std::size_t>(n_edges_total));
+  points_.resize(n_vertices + static_cast<std::size_t>(n_edges_total));
+  n_dofs_ = n_vertices_ + n_edges_total;
+  parallel_blocks(n_vertices, 4096, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
+    for (std::size_t a = lo; a < hi; ++a) {
+      int k = n_edges[a] - 1;
+      for (std::size_t i = first[a]; i < first[a + 1]; ++i) {
+        const int b = entries[i].first;
+        if (i == first[a] || b != entries[i - 1].first) {
+          ++k;
+          edge_keys_[static_cast<std::size_t>(k)] = edge_key(static_cast<int>(a), b);
+          points_[n_vertices + static_cast<std::size_t>(k)] = 0.5 * (mesh.nodes[a] + mesh.nodes[b]);
+        }
+        element_dofs_[entries[i].second] = n_vertices_ + k;
+      }
+    }
+  });
 }
 
 int DofMap3D::edge_dof(int a, int b) const {
@@ -80,25 +122,35 @@ void DofMap3D::curve_to_spheres(const Mesh3D& mesh, const std::vector<SphereSurf
   if (order_ != 2)
     return;
   // Faces of the region interfaces and the outer boundary: those whose two tets differ in
-  // part, or that have one tet. Sorting the 4 n_tets face keys finds the pairs.
+  // part, or that have one tet. Sorting the face keys finds the pairs; only faces with all
+  // three vertices on one sphere can be curved, so only those are sorted (a few percent of
+  // the 4 n_tets faces; sorting all was a serial second of benchmark32's assembly stage).
+  auto on_sphere = [&](int v, const SphereSurface& s) {
+    return std::abs((mesh.nodes[v] - s.center).norm() - s.radius) <= 1e-9 * s.radius;
+  };
+  // Per vertex, the spheres it lies on as bits (spheres past the 64th share the last bit: a
+  // face kept too many is rejected by the test below, never one too few).
+  std::vector<std::uint64_t> sphere_bits(mesh.n_nodes(), 0);
+  for (std::size_t v = 0; v < mesh.n_nodes(); ++v)
+    for (std::size_t k = 0; k < spheres.size(); ++k)
+      if (on_sphere(static_cast<int>(v), spheres[k]))
+        sphere_bits[v] |= std::uint64_t{1} << std::min<std::size_t>(k, 63);
   struct FaceRef {
     std::array<int, 3> key;
     int part;
   };
   std::vector<FaceRef> faces;
-  faces.reserve(mesh.n_tets() * 4);
   for (std::size_t t = 0; t < mesh.n_tets(); ++t)
     for (int f = 0; f < 4; ++f) {
       std::array<int, 3> k = {mesh.tets[t][(f + 1) % 4], mesh.tets[t][(f + 2) % 4],
                               mesh.tets[t][(f + 3) % 4]};
+      if ((sphere_bits[k[0]] & sphere_bits[k[1]] & sphere_bits[k[2]]) == 0)
+        continue;
       std::sort(k.begin(), k.end());
       faces.push_back({k, mesh.tet_part[t]});
     }
   std::sort(faces.begin(), faces.end(),
             [](const FaceRef& a, const FaceRef& b) { return a.key < b.key; });
-  auto on_sphere = [&](int v, const SphereSurface& s) {
-    return std::abs((mesh.nodes[v] - s.center).norm() - s.radius) <= 1e-9 * s.radius;
-  };
   std::vector<char> moved(n_dofs_, 0);
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;

@@ -57,6 +57,7 @@ public:
   std::vector<int> dofs_on_faces(const std::vector<std::array<int, 3>>& faces) const;
 
 private:
+  void number_edges(const Mesh3D& mesh); // order 2: the edge DOFs, their keys and points
   int edge_dof(int a, int b) const;
   void mark_curved(const Mesh3D& mesh, const std::vector<char>& moved);
   double min_jacobian_ratio(std::size_t t) const; // order 2
