@@ -43,15 +43,11 @@ double estimated_error_pct(const Run3D& run) {
   return 100 * run.forces.at(0).torque_err.norm() / run.forces.at(0).torque.norm();
 }
 
+// At --mesh-scale 1.5: a coarse first mesh (80k unknowns).
 std::unique_ptr<Run3D> solve_with(const CaseSpec& spec, std::vector<SizeSample3D> sizes) {
-  CaseSpec s = spec;
-  s.adapt = {};
-  if (!sizes.empty()) // none: the case's own mesh
-    s.geometry3d.options.refine_sizes =
-        std::make_shared<const std::vector<SizeSample3D>>(std::move(sizes));
   RunOverrides ov;
   ov.mesh_scale = 1.5;
-  return run_case_3d(s, ov);
+  return test::solve_with_sizes_3d(spec, std::move(sizes), ov);
 }
 
 } // namespace
@@ -98,16 +94,14 @@ TEST(Adapt3DForce, GoalRefinesOnTheStressSphereAndBeatsTheEnergyPush) {
     EXPECT_LE(true_error_pct(*run), 3 * estimated_error_pct(*run));
 }
 
-// The loop with the goal on the same spheres (from --mesh-scale 2, to 0.3 %): it reaches the
+// The loop with the goal on the same spheres (from --mesh-scale 2, to 0.35 %): it reaches the
 // torque's target, every pass refines the one before, and the estimate of every pass that has
-// one is honest. Measured: 51.7k, 128k, 220k unknowns; torque 0.180, 0.124, 0.052 % true,
-// 0.303, 0.176 % estimated (passes 2, 3). Planted: the size rule's exponent negated (no
-// source finer than its tet: the second pass is the first mesh again) fails "every pass
-// refines". (With the energy rule beside the sources, the second pass lands 0.13 % true with
-// 178k unknowns and a 0.05 % change from the first, by chance close: that converges at two.)
+// one is honest. Measured: 51.7k, 151k, 271k unknowns; torque 0.180, 0.279, 0.035 % true,
+// 0.333, 0.315 % estimated (passes 2, 3; to 0.3 % a fourth pass, 440k, 0.0558 %). Planted:
+// the size rule's exponent negated (no source finer than its tet) fails.
 TEST(Adapt3DForce, LoopReachesTheTorqueAndEveryPassRefines) {
   CaseSpec spec = spheres_spec();
-  spec.adapt.accuracy_pct = 0.3;
+  spec.adapt.accuracy_pct = 0.35;
   spec.adapt.max_passes = 4;
   spec.adapt.max_unknowns = 2e6;
   RunOverrides ov;
