@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "pipeline/run3d.hpp"
 #include "core/input_error.hpp"
+#include "pipeline/run3d.hpp"
 #include "postproc/force_estimate3d.hpp"
 #include "postproc/maxwell_stress3d.hpp"
 #include "postproc/point_locator3d.hpp"
@@ -110,6 +110,14 @@ void set_estimate(ForceResult& r, const ForceTorque& element, const ForceTorque&
 
 } // namespace
 
+std::vector<SurfacePoint> force_surface_points(const ForceSpec& f) {
+  if (f.kind == ForceSpec::Kind::sphere)
+    return sphere_quadrature(f.center, f.radius, sphere_theta, 2 * sphere_theta);
+  if (f.kind == ForceSpec::Kind::box)
+    return box_quadrature(f.center, f.size, box_long);
+  return {};
+}
+
 // Why a spread of three fields: the reported force integrates the nodal-average B; the
 // element B (discontinuous) and the patch-recovered B* converge to the same field, and for
 // the exact field all three integrals agree, so their disagreement measures the
@@ -131,9 +139,7 @@ void estimate_force_errors_3d(const Run3D& run, const PatchRecovery3D& recovery,
     ForceResult& r = *next++;
     try {
       const bool sphere = f.kind == ForceSpec::Kind::sphere;
-      const auto points =
-          sphere ? sphere_quadrature(f.center, f.radius, sphere_theta, 2 * sphere_theta)
-                 : box_quadrature(f.center, f.size, box_long);
+      const auto points = force_surface_points(f);
       const ForceTorque by_element =
           sphere ? maxwell_stress_sphere_3d(element, f.center, f.radius, f.torque_point)
                  : maxwell_stress_box_3d(element, f.center, f.size, f.torque_point);

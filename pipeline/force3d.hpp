@@ -5,8 +5,9 @@
 
 #include <Eigen/Core>
 
-#include "pipeline/force_results.hpp"
 #include "casefile/case_spec.hpp"
+#include "pipeline/force_results.hpp"
+#include "postproc/maxwell_stress.hpp"
 #include "postproc/patch_recovery3d.hpp"
 
 namespace magfem {
@@ -23,6 +24,10 @@ std::vector<ForceResult> compute_forces_3d(const Run3D& run);
 // (postproc/force_estimate3d.hpp); why, in force3d.cpp. Lorentz forces are left unestimated.
 void estimate_force_errors_3d(const Run3D& run, const PatchRecovery3D& recovery,
                               std::vector<ForceResult>& forces);
+
+// The quadrature points of a sphere or box force's surface, as the reported result and its
+// estimate sample it (empty for other kinds).
+std::vector<SurfacePoint> force_surface_points(const ForceSpec& f);
 
 // The case with a stress sphere about the origin added to its forces (named `name`), so that
 // the mesh is refined on it like on a sphere probe.

@@ -60,7 +60,7 @@ echo >> "$out/doc.md"
 echo "FE sweep: $((end - start)) s wall on $(nproc) cores${unknowns:+, $unknowns unknowns per position}." >> "$out/doc.md"
 
 # The adaptive compensator at 90 deg: each pass's torque against the charge model, beside uniform
-# --mesh-scale refinement of the same first mesh (the example's `scale: 2` times 1, 0.8, 0.65).
+# --mesh-scale refinement of the same first mesh (the example's `scale: 3` times 1, 0.8, 0.65).
 {
   echo
   echo "## examples/3d/compensator_adaptive.yaml"

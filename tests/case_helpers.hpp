@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pipeline/run2d.hpp"
+#include "pipeline/run3d.hpp"
 #include "tests/test_paths.hpp"
 
 namespace magfem::test {
@@ -151,6 +152,19 @@ inline const ProbeTable& probe(const Run2D& run, const std::string& name) {
     if (p.name == name)
       return p;
   throw std::runtime_error("no probe " + name);
+}
+
+// One solve of a 3D case without its adapt: block, on its own mesh (sizes empty) or with the
+// size sources of an adaptive pass added to its sizes.
+inline std::unique_ptr<Run3D> solve_with_sizes_3d(const CaseSpec& spec,
+                                                  std::vector<SizeSample3D> sizes,
+                                                  const RunOverrides& overrides = {}) {
+  CaseSpec s = spec;
+  s.adapt = {};
+  if (!sizes.empty())
+    s.geometry3d.options.refine_sizes =
+        std::make_shared<const std::vector<SizeSample3D>>(std::move(sizes));
+  return run_case_3d(s, overrides);
 }
 
 } // namespace magfem::test

@@ -49,12 +49,7 @@ double true_probe_error_pct(const Run3D& run) {
 }
 
 std::unique_ptr<Run3D> solve_with(const CaseSpec& spec, std::vector<SizeSample3D> sizes) {
-  CaseSpec s = spec;
-  s.adapt = {};
-  if (!sizes.empty()) // none: the case's own mesh
-    s.geometry3d.options.refine_sizes =
-        std::make_shared<const std::vector<SizeSample3D>>(std::move(sizes));
-  return run_case_3d(s, {});
+  return test::solve_with_sizes_3d(spec, std::move(sizes));
 }
 
 } // namespace
