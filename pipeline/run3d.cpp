@@ -253,27 +253,25 @@ public:
   }
   // Distributed: this process's share of the tetrahedra, one thread (the processes share the
   // cores). With p-multigrid (P2) the share is own-row assembly's (solver/distributed_rows.hpp):
-  // the rows partitioned first, then the tetrahedra touching this process's rows; the
-  // numbering they need comes from an assembler of no tetrahedra. Coils keep the contiguous
-  // share, on which their source field table was evaluated (prepare_dofs).
+  // the rows partitioned first, then the tetrahedra touching this process's rows; the run
+  // keeps an assembler of no tetrahedra (the numbering) and solve() assembles the share's,
+  // which the solve frees before its memory peaks (distributed_solve3d.hpp). Coils keep the
+  // contiguous share, on which their source field table was evaluated (prepare_dofs).
   Assembler3D make_assembler() const {
     auto& linear = run_.spec.newton.linear;
     linear.distributed_rows = nullptr;
     if (world_.distributed() && run_.spec.order == 2 && !run_.coils) {
-      const Assembler3D numbering(run_.problem, *run_.dofs,
-                                  {1, {}, std::make_shared<const std::vector<std::size_t>>()});
+      Assembler3D numbering(run_.problem, *run_.dofs,
+                            {1, {}, std::make_shared<const std::vector<std::size_t>>()});
       const std::vector<int>& dof_to_eq = numbering.dof_to_equation();
       set_coarse_space(dof_to_eq);
       if (distributed_runs_pmg(linear)) {
-        linear.distributed_rows = std::make_shared<const DistributedRows>(
+        auto rows = std::make_shared<DistributedRows>(
             partition_distributed_rows(vertex_coupling_pattern(run_.mesh, dof_to_eq),
                                        *linear.coarse_prolongation, linear.smoother_block.get()));
-        return Assembler3D(
-            run_.problem, *run_.dofs,
-            {1,
-             {},
-             std::make_shared<const std::vector<std::size_t>>(tets_touching_own_rows(
-                 *run_.dofs, run_.mesh.n_tets(), dof_to_eq, *linear.distributed_rows))});
+        rows->tets = tets_touching_own_rows(*run_.dofs, run_.mesh.n_tets(), dof_to_eq, *rows);
+        linear.distributed_rows = std::move(rows);
+        return numbering;
       }
     }
     return Assembler3D(run_.problem, *run_.dofs,
@@ -291,13 +289,20 @@ public:
       newton.keep_linear_factorization = run_.coils && run_.spec.coil_inductance;
       return solve_nonlinear(assembler, u, newton);
     }
-    NewtonReport report = solve_distributed(assembler, world_.size, run_.spec.newton, u);
+    const auto t_share = std::chrono::steady_clock::now();
+    std::shared_ptr<const Assembler3D> share = distributed_share(assembler);
+    const double share_s = seconds_since(t_share);
+    // The inductance's solves below assemble the share again: kept for them.
+    const bool sensitivities = run_.coils && run_.spec.coil_inductance;
+    const std::shared_ptr<const Assembler3D> kept = sensitivities ? share : nullptr;
+    NewtonReport report = solve_distributed(std::move(share), world_.size, run_.spec.newton, u);
+    report.assemble_s += share_s;
     // The inductance matrix's solves need every process: done here, before rank 0 goes on
     // alone. (A Newton that did not converge ends the run on every process anyway.)
-    if (report.converged && run_.coils && run_.spec.coil_inductance) {
+    if (report.converged && sensitivities) {
       const auto t0 = std::chrono::steady_clock::now();
       run_.coil_sensitivities = current_sensitivities_distributed(
-          assembler, world_.size, u, run_.coils->n_coils(),
+          *kept, world_.size, u, run_.coils->n_coils(),
           distributed_sensitivity_solver_options(run_.spec.newton.linear));
       run_.coil_sensitivity_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -487,6 +492,17 @@ private:
       linear.smoother_block = std::make_shared<const std::vector<int>>(
           element_equations(*run_.dofs, dof_to_eq, run_.mesh.n_tets(),
                             [&](std::size_t t) { return run_.problem.is_shell(t); }));
+  }
+  // The assembler of this process's tetrahedra for the distributed solve: own-row assembly's
+  // (built here, let go by the solve), else `assembler` itself (not owned).
+  std::shared_ptr<const Assembler3D> distributed_share(const Assembler3D& assembler) const {
+    const auto& rows = run_.spec.newton.linear.distributed_rows;
+    if (!rows)
+      return std::shared_ptr<const Assembler3D>(std::shared_ptr<void>(), &assembler);
+    return std::make_shared<const Assembler3D>(
+        run_.problem, *run_.dofs,
+        AssemblyOptions3D{
+            1, {}, std::shared_ptr<const std::vector<std::size_t>>(rows, &rows->tets)});
   }
   // The tetrahedra this process assembles (all of them in a serial run).
   ElementRange share() const {

@@ -26,6 +26,7 @@ struct DistributedRows {
   std::vector<int> local_equations; // equation of each row this process owns
   int own_begin = 0, own_end = 0;   // the rows this process owns
   int coarse_local = 0;             // pmg: how many coarse rows it owns
+  std::vector<std::size_t> tets;    // the tetrahedra it assembles (tets_touching_own_rows)
 
   bool owns(int equation) const {
     const int r = order[static_cast<std::size_t>(equation)];
