@@ -7,9 +7,10 @@
 // the processes (DistributedSystem3D): every residual evaluation, the line search's too, is
 // distributed, and every process takes the same steps and reports the same convergence.
 //
-// Replicated on every process: the mesh, the DOF map, the equation numbering and sparsity
-// pattern (Assembler3D's set-up), and the vectors (solution, residual); distributed: the
-// element loops, the matrix, the AMG hierarchy and the Krylov iteration.
+// Replicated on every process: the mesh, the DOF map, the equation numbering, the vectors
+// (solution, residual) and, but for own-row assembly (distributed_rows.hpp), whose pattern
+// covers the process's tetrahedra only, the sparsity pattern (Assembler3D's set-up);
+// distributed: the element loops, the matrix, the AMG hierarchy and the Krylov iteration.
 #include <memory>
 #include <vector>
 
