@@ -236,15 +236,19 @@ public:
     // limit the field error near curved magnet faces to O(h^2) in the geometry.
     if (run_.spec.order == 2)
       run_.dofs->curve_to_spheres(run_.mesh, sphere_surfaces(run_.spec.geometry3d, run_.mesh));
+    const std::vector<std::size_t> source_tets = partition_rows();
     if (run_.coils) {
       announce_stage(ov_.progress,
                      "coil source field: " + std::to_string(run_.coils->n_coils()) + " coils at " +
                          std::to_string(run_.mesh.n_tets() *
                                         tet_rule(SourceFieldTable3D::rule_degree).size()) +
                          " quadrature points");
-      // Distributed: each process evaluates the source field at its own tetrahedra; rank 0,
-      // which post-processes, gets the whole table.
-      run_.coil_source = make_coil_source_3d(run_.problem, *run_.dofs, *run_.coils, share());
+      // Distributed: each process evaluates the source field at the tetrahedra it assembles
+      // (own-row assembly: those of its rows; else its contiguous share); rank 0, which
+      // post-processes, gets the whole table.
+      run_.coil_source =
+          make_coil_source_3d(run_.problem, *run_.dofs, *run_.coils, share(),
+                              run_.spec.newton.linear.distributed_rows ? &source_tets : nullptr);
       if (world_.distributed())
         run_.coil_source.table.gather_to_root();
       announce_stage(ov_.progress, "assembly");
@@ -252,30 +256,13 @@ public:
     }
   }
   // Distributed: this process's share of the tetrahedra, one thread (the processes share the
-  // cores). With p-multigrid (P2) the share is own-row assembly's (solver/distributed_rows.hpp):
-  // the rows partitioned first, then the tetrahedra touching this process's rows; the
-  // numbering they need comes from an assembler of no tetrahedra. Coils keep the contiguous
-  // share, on which their source field table was evaluated (prepare_dofs).
+  // cores). With p-multigrid (P2) the share is own-row assembly's (partition_rows): the run
+  // keeps an assembler of no tetrahedra (the numbering) and solve() assembles the share's,
+  // which the solve frees before its memory peaks (distributed_solve3d.hpp).
   Assembler3D make_assembler() const {
-    auto& linear = run_.spec.newton.linear;
-    linear.distributed_rows = nullptr;
-    if (world_.distributed() && run_.spec.order == 2 && !run_.coils) {
-      const Assembler3D numbering(run_.problem, *run_.dofs,
-                                  {1, {}, std::make_shared<const std::vector<std::size_t>>()});
-      const std::vector<int>& dof_to_eq = numbering.dof_to_equation();
-      set_coarse_space(dof_to_eq);
-      if (distributed_runs_pmg(linear)) {
-        linear.distributed_rows = std::make_shared<const DistributedRows>(
-            partition_distributed_rows(vertex_coupling_pattern(run_.mesh, dof_to_eq),
-                                       *linear.coarse_prolongation, linear.smoother_block.get()));
-        return Assembler3D(
-            run_.problem, *run_.dofs,
-            {1,
-             {},
-             std::make_shared<const std::vector<std::size_t>>(tets_touching_own_rows(
-                 *run_.dofs, run_.mesh.n_tets(), dof_to_eq, *linear.distributed_rows))});
-      }
-    }
+    if (run_.spec.newton.linear.distributed_rows)
+      return Assembler3D(run_.problem, *run_.dofs,
+                         {1, {}, std::make_shared<const std::vector<std::size_t>>()});
     return Assembler3D(run_.problem, *run_.dofs,
                        AssemblyOptions3D{world_.distributed() ? 1 : 0, share(), nullptr});
   }
@@ -291,13 +278,20 @@ public:
       newton.keep_linear_factorization = run_.coils && run_.spec.coil_inductance;
       return solve_nonlinear(assembler, u, newton);
     }
-    NewtonReport report = solve_distributed(assembler, world_.size, run_.spec.newton, u);
+    const auto t_share = std::chrono::steady_clock::now();
+    std::shared_ptr<const Assembler3D> share = distributed_share(assembler);
+    const double share_s = seconds_since(t_share);
+    // The inductance's solves below assemble the share again: kept for them.
+    const bool sensitivities = run_.coils && run_.spec.coil_inductance;
+    const std::shared_ptr<const Assembler3D> kept = sensitivities ? share : nullptr;
+    NewtonReport report = solve_distributed(std::move(share), world_.size, run_.spec.newton, u);
+    report.assemble_s += share_s;
     // The inductance matrix's solves need every process: done here, before rank 0 goes on
     // alone. (A Newton that did not converge ends the run on every process anyway.)
-    if (report.converged && run_.coils && run_.spec.coil_inductance) {
+    if (report.converged && sensitivities) {
       const auto t0 = std::chrono::steady_clock::now();
       run_.coil_sensitivities = current_sensitivities_distributed(
-          assembler, world_.size, u, run_.coils->n_coils(),
+          *kept, world_.size, u, run_.coils->n_coils(),
           distributed_sensitivity_solver_options(run_.spec.newton.linear));
       run_.coil_sensitivity_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -489,6 +483,42 @@ private:
       linear.smoother_block = std::make_shared<const std::vector<int>>(
           element_equations(*run_.dofs, dof_to_eq, run_.mesh.n_tets(),
                             [&](std::size_t t) { return run_.problem.is_shell(t); }));
+  }
+  // Own-row assembly (solver/distributed_rows.hpp) for a distributed P2 solve with p-multigrid:
+  // the rows partitioned before the coil source field and the assembly, and the tetrahedra
+  // touching this process's rows. Returns the tetrahedra whose source field this process
+  // evaluates (with coils; else none).
+  std::vector<std::size_t> partition_rows() const {
+    auto& linear = run_.spec.newton.linear;
+    linear.distributed_rows = nullptr;
+    if (!world_.distributed() || run_.spec.order != 2)
+      return {};
+    const Assembler3D numbering(run_.problem, *run_.dofs,
+                                {1, {}, std::make_shared<const std::vector<std::size_t>>()});
+    const std::vector<int>& dof_to_eq = numbering.dof_to_equation();
+    set_coarse_space(dof_to_eq);
+    if (!distributed_runs_pmg(linear))
+      return {};
+    auto rows = std::make_shared<DistributedRows>(
+        partition_distributed_rows(vertex_coupling_pattern(run_.mesh, dof_to_eq),
+                                   *linear.coarse_prolongation, linear.smoother_block.get()));
+    rows->tets = tets_touching_own_rows(*run_.dofs, run_.mesh.n_tets(), dof_to_eq, *rows);
+    std::vector<std::size_t> source_tets;
+    if (run_.coils)
+      source_tets = source_table_tets(*run_.dofs, run_.mesh.n_tets(), dof_to_eq, *rows, share());
+    linear.distributed_rows = std::move(rows);
+    return source_tets;
+  }
+  // The assembler of this process's tetrahedra for the distributed solve: own-row assembly's
+  // (built here, let go by the solve), else `assembler` itself (not owned).
+  std::shared_ptr<const Assembler3D> distributed_share(const Assembler3D& assembler) const {
+    const auto& rows = run_.spec.newton.linear.distributed_rows;
+    if (!rows)
+      return std::shared_ptr<const Assembler3D>(std::shared_ptr<void>(), &assembler);
+    return std::make_shared<const Assembler3D>(
+        run_.problem, *run_.dofs,
+        AssemblyOptions3D{
+            1, {}, std::shared_ptr<const std::vector<std::size_t>>(rows, &rows->tets)});
   }
   // The tetrahedra this process assembles (all of them in a serial run).
   ElementRange share() const {

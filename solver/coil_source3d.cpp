@@ -51,7 +51,8 @@ void dof_to_tets(const DofMap3D& dofs, const std::vector<unsigned char>& total,
 } // namespace
 
 CoilSource3D make_coil_source_3d(const Problem3D& problem, const DofMap3D& dofs,
-                                 const SourceField3D& field, ElementRange share) {
+                                 const SourceField3D& field, ElementRange share,
+                                 const std::vector<std::size_t>* tets) {
   CoilSource3D src;
   src.field = &field;
   const auto& mesh = *problem.mesh;
@@ -134,7 +135,7 @@ CoilSource3D make_coil_source_3d(const Problem3D& problem, const DofMap3D& dofs,
   }
   for (int q = 0; q < nc; ++q)
     src.offset += field.current(q) * src.offset_per_ampere[q];
-  src.table = SourceFieldTable3D(problem, dofs, field, 0, share);
+  src.table = SourceFieldTable3D(problem, dofs, field, 0, share, tets);
   return src;
 }
 

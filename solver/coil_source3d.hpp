@@ -43,9 +43,10 @@ struct CoilSource3D {
 
 // Soft (non-magnet, permeable) parts become total regions; their Phi_s is integrated per
 // connected component.
-// `share`: the tets whose source-table entries this process computes
+// `share` (or `tets`, when given): the tets whose source-table entries this process computes
 // (SourceFieldTable3D); the Phi_s of the total regions is computed whole on every process.
 CoilSource3D make_coil_source_3d(const Problem3D& problem, const DofMap3D& dofs,
-                                 const SourceField3D& field, ElementRange share = {});
+                                 const SourceField3D& field, ElementRange share = {},
+                                 const std::vector<std::size_t>* tets = nullptr);
 
 } // namespace magfem

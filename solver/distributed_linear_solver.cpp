@@ -94,6 +94,11 @@ DistributedLinearSolver::DistributedLinearSolver(const LinearSolverOptions& opti
       solver_(petsc_options(options, size, notes_)) {}
 
 void DistributedLinearSolver::factorize(const Eigen::SparseMatrix<double>& lower_part) {
+  load(lower_part);
+  set_up();
+}
+
+void DistributedLinearSolver::load(const Eigen::SparseMatrix<double>& lower_part) {
   const auto t0 = Clock::now();
   if (rows_) {
     // Own-row assembly: the part holds this process's rows whole; only they are set.
@@ -103,6 +108,11 @@ void DistributedLinearSolver::factorize(const Eigen::SparseMatrix<double>& lower
     solver_.begin_distributed(lower_part);
     solver_.add_lower_share(lower_part);
   }
+  setup_s_ += seconds_since(t0);
+}
+
+void DistributedLinearSolver::set_up() {
+  const auto t0 = Clock::now();
   solver_.setup_distributed();
   setup_s_ += seconds_since(t0);
 }

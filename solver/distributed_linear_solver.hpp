@@ -30,7 +30,13 @@ public:
   // `size`: the processes (for the note).
   DistributedLinearSolver(const LinearSolverOptions& options, int size);
 
+  // load(lower_part), then set_up().
   void factorize(const Eigen::SparseMatrix<double>& lower_part) override;
+  // The two halves of factorize: the part into the distributed matrix (PETSc keeps its own
+  // copy, so the caller may free the part before the set-up, the peak of a process's memory),
+  // and the preconditioner's set-up on it.
+  void load(const Eigen::SparseMatrix<double>& lower_part);
+  void set_up();
   // Throws SolveError, on every process alike, when CG stops short of the tolerance or the
   // true residual does not confirm it.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) override;

@@ -1,6 +1,7 @@
 #include "solver/distributed_rows.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include "mesh/mesh3d.hpp"
 #include "solver/dof_map3d.hpp"
@@ -41,6 +42,24 @@ std::vector<std::size_t> tets_touching_own_rows(const DofMap3D& dofs, std::size_
         break;
       }
   }
+  return tets;
+}
+
+std::vector<std::size_t> source_table_tets(const DofMap3D& dofs, std::size_t n_tets,
+                                           const std::vector<int>& dof_to_eq,
+                                           const DistributedRows& rows, ElementRange share) {
+  std::vector<std::size_t> unassembled;
+  const int per = dofs.dofs_per_element();
+  const std::size_t last = std::min(share.last, n_tets);
+  for (std::size_t t = share.first; t < last; ++t) {
+    const int* dof = dofs.element_dofs(t);
+    if (std::all_of(dof, dof + per, [&](int d) { return dof_to_eq[d] < 0; }))
+      unassembled.push_back(t);
+  }
+  std::vector<std::size_t> tets;
+  tets.reserve(rows.tets.size() + unassembled.size());
+  std::set_union(rows.tets.begin(), rows.tets.end(), unassembled.begin(), unassembled.end(),
+                 std::back_inserter(tets));
   return tets;
 }
 

@@ -15,6 +15,8 @@
 
 #include <Eigen/SparseCore>
 
+#include "solver/element_range.hpp"
+
 namespace magfem {
 
 struct Mesh3D;
@@ -26,6 +28,7 @@ struct DistributedRows {
   std::vector<int> local_equations; // equation of each row this process owns
   int own_begin = 0, own_end = 0;   // the rows this process owns
   int coarse_local = 0;             // pmg: how many coarse rows it owns
+  std::vector<std::size_t> tets;    // the tetrahedra it assembles (tets_touching_own_rows)
 
   bool owns(int equation) const {
     const int r = order[static_cast<std::size_t>(equation)];
@@ -43,5 +46,13 @@ Eigen::SparseMatrix<double> vertex_coupling_pattern(const Mesh3D& mesh,
 std::vector<std::size_t> tets_touching_own_rows(const DofMap3D& dofs, std::size_t n_tets,
                                                 const std::vector<int>& dof_to_eq,
                                                 const DistributedRows& rows);
+
+// The tetrahedra (ascending) whose coil source field this process evaluates: rows.tets, which
+// its element loops read, and those of `share` (its contiguous share) with no free DOF, which
+// no process assembles but rank 0's post-processing reads. Over the processes, every
+// tetrahedron at least once.
+std::vector<std::size_t> source_table_tets(const DofMap3D& dofs, std::size_t n_tets,
+                                           const std::vector<int>& dof_to_eq,
+                                           const DistributedRows& rows, ElementRange share);
 
 } // namespace magfem

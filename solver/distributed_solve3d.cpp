@@ -1,6 +1,7 @@
 #include "solver/distributed_solve3d.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "core/progress.hpp"
 #include "solver/current_sensitivity3d.hpp"
@@ -15,8 +16,11 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-NewtonReport solve_linear(const DistributedSystem3D& system, DistributedLinearSolver& solver,
-                          const LinearSolverOptions& options, Eigen::VectorXd& u) {
+// Assembles the one system, lets the share go (the caller's pointer was the last one unless
+// it kept a copy), hands the part to PETSc and frees it, then sets the preconditioner up.
+NewtonReport solve_linear(std::shared_ptr<const Assembler3D> share, const DistributedRows* rows,
+                          DistributedLinearSolver& solver, const LinearSolverOptions& options,
+                          Eigen::VectorXd& u) {
   NewtonReport report;
   report.linear = true;
   report.linear_solver = "cg";
@@ -24,12 +28,21 @@ NewtonReport solve_linear(const DistributedSystem3D& system, DistributedLinearSo
   // this process's part of the tangent.
   auto t0 = Clock::now();
   Eigen::VectorXd r;
-  Eigen::SparseMatrix<double> k;
-  system.evaluate(Eigen::VectorXd::Zero(system.n_unknowns()), r, &k, TangentKind::newton);
-  report.assemble_s = seconds_since(t0);
-  if (options.progress)
-    options.progress->stage("preconditioner set-up: " + solver.preconditioner());
-  solver.factorize(k);
+  double load_norm = 0;
+  {
+    Eigen::SparseMatrix<double> k;
+    {
+      const DistributedSystem3D system(*share, rows);
+      system.evaluate(Eigen::VectorXd::Zero(system.n_unknowns()), r, &k, TangentKind::newton);
+      load_norm = system.load_norm();
+    }
+    share.reset();
+    report.assemble_s = seconds_since(t0);
+    if (options.progress)
+      options.progress->stage("preconditioner set-up: " + solver.preconditioner());
+    solver.load(k);
+  }
+  solver.set_up();
   report.preconditioner = solver.preconditioner();
   if (options.progress)
     options.progress->stage("solve: CG + " + report.preconditioner);
@@ -41,7 +54,7 @@ NewtonReport solve_linear(const DistributedSystem3D& system, DistributedLinearSo
   report.linear_iterations = solver.last_iterations();
   // As for a serial linear solve: the initial relative residual (1, or 0 without sources)
   // and the final one, here the true residual PETSc computed.
-  const bool sourceless = system.load_norm() == 0;
+  const bool sourceless = load_norm == 0;
   report.residual_history = {sourceless ? 0.0 : 1.0, solver.last_true_residual()};
   report.step_lengths = {1.0};
   report.converged = true;
@@ -52,15 +65,20 @@ NewtonReport solve_linear(const DistributedSystem3D& system, DistributedLinearSo
 
 } // namespace
 
-NewtonReport solve_distributed(const Assembler3D& share, int size, const NewtonOptions& options,
-                               Eigen::VectorXd& u) {
+NewtonReport solve_distributed(std::shared_ptr<const Assembler3D> share, int size,
+                               const NewtonOptions& options, Eigen::VectorXd& u) {
   if (Progress* progress = options.linear.progress)
     progress->stage("distributed over " + std::to_string(size) +
-                    " processes: " + std::to_string(share.n_unknowns()) + " unknowns");
-  const DistributedSystem3D system(share, options.linear.distributed_rows.get());
+                    " processes: " + std::to_string(share->n_unknowns()) + " unknowns");
+  const DistributedRows* rows = options.linear.distributed_rows.get();
   DistributedLinearSolver solver(options.linear, size);
-  NewtonReport report = system.is_linear() ? solve_linear(system, solver, options.linear, u)
-                                           : solve_nonlinear(system, u, options, solver);
+  NewtonReport report;
+  if (share->is_linear()) {
+    report = solve_linear(std::move(share), rows, solver, options.linear, u);
+  } else {
+    const DistributedSystem3D system(*share, rows);
+    report = solve_nonlinear(system, u, options, solver);
+  }
   report.notes = solver.notes();
   return report;
 }

@@ -7,9 +7,11 @@
 // the processes (DistributedSystem3D): every residual evaluation, the line search's too, is
 // distributed, and every process takes the same steps and reports the same convergence.
 //
-// Replicated on every process: the mesh, the DOF map, the equation numbering and sparsity
-// pattern (Assembler3D's set-up), and the vectors (solution, residual); distributed: the
-// element loops, the matrix, the AMG hierarchy and the Krylov iteration.
+// Replicated on every process: the mesh, the DOF map, the equation numbering, the vectors
+// (solution, residual) and, but for own-row assembly (distributed_rows.hpp), whose pattern
+// covers the process's tetrahedra only, the sparsity pattern (Assembler3D's set-up);
+// distributed: the element loops, the matrix, the AMG hierarchy and the Krylov iteration.
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -27,8 +29,13 @@ namespace magfem {
 // free-DOF solution on every process. The report is the same on every process; a linear
 // system's is the one solve_nonlinear gives. Throws SolveError, on every process alike, when
 // CG stops short of the tolerance or the true residual does not confirm it.
-NewtonReport solve_distributed(const Assembler3D& share, int size, const NewtonOptions& options,
-                               Eigen::VectorXd& u);
+// `share` is let go as soon as the solve no longer needs it: a linear system's after its one
+// assembly, and the assembled part once PETSc holds it, both before the preconditioner's
+// set-up, where a process's memory peaks (issue 33: the share's pattern and scatter table
+// were a sixth of it); a nonlinear system's after Newton. A caller that needs the share
+// afterwards (the coils' sensitivity solves) keeps its own copy of the pointer.
+NewtonReport solve_distributed(std::shared_ptr<const Assembler3D> share, int size,
+                               const NewtonOptions& options, Eigen::VectorXd& u);
 
 // Collective: du/dI_j for every coil j at the converged u with the variational correction
 // (current_sensitivity3d.hpp), the tangent assembled by shares, one preconditioner set-up for

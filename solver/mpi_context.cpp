@@ -40,9 +40,9 @@ void sum_on_every_rank(double* values, std::size_t n) {
     backend->sum_on_every_rank(values, n);
 }
 
-void sum_to_root(float* values, std::size_t n) {
+void union_to_root(float* values, std::size_t n) {
   if (PetscBackend* backend = loaded_petsc_backend())
-    backend->sum_to_root(values, n);
+    backend->union_to_root(values, n);
 }
 
 void idle_barrier() {

@@ -53,10 +53,12 @@ bool same_on_every_rank(std::uint64_t value);
 // differently from process to process): replicated vectors of a distributed solve, whose
 // every process must take the same Newton decisions. No-op in a serial run.
 void sum_on_every_rank(double* values, std::size_t n);
-// Collective: `values` summed over the processes into rank 0's (the others' are unchanged).
-// For tables each process fills its own entries of and rank 0 alone reads whole. No-op in a
-// serial run.
-void sum_to_root(float* values, std::size_t n);
+// Collective: `values` combined over the processes into rank 0's by a bitwise OR of their bits
+// (the others' are unchanged). For tables each process fills its own entries of (the rest
+// +0.0f, all bits clear) and rank 0 alone reads whole: exact where one process alone computed
+// an entry and where several computed the same bits (own-row assembly's ghost tetrahedra,
+// which a sum would count twice). No-op in a serial run.
+void union_to_root(float* values, std::size_t n);
 
 // Collective: waits until every process has arrived, sleeping between checks. Open MPI's
 // blocking calls spin on the CPU; processes waiting here for rank 0's post-processing leave

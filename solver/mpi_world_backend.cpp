@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <thread>
@@ -58,10 +59,11 @@ namespace {
 // MPI counts are ints: long arrays travel in pieces.
 constexpr std::size_t max_piece = std::size_t{1} << 28;
 
-template <class T> void reduce_to_root(T* values, std::size_t n, MPI_Datatype type, int rank) {
+template <class T>
+void reduce_to_root(T* values, std::size_t n, MPI_Datatype type, int rank, MPI_Op op = MPI_SUM) {
   for (std::size_t at = 0; at < n; at += max_piece) {
     const int count = static_cast<int>(std::min(max_piece, n - at));
-    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : values + at, values + at, count, type, MPI_SUM, 0,
+    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : values + at, values + at, count, type, op, 0,
                MPI_COMM_WORLD);
   }
 }
@@ -78,10 +80,11 @@ void sum_on_every_rank(double* values, std::size_t n) {
               MPI_COMM_WORLD);
 }
 
-void sum_to_root(float* values, std::size_t n) {
+void union_to_root(float* values, std::size_t n) {
+  static_assert(sizeof(float) == sizeof(std::uint32_t));
   const MpiWorld world = started_mpi_world();
   if (world.distributed())
-    reduce_to_root(values, n, MPI_FLOAT, world.rank);
+    reduce_to_root(reinterpret_cast<std::uint32_t*>(values), n, MPI_UINT32_T, world.rank, MPI_BOR);
 }
 
 namespace {

@@ -14,7 +14,7 @@ MpiWorld join_mpi_world(bool any_thread_calls_mpi);
 MpiWorld started_mpi_world();
 bool same_on_every_rank(std::uint64_t value);
 void sum_on_every_rank(double* values, std::size_t n);
-void sum_to_root(float* values, std::size_t n);
+void union_to_root(float* values, std::size_t n);
 void idle_barrier();
 void lend_node_cores_to_root();
 int code_of_root(int code);

@@ -58,7 +58,7 @@ public:
   virtual MpiWorld started_mpi_world() = 0;
   virtual bool same_on_every_rank(std::uint64_t value) = 0;
   virtual void sum_on_every_rank(double* values, std::size_t n) = 0;
-  virtual void sum_to_root(float* values, std::size_t n) = 0;
+  virtual void union_to_root(float* values, std::size_t n) = 0;
   virtual void idle_barrier() = 0;
   virtual void lend_node_cores_to_root() = 0;
   virtual int code_of_root(int code) = 0;

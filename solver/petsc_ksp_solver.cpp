@@ -165,9 +165,7 @@ namespace {
 // replace it (-mg_levels_pc_type sor, the one-sweep SSOR smoother of before) then cost no
 // factorization. Down and up share it.
 struct BlockSmootherSlot {
-  const std::vector<PetscInt>* row_start = nullptr;
-  const std::vector<PetscInt>* column = nullptr;
-  const std::vector<PetscScalar>* value = nullptr;
+  CsrView matrix;
   const std::vector<int>* block = nullptr;
   BlockFactorCache* cache = nullptr;
   std::unique_ptr<BlockSmoother> smoother;
@@ -186,8 +184,7 @@ PetscErrorCode set_up_block_smoother(PC pc) {
   if (slot.smoother)
     return 0;
   try {
-    slot.smoother = std::make_unique<BlockSmoother>(*slot.row_start, *slot.column, *slot.value,
-                                                    *slot.block, *slot.cache);
+    slot.smoother = std::make_unique<BlockSmoother>(slot.matrix, *slot.block, *slot.cache);
   } catch (const std::exception& e) { // no exception through PETSc's C frames
     return PetscError(PETSC_COMM_SELF, __LINE__, "set_up_block_smoother", __FILE__, PETSC_ERR_LIB,
                       PETSC_ERROR_INITIAL, "%s", e.what());
@@ -238,13 +235,17 @@ struct PetscKspSolver::Impl {
   CsrMatrix coarse_csr; // the arrays behind `coarse`
   double rhs_norm = 1;
   // Distributed mode (begin_distributed): `a` is one MPIAIJ matrix over MPI_COMM_WORLD, and
-  // pmg's row_start, column and value hold this process's diagonal block of it, local_block
-  // the smoother block's equations among its rows (local numbering).
+  // for pmg diag_block this process's diagonal block of it (PETSc's arrays), local_block the
+  // smoother block's equations among its rows (local numbering).
   bool distributed = false;
+  CsrView diag_block;
   std::vector<int> local_block;
-  // Distributed pmg: the rows each process owns (pmg_partition.hpp). Empty: rows are
-  // equations, in contiguous blocks.
-  PmgPartition partition;
+  // Distributed pmg: the rows each process owns (pmg_partition.hpp): options.rows when given
+  // (own-row assembly: not copied, the caller keeps it), else computed_partition. Empty: rows
+  // are equations, in contiguous blocks.
+  PmgPartition computed_partition;
+  const PmgPartition* partition_in_use = &computed_partition;
+  const PmgPartition& partition() const { return *partition_in_use; }
 
   ~Impl() {
     release();
@@ -263,17 +264,27 @@ struct PetscKspSolver::Impl {
     if (rhs)
       VecDestroy(&rhs);
     block_smoother.reset();
+    diag_block = {}; // pointed into `a`
   }
   void to_full_csr(const Eigen::SparseMatrix<double>& lower);
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
   PetscInt row_of(PetscInt equation) const {
-    return partition.order.empty() ? equation : partition.order[equation];
+    return partition().order.empty() ? equation : partition().order[equation];
   }
   // `row`: one this process owns.
   PetscInt equation_of(PetscInt row) const {
-    return partition.order.empty() ? row : partition.local_equations[row - partition.own_begin];
+    const PmgPartition& rows = partition();
+    return rows.order.empty() ? row : rows.local_equations[row - rows.own_begin];
+  }
+  // pmg's fine matrix for the smoother: serially the whole (row_start, column, value),
+  // distributed this process's diagonal block.
+  CsrView fine_matrix() const {
+    if (distributed)
+      return diag_block;
+    return {static_cast<PetscInt>(row_start.size()) - 1, row_start.data(), column.data(),
+            value.data()};
   }
   void set_up_serial_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
   void set_up_distributed_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
@@ -376,9 +387,9 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   KSP coarse_ksp = nullptr;
   // The global block decides (every process must set the same smoother type up).
   if (options.smoother_block && !options.smoother_block->empty()) {
-    block_smoother = std::make_unique<BlockSmootherSlot>(BlockSmootherSlot{
-        &row_start, &column, &value, distributed ? &local_block : options.smoother_block,
-        &block_factor, nullptr});
+    block_smoother = std::make_unique<BlockSmootherSlot>(
+        BlockSmootherSlot{fine_matrix(), distributed ? &local_block : options.smoother_block,
+                          &block_factor, nullptr});
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
@@ -449,6 +460,7 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
   PetscInt n = 0, begin = 0, end = 0;
   check(MatGetSize(a, &n, nullptr), "MatGetSize");
+  const PmgPartition& partition = this->partition();
   if (q.rows() != n || !q.isCompressed() || partition.order.size() != static_cast<std::size_t>(n))
     throw SolveError("internal: the coarse space does not fit the system");
   check(MatGetOwnershipRange(a, &begin, &end), "MatGetOwnershipRange");
@@ -483,6 +495,11 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
   check(MatAssemblyBegin(p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin (interpolation)");
   check(MatAssemblyEnd(p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd (interpolation)");
   check(MatPtAP(a, p, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse), "MatPtAP (coarse operator)");
+  // The product's intermediates (A P and P's off-process rows), kept by PETSc for a numeric
+  // product again, are never reused (a new set-up builds all anew): freed before the smoother's
+  // factor and BoomerAMG are set up, where the process's memory peaks (a fifth of PETSc's
+  // share of it on process 0, benchmark32).
+  check(MatProductClear(coarse), "MatProductClear (coarse operator)");
 
   Mat diag = a, off = nullptr;
   const PetscInt* off_columns = nullptr;
@@ -491,20 +508,15 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
         "PetscObjectTypeCompare");
   if (is_mpi)
     check(MatMPIAIJGetSeqAIJ(a, &diag, &off, &off_columns), "MatMPIAIJGetSeqAIJ");
-  PetscInt rows = 0;
+  // Read in place: the arrays stay valid while `a` lives, which the smoother does not outlive
+  // (release()).
   const PetscInt *ia = nullptr, *ja = nullptr;
-  PetscBool done = PETSC_FALSE;
-  check(MatGetRowIJ(diag, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done), "MatGetRowIJ");
-  if (!done || rows != end - begin)
-    throw SolveError("internal: the diagonal block's rows are not available");
-  const PetscScalar* v = nullptr;
-  check(MatSeqAIJGetArrayRead(diag, &v), "MatSeqAIJGetArrayRead");
-  row_start.assign(ia, ia + rows + 1);
-  column.assign(ja, ja + ia[rows]);
-  value.assign(v, v + ia[rows]);
-  check(MatSeqAIJRestoreArrayRead(diag, &v), "MatSeqAIJRestoreArrayRead");
-  check(MatRestoreRowIJ(diag, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done),
-        "MatRestoreRowIJ");
+  PetscScalar* v = nullptr;
+  PetscMemType memory = PETSC_MEMTYPE_HOST;
+  check(MatSeqAIJGetCSRAndMemType(diag, &ia, &ja, &v, &memory), "MatSeqAIJGetCSRAndMemType");
+  if (memory != PETSC_MEMTYPE_HOST)
+    throw SolveError("internal: the diagonal block is not in host memory");
+  diag_block = {end - begin, ia, ja, v};
   local_block.clear();
   if (options.smoother_block)
     for (int e : *options.smoother_block)
@@ -608,10 +620,10 @@ bool PetscKspSolver::Impl::runs_block_vcycle() const {
 }
 
 void PetscKspSolver::Impl::multiply_many(const ColumnBlock& x, ColumnBlock& y) const {
-  const auto n = static_cast<PetscInt>(row_start.size()) - 1;
+  const CsrView a = fine_matrix();
   y.setZero(x.rows(), x.cols());
-  for (PetscInt i = 0; i < n; ++i)
-    subtract_row_products(row_start.data(), column.data(), value.data(), i, x,
+  for (PetscInt i = 0; i < a.rows; ++i)
+    subtract_row_products(a.row_start, a.column, a.value, i, x,
                           y.data() + static_cast<Eigen::Index>(i) * x.cols());
   y = -y;
 }
@@ -713,14 +725,18 @@ void PetscKspSolver::begin_distributed(const Eigen::SparseMatrix<double>& lower_
   PetscInt n = static_cast<PetscInt>(lower_pattern.rows()), local = PETSC_DECIDE, end = 0;
   // pmg: rows by a partition of the mesh (kept across Newton steps: the same pattern).
   if (m.options.preconditioner == "pmg" && m.options.prolongation) {
-    if (m.options.rows)
-      m.partition = *m.options.rows;
-    else if (m.partition.order.size() != static_cast<std::size_t>(n))
-      m.partition =
-          partition_for_pmg(lower_pattern, *m.options.prolongation, m.options.smoother_block);
-    local = m.partition.own_end - m.partition.own_begin;
+    if (m.options.rows) {
+      m.partition_in_use = m.options.rows;
+    } else {
+      if (m.computed_partition.order.size() != static_cast<std::size_t>(n))
+        m.computed_partition =
+            partition_for_pmg(lower_pattern, *m.options.prolongation, m.options.smoother_block);
+      m.partition_in_use = &m.computed_partition;
+    }
+    local = m.partition().own_end - m.partition().own_begin;
   } else {
-    m.partition = {};
+    m.computed_partition = {};
+    m.partition_in_use = &m.computed_partition;
     check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &n), "PetscSplitOwnership");
   }
   MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
@@ -772,10 +788,9 @@ void PetscKspSolver::assemble_own_rows(const Eigen::SparseMatrix<double>& lower)
     throw SolveError("internal: own-row assembly without the rows of this system");
   m.release();
   m.distributed = true;
-  if (m.partition.order.empty())
-    m.partition = *m.options.rows;
-  m.a = own_row_matrix(lower, m.partition);
-  check(VecCreateMPI(PETSC_COMM_WORLD, m.partition.own_end - m.partition.own_begin,
+  m.partition_in_use = m.options.rows;
+  m.a = own_row_matrix(lower, m.partition());
+  check(VecCreateMPI(PETSC_COMM_WORLD, m.partition().own_end - m.partition().own_begin,
                      static_cast<PetscInt>(lower.rows()), &m.rhs),
         "VecCreateMPI");
   check(VecSet(m.rhs, 0.0), "VecSet");

@@ -34,7 +34,9 @@ public:
   void sum_on_every_rank(double* values, std::size_t n) override {
     petsc_module::sum_on_every_rank(values, n);
   }
-  void sum_to_root(float* values, std::size_t n) override { petsc_module::sum_to_root(values, n); }
+  void union_to_root(float* values, std::size_t n) override {
+    petsc_module::union_to_root(values, n);
+  }
   void idle_barrier() override { petsc_module::idle_barrier(); }
   void lend_node_cores_to_root() override { petsc_module::lend_node_cores_to_root(); }
   int code_of_root(int code) override { return petsc_module::code_of_root(code); }

@@ -41,7 +41,8 @@ constexpr std::size_t block = 256;
 } // namespace
 
 SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D& dofs,
-                                       const SourceField3D& field, int threads, ElementRange share)
+                                       const SourceField3D& field, int threads, ElementRange share,
+                                       const std::vector<std::size_t>* tets)
     : field_(&field), n_coils_(field.n_coils()),
       n_points_(static_cast<int>(tet_rule(rule_degree).size())) {
   const Mesh3D& mesh = *problem.mesh;
@@ -50,11 +51,18 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
   const std::size_t first = std::min(share.first, n_tets);
   const std::size_t last = std::min(share.last, n_tets);
-  const int n_threads = static_cast<int>(std::min<std::size_t>(
-      threads > 0 ? threads : available_threads(), 1 + (last - first) / 2000));
+  // The e-th tet this process computes, of `count`.
+  const std::size_t count = tets ? tets->size() : last - first;
+  const auto tet_of = [&](std::size_t e) { return tets ? (*tets)[e] : first + e; };
+  std::vector<unsigned char> computed(n_tets, 0);
+  for (std::size_t e = 0; e < count; ++e)
+    computed[tet_of(e)] = 1;
+  const int n_threads = static_cast<int>(
+      std::min<std::size_t>(threads > 0 ? threads : available_threads(), 1 + count / 2000));
   auto fill = [&](std::size_t begin, std::size_t end) {
     std::vector<Eigen::Vector3d> x, h(n_coils_);
-    for (std::size_t t = begin; t < end; ++t) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const std::size_t t = tet_of(e);
       rule_points(mesh, dofs, t, x);
       const bool in_shell = problem.is_shell(t);
       for (int q = 0; q < n_points_; ++q) {
@@ -66,9 +74,8 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
       }
     }
   };
-  parallel_blocks(
-      last - first, block, n_threads,
-      [&](std::size_t, std::size_t begin, std::size_t end) { fill(first + begin, first + end); });
+  parallel_blocks(count, block, n_threads,
+                  [&](std::size_t, std::size_t begin, std::size_t end) { fill(begin, end); });
 
   // DOF points of the tets outside the shell: B adds H_s at those of reduced tets, and the
   // VTU shows H_s at all of them. Each is computed by the share of its first such tet.
@@ -80,7 +87,7 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
         for (int i = 0; i < dofs.dofs_per_element(); ++i) {
           const int d = dofs.element_dofs(t)[i];
           if (!seen[d])
-            needed[d] = t >= first && t < last;
+            needed[d] = computed[t];
           seen[d] = 1;
         }
     for (int d = 0; d < dofs.n_dofs(); ++d)
@@ -103,8 +110,8 @@ SourceFieldTable3D::SourceFieldTable3D(const Problem3D& problem, const DofMap3D&
 }
 
 void SourceFieldTable3D::gather_to_root() {
-  sum_to_root(values_.data(), values_.size());
-  sum_to_root(at_dofs_.data(), at_dofs_.size());
+  union_to_root(values_.data(), values_.size());
+  union_to_root(at_dofs_.data(), at_dofs_.size());
 }
 
 Eigen::Vector3d SourceFieldTable3D::H_at_dof(int d) const {

@@ -28,12 +28,15 @@ public:
   // threads: 0 = all cores (MAGFEM_THREADS). Each entry is computed on its own, so the table
   // is the same whatever the count. `share`: the tets whose entries are computed (a process's
   // share in a distributed solve; the rest stay zero until gather_to_root), and the DOF points
-  // whose first tet outside the shell is one of them.
+  // whose first tet outside the shell is one of them. `tets` (ascending), when given, in place
+  // of `share`: own-row assembly's tetrahedra (solver/distributed_rows.hpp), some of which
+  // other processes compute too.
   SourceFieldTable3D(const Problem3D& problem, const DofMap3D& dofs, const SourceField3D& field,
-                     int threads = 0, ElementRange share = {});
+                     int threads = 0, ElementRange share = {},
+                     const std::vector<std::size_t>* tets = nullptr);
   // Collective: rank 0's table becomes the whole one, every process having computed its share
-  // (each entry by one process: the sum is exact). Rank 0 alone post-processes; the other
-  // processes keep their share, all their element loops read.
+  // (union_to_root: an entry computed by several processes has the same bits on each). Rank 0
+  // alone post-processes; the other processes keep their share, all their element loops read.
   void gather_to_root();
 
   bool empty() const { return values_.empty(); }
