@@ -33,10 +33,10 @@ struct Run3D;
 // band): the first pass of the compensator asked for 0.3-0.6.
 inline constexpr double min_force_ratio = 0.25;
 
-// The size sources on the stress surfaces of the force quantities among `quantities` (energy
-// and probes skipped; Lorentz forces have no surface and no estimate, skipped), for the
-// accuracy `accuracy_pct`. `h_requested`: the size each tet of run's mesh was asked to have;
-// `floor`: the smallest size returned. Empty when no force has an estimate.
+// The size sources on the stress surfaces of the force quantities among `quantities` (energy,
+// probes and Lorentz forces, which have no surface, skipped: the energy rule refines for
+// them), for the accuracy `accuracy_pct`. `h_requested`: the size each tet of run's mesh was
+// asked to have; `floor`: the smallest size returned. Empty when no force has an estimate.
 std::vector<SizeSample3D>
 force_goal_sources_3d(const Run3D& run, const std::vector<AdaptQuantity>& quantities,
                       double accuracy_pct, const std::vector<double>& h_requested, double floor);
