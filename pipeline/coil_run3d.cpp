@@ -69,6 +69,47 @@ int coil_index(const Run3D& run, const std::string& name) {
   throw std::logic_error("no coil named " + name);
 }
 
+// Every coil's volume quadrature for the Lorentz integrals, with one locator over the tets
+// that reach into the points' bounding box (a whole-mesh locator indexes all 1.6 M tets of
+// benchmark32; the coils' box holds a fraction of them).
+class CoilQuadrature {
+public:
+  explicit CoilQuadrature(const Run3D& run)
+      : points_(all_points(*run.coils)), locator_(run.mesh, positions(points_)) {}
+  const std::vector<CoilVolumePoint>& points(int coil) const { return points_[coil]; }
+  const PointLocator3D& locator() const { return locator_; }
+
+  // The sum over a Lorentz force's coils of integrate(coil index) (a ForceTorque).
+  template <class Integrate>
+  ForceTorque sum(const Run3D& run, const ForceSpec& f, const Integrate& integrate) const {
+    ForceTorque total;
+    for (const auto& name : f.regions) {
+      const ForceTorque ft = integrate(coil_index(run, name));
+      total.force += ft.force;
+      total.torque += ft.torque;
+    }
+    return total;
+  }
+
+private:
+  static std::vector<std::vector<CoilVolumePoint>> all_points(const CaseCoils& coils) {
+    std::vector<std::vector<CoilVolumePoint>> out;
+    for (int k = 0; k < coils.n_coils(); ++k)
+      out.push_back(volume_points(coils, k, lorentz_order));
+    return out;
+  }
+  static std::vector<Eigen::Vector3d>
+  positions(const std::vector<std::vector<CoilVolumePoint>>& points) {
+    std::vector<Eigen::Vector3d> out;
+    for (const auto& coil : points)
+      for (const auto& q : coil)
+        out.push_back(q.x);
+    return out;
+  }
+  std::vector<std::vector<CoilVolumePoint>> points_;
+  PointLocator3D locator_;
+};
+
 } // namespace
 
 CoilFieldOptions fe_source_options() {
@@ -177,7 +218,7 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
   const CaseCoils& coils = *run.coils;
   const int nc = coils.n_coils();
   const std::vector<double> linkage = flux_linkages_3d(*run.field);
-  const PointLocator3D locator(run.mesh);
+  const CoilQuadrature quadrature(run);
   for (int k = 0; k < nc; ++k) {
     CoilResult r;
     const Coil3D& c = coils.coil(k);
@@ -188,8 +229,8 @@ CoilResults compute_coil_results(const Run3D& run, const Assembler3D& assembler,
     r.power_W = r.resistance_ohm * c.current * c.current;
     r.flux_linkage_Wb = linkage[k];
     try {
-      const ForceTorque ft = lorentz_force_3d(
-          *run.field, locator, k, volume_points(coils, k, lorentz_order), Eigen::Vector3d::Zero());
+      const ForceTorque ft = lorentz_force_3d(*run.field, quadrature.locator(), k,
+                                              quadrature.points(k), Eigen::Vector3d::Zero());
       r.force_N = ft.force;
       r.torque_Nm = ft.torque;
     } catch (const std::invalid_argument& e) {
@@ -222,20 +263,19 @@ std::vector<ForceResult> coil_lorentz_forces(const Run3D& run) {
   std::vector<ForceResult> out;
   if (!run.coils)
     return out;
-  const PointLocator3D locator(run.mesh);
+  const CoilQuadrature quadrature(run);
   for (const auto& f : run.spec.forces) {
     if (f.kind != ForceSpec::Kind::lorentz)
       continue;
+    const ForceTorque ft = quadrature.sum(run, f, [&](int k) {
+      return lorentz_force_3d(*run.field, quadrature.locator(), k, quadrature.points(k),
+                              f.torque_point);
+    });
     ForceResult r;
     r.name = f.name;
     r.method = "lorentz";
-    for (const auto& name : f.regions) {
-      const int k = coil_index(run, name);
-      const ForceTorque ft = lorentz_force_3d(
-          *run.field, locator, k, volume_points(*run.coils, k, lorentz_order), f.torque_point);
-      r.force += ft.force;
-      r.torque += ft.torque;
-    }
+    r.force = ft.force;
+    r.torque = ft.torque;
     out.push_back(r);
   }
   return out;
@@ -251,7 +291,7 @@ void estimate_lorentz_errors_3d(const Run3D& run, const PatchRecovery3D& recover
                                 std::vector<ForceResult>& forces) {
   if (!run.coils)
     return;
-  const PointLocator3D locator(run.mesh);
+  const CoilQuadrature quadrature(run);
   for (const auto& f : run.spec.forces) {
     if (f.kind != ForceSpec::Kind::lorentz)
       continue;
@@ -260,14 +300,10 @@ void estimate_lorentz_errors_3d(const Run3D& run, const PatchRecovery3D& recover
     });
     if (r == forces.end())
       continue;
-    ForceTorque recovered;
-    for (const auto& name : f.regions) {
-      const int k = coil_index(run, name);
-      const ForceTorque ft = lorentz_force_recovered_3d(
-          recovery, locator, k, volume_points(*run.coils, k, lorentz_order), f.torque_point);
-      recovered.force += ft.force;
-      recovered.torque += ft.torque;
-    }
+    const ForceTorque recovered = quadrature.sum(run, f, [&](int k) {
+      return lorentz_force_recovered_3d(recovery, quadrature.locator(), k, quadrature.points(k),
+                                        f.torque_point);
+    });
     r->estimated = true;
     r->force_err = (recovered.force - r->force).cwiseAbs();
     r->torque_err = (recovered.torque - r->torque).cwiseAbs();
