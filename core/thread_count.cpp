@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <dlfcn.h>
+#include <sched.h>
 #include <string>
 #include <thread>
 
@@ -25,6 +26,14 @@ int element_loop_threads(std::size_t n_elements) {
   constexpr std::size_t elements_per_thread = 20000;
   return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(available_threads()),
                                                 1 + n_elements / elements_per_thread));
+}
+
+int cores_in_affinity() {
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  if (sched_getaffinity(0, sizeof mask, &mask) != 0)
+    return available_threads();
+  return std::max(1, CPU_COUNT(&mask));
 }
 
 namespace {

@@ -13,6 +13,11 @@ int available_threads();
 // that a thread's start-up outweighs its share of the work).
 int element_loop_threads(std::size_t n_elements);
 
+// The cores this process may run on (its CPU affinity mask; available_threads() where the
+// mask cannot be read). Under mpirun each process is bound to its share; rank 0 borrows the
+// others' for post-processing (lend_node_cores_to_root), which summary.json reports by this.
+int cores_in_affinity();
+
 // OpenBLAS on `n` threads for the life of this object (then as before). Its thread count is
 // the one that changes results: CHOLMOD's supernodal factorization adds in an order that
 // depends on it (1 and 2 threads differ in the 9th digit of a 2D sweep's force), while

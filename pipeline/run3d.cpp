@@ -12,6 +12,7 @@
 #include "casefile/symmetry_check3d.hpp"
 #include "core/constants.hpp"
 #include "core/output_stage.hpp"
+#include "core/thread_count.hpp"
 #include "materials/material_library.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_fingerprint3d.hpp"
@@ -381,6 +382,8 @@ public:
   static void add_solver_extras(nlohmann::ordered_json& j, const Run3D& run) {
     // The coils' inductance matrix (part of postprocess), 3D only.
     j["timings_s"]["inductance"] = run.coil_results.inductance_s;
+    // Rank 0 post-processes alone, on the cores the other processes lent it.
+    j["post_processing_cores"] = cores_in_affinity();
     j["memory_guard"] = {
         {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
         {"estimated_peak_memory_MB",

@@ -44,9 +44,11 @@ inline std::string mpirun_path() {
 // default catches a hang, not slowness: it stays inside ctest's 600 s, and leaves room for a
 // machine whose cores builds share (CI saw an FE study that takes 15 s alone take over 120 s
 // under a load of 16).
-inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400) {
+// `mpirun_options` go to mpirun itself (e.g. a binding).
+inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400,
+                          const std::string& mpirun_options = "") {
   std::string cmd = "timeout " + std::to_string(timeout_s) + " " + mpirun_path() + " -n " +
-                    std::to_string(n) + " --oversubscribe ";
+                    std::to_string(n) + " --oversubscribe " + mpirun_options + " ";
   if (geteuid() == 0) {
     cmd += "--allow-run-as-root ";
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);

@@ -68,8 +68,7 @@ protected:
 
 TEST_F(Mpi, TwoRanksGiveTheSerialFieldWithOneSetOfOutputs) {
   const std::string example = magfem::test::example("3d/magnet_and_ball_small.yaml");
-  const fs::path serial_dir = fresh_dir("serial"),
-                 mpi_dir = fresh_dir("two_ranks");
+  const fs::path serial_dir = fresh_dir("serial"), mpi_dir = fresh_dir("two_ranks");
   const CliOutcome serial =
       magfem::test::run_cli("solve " + example + " --out " + serial_dir.string());
   ASSERT_EQ(serial.status, 0) << serial.out;
@@ -110,6 +109,22 @@ TEST_F(Mpi, TwoRanksGiveTheSerialFieldWithOneSetOfOutputs) {
   EXPECT_EQ(count(mpi.out, "wrote    "), 1u) << mpi.out;
   EXPECT_EQ(count(mpi.out, "energy   "), 1u) << mpi.out;
   fs::remove_all(serial_dir.parent_path());
+}
+
+// Rank 0 post-processes alone once the solve is done; the other processes on its machine lend
+// it their cores (lend_node_cores_to_root), so its loops are not confined to the one core
+// mpirun bound it to. Bound one core each, rank 0 reports both cores in summary.json.
+// Planted: the lending skipped (no sched_setaffinity) -> 1 core -> fails.
+TEST_F(Mpi, RankZeroPostProcessesOnTheCoresTheOtherProcessLendsIt) {
+  if (sysconf(_SC_NPROCESSORS_ONLN) < 2)
+    GTEST_SKIP() << "one core: nothing to lend";
+  const std::string example = magfem::test::example("3d/magnet_and_ball_small.yaml");
+  const fs::path dir = fresh_dir("lent_cores");
+  const CliOutcome mpi =
+      run_mpi(2, "solve " + example + " --quiet --out " + dir.string(), 400, "--bind-to core");
+  ASSERT_EQ(mpi.status, 0) << mpi.out;
+  EXPECT_EQ(read_json(dir / "summary.json")["post_processing_cores"], 2) << mpi.out;
+  fs::remove_all(dir.parent_path());
 }
 
 // Refusals come before any meshing, on every process alike, with exit 2: never a hang.
@@ -193,8 +208,7 @@ TEST_F(Mpi, SweepDealtToTwoAndThreeProcessesWritesTheSerialOutputs) {
 TEST_F(Mpi, PlanarSweepOnTwoProcessesWritesTheSerialCsvAndPlot) {
   const std::string motion = magfem::test::example("2d/re25_motor_torque.yaml") +
                              " --rotate rotor --axis z --angles 0,120";
-  const fs::path serial = fresh_dir("planar_serial"),
-                 dir = fresh_dir("planar_2_ranks");
+  const fs::path serial = fresh_dir("planar_serial"), dir = fresh_dir("planar_2_ranks");
   const CliOutcome s = serial_sweep(motion, serial);
   ASSERT_EQ(s.status, 0) << s.out;
   const CliOutcome m = run_mpi(2, "sweep " + motion + " --quiet --out " + dir.string());
@@ -214,8 +228,7 @@ TEST_F(Mpi, PlanarSweepOnTwoProcessesWritesTheSerialCsvAndPlot) {
 // checkpoint, if a restored position were dealt again, or if the rows were placed by arrival.
 TEST_F(Mpi, ResumedSweepUnderMpirunSolvesOnlyTheMissingPositions) {
   const std::string case_file = magfem::test::example("axi/voice_coil_magnet.yaml");
-  const fs::path serial = fresh_dir("resume_serial"),
-                 dir = fresh_dir("resume_2_ranks");
+  const fs::path serial = fresh_dir("resume_serial"), dir = fresh_dir("resume_2_ranks");
   ASSERT_EQ(serial_sweep(case_file + voice_coil_sweep, serial).status, 0);
   fs::create_directories(dir / "sweep.csv" / "blocker");
   const CliOutcome cut =
