@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# The open speed targets of issues 33 and 35, measured and written to docs/target_timings.md
+# with the commit, the machine and its load (so a figure in a note can be traced to a run):
+#   benchmark32 at its default mesh, serial and under mpirun -n 2 (wall, CPU, peak memory per
+#   process, stage times, pointwise accuracy against the charge model);
+#   the compensator's 8-position FE sweep, --jobs 1 against mpirun -n 2 (and whether sweep.csv
+#   is byte-identical).
+# About 4 min on a quiet 2-core machine. Run it on a quiet machine: the figures are wall times.
+#   bash scripts/target_timings.sh                 build/magfem, writes docs/target_timings.md
+#   MAGFEM=build2/magfem bash scripts/target_timings.sh   another build of the same commit
+set -euo pipefail
+cd "$(dirname "$0")/.."
+magfem=${MAGFEM:-build/magfem}
+doc=docs/target_timings.md
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+mpirun_2=(mpirun -n 2)
+if [[ $EUID -eq 0 ]]; then # Open MPI as root: the option and the variables
+  mpirun_2+=(--allow-run-as-root)
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+
+timing() { sed -n '/"timings_s"/,/}/p' "$1/summary.json" | grep "\"$2\"" | sed 's/.*: *//; s/,$//'; }
+field() { grep -m1 "\"$2\"" "$1/summary.json" | sed 's/.*: *//; s/,$//'; }
+load() { cut -d' ' -f1 /proc/loadavg; }
+# GNU time's wall, user, sys and peak RSS of one process: "wall user sys rss_MB".
+timed() { # file command...
+  local f=$1
+  shift
+  /usr/bin/time -f "%e %U %S %M" -o "$f" "$@" > /dev/null 2>&1
+}
+rss_mb() { awk '{ printf "%.0f", $4 / 1024 }' "$1"; }
+
+b32=examples/3d/benchmark32_parallel.yaml
+load_before=$(load)
+$magfem analytic $b32 --out "$out/b32_exact" > /dev/null
+timed "$out/serial.time" $magfem solve $b32 --quiet --out "$out/b32_serial"
+# One GNU time per process: each rank's own peak memory.
+OMP_NUM_THREADS=1 "${mpirun_2[@]}" sh -c '/usr/bin/time -f "%e %U %S %M" -o "$0/rank.$OMPI_COMM_WORLD_RANK.time" "$@"' \
+  "$out" $magfem solve $b32 --quiet --out "$out/b32_2ranks" > /dev/null 2>&1 ||
+  { echo "mpirun -n 2 benchmark32 failed" >&2; exit 1; }
+pointwise() { # exact fe: "lo..hi" of pointwise rms (%) over Bx, By, Bz
+  $magfem compare "$1" "$2" | awk '$1 ~ /^B[xyz]$/ { v = $5; lo = (lo == "" || v < lo) ? v : lo;
+    hi = (v > hi) ? v : hi } END { printf "%.3g..%.3g", lo, hi }'
+}
+
+sweep=(sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angles 0:12.857:90
+  --mesh-scale 2 --quiet)
+timed "$out/sweep_serial.time" $magfem "${sweep[@]}" --jobs 1 --out "$out/sweep_serial"
+t0=$(date +%s.%N)
+"${mpirun_2[@]}" $magfem "${sweep[@]}" --out "$out/sweep_2ranks" > /dev/null 2>&1
+sweep_2=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+load_after=$(load)
+
+stages() { # dir
+  printf "mesh %.1f, assembly %.1f, pmg set-up %.1f, CG %.1f, post %.1f (total %.1f s)" \
+    "$(timing "$1" mesh)" "$(timing "$1" assemble)" "$(timing "$1" linear_setup)" \
+    "$(timing "$1" linear_solve)" "$(timing "$1" postprocess)" "$(timing "$1" total)"
+}
+read -r s_wall s_user s_sys s_rss < "$out/serial.time"
+serial_mb=$(rss_mb "$out/serial.time")
+{
+  echo "# Open speed targets (issues 33 and 35)"
+  echo
+  echo "Written by \`scripts/target_timings.sh\` on commit \`$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- . ':!docs' || echo -dirty)\`,"
+  echo "$(date -u +%Y-%m-%d), $(nproc) cores, load average $load_before before and $load_after after."
+  echo "Wall times: a loaded machine makes them longer."
+  echo
+  echo "## benchmark32 at its default mesh (issue 35: <= 30 s end to end at pointwise rms <= 0.6 %)"
+  echo
+  echo "| run | wall (s) | user + sys CPU (s) | peak memory per process (MB) | unknowns | CG iterations |"
+  echo "|---|---|---|---|---|---|"
+  printf "| serial | %s | %s + %s | %s | %s | %s |\n" "$s_wall" "$s_user" "$s_sys" "$serial_mb" \
+    "$(field "$out/b32_serial" unknowns)" "$(field "$out/b32_serial" linear_iterations)"
+  r0="$out/rank.0.time" r1="$out/rank.1.time"
+  printf "| mpirun -n 2 | %s | %s + %s, %s + %s | %s (%.2f of serial), %s (%.2f) | %s | %s |\n" \
+    "$(cut -d' ' -f1 "$r0")" "$(cut -d' ' -f2 "$r0")" "$(cut -d' ' -f3 "$r0")" \
+    "$(cut -d' ' -f2 "$r1")" "$(cut -d' ' -f3 "$r1")" \
+    "$(rss_mb "$r0")" "$(awk -v a="$(rss_mb "$r0")" -v b="$serial_mb" 'BEGIN { print a / b }')" \
+    "$(rss_mb "$r1")" "$(awk -v a="$(rss_mb "$r1")" -v b="$serial_mb" 'BEGIN { print a / b }')" \
+    "$(field "$out/b32_2ranks" unknowns)" "$(field "$out/b32_2ranks" linear_iterations)"
+  echo
+  echo "Stages (summary.json): serial $(stages "$out/b32_serial"); mpirun -n 2 $(stages "$out/b32_2ranks")."
+  echo "Pointwise rms on r56 against the charge model (Bx, By, Bz, %): serial"
+  echo "$(pointwise "$out/b32_exact/r56.csv" "$out/b32_serial/r56.csv"), mpirun -n 2 $(pointwise "$out/b32_exact/r56.csv" "$out/b32_2ranks/r56.csv")."
+  echo
+  echo "## The compensator's FE sweep, 8 positions (issue 33: mpirun -n 2 >= 1.7x the --jobs 1 run)"
+  echo
+  read -r w_wall _ < "$out/sweep_serial.time"
+  same=$(cmp -s "$out/sweep_serial/sweep.csv" "$out/sweep_2ranks/sweep.csv" && echo identical || echo DIFFERENT)
+  printf -- "--jobs 1: %s s; mpirun -n 2: %s s; %.2fx; sweep.csv %s.\n" "$w_wall" "$sweep_2" \
+    "$(awk -v a="$w_wall" -v b="$sweep_2" 'BEGIN { print a / b }')" "$same"
+} > "$doc"
+cat "$doc"
