@@ -57,13 +57,17 @@ std::unique_ptr<Run3D> solve_with(const CaseSpec& spec, std::vector<SizeSample3D
 // push that the loop asks for then (a quarter of the energy error reached). Measured (order
 // 2, --mesh-scale 1.5): first mesh 80.3k unknowns, torque 0.334 % true, 1.04 % estimated,
 // energy 0.050 %; goal 144k unknowns, 0.080 % true, 0.172 % estimated (16.7k sources); energy
-// push 231k unknowns, 0.178 % true. Asserted: the goal's torque closer to the exact one with
-// fewer unknowns, every source on the stress sphere, and the torque's one-mesh estimate
-// honest (true <= 3x estimated) on both of the goal's meshes. Planted: the size rule's
-// exponent negated (sources no finer than their tets: goal 80.1k, 0.277 %) fails the error
-// comparison; the element B replaced by the average (no local differences, no source) fails
-// at once.
-TEST(Adapt3DForce, GoalRefinesOnTheStressSphereAndBeatsTheEnergyPush) {
+// push 231k unknowns, 0.178 % true. On another machine (2026-11-27, same code and first mesh)
+// the goal was 0.117 % and the energy push 0.0011 %: errors of 0.1 % on these meshes change
+// sign with the last bits of the input (glibc's libm picks FMA variants per CPU), so which
+// of two such errors is smaller is luck, not the method, and is not asserted. Asserted: the
+// goal pass at least halves the first mesh's torque error (measured 0.334 -> 0.080 and 0.117
+// %) with fewer unknowns than the energy push, every source on the stress sphere, and the
+// torque's one-mesh estimate honest (true <= 3x estimated) on both of the goal's meshes.
+// Planted: the size rule's exponent negated (sources no finer than their tets: goal 80.1k,
+// 0.277 %) fails the halving; the element B replaced by the average (no local differences,
+// no source) fails at once.
+TEST(Adapt3DForce, GoalRefinesOnTheStressSphereAndHalvesTheTorqueErrorWithFewerUnknowns) {
   const CaseSpec spec = spheres_spec();
   const auto quantities = resolve_adapt_quantities(spec);
   const auto first = solve_with(spec, {});
@@ -89,7 +93,7 @@ TEST(Adapt3DForce, GoalRefinesOnTheStressSphereAndBeatsTheEnergyPush) {
             << " % true, " << estimated_error_pct(*goal) << " % estimated\nenergy push "
             << energy->dofs->n_dofs() << ": " << true_error_pct(*energy) << " % true\n";
   EXPECT_LT(goal->dofs->n_dofs(), energy->dofs->n_dofs());
-  EXPECT_LT(true_error_pct(*goal), true_error_pct(*energy));
+  EXPECT_LE(true_error_pct(*goal), 0.5 * true_error_pct(*first));
   for (const Run3D* run : {first.get(), goal.get()})
     EXPECT_LE(true_error_pct(*run), 3 * estimated_error_pct(*run));
 }
