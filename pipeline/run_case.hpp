@@ -12,7 +12,7 @@
 //             build_problem(); prepare_dofs() (3D: curved P2 nodes, coil source field);
 //             make_assembler(); prepare_solver(assembler) (3D: p-multigrid levels)
 //   solve     solve(assembler, u) -> NewtonReport; post_processes() (false on MPI ranks > 0)
-//   after     summarize_energy(names); recover() (3D: nodal B); probe_locator() (3D: over the
+//   after     recover() (3D: nodal B); summarize_energy(names); probe_locator() (3D: over the
 //             probe points' box); sample_probe(locator, probe);
 //             integrate_section(section); forces(); coil_results(assembler, u);
 //             estimate_error() (seconds are timed here); check_finite_fields();
@@ -88,8 +88,8 @@ std::unique_ptr<typename D::Run> run_case_stages(CaseSpec spec, const RunOverrid
   std::vector<std::string> names;
   for (const auto& r : run->spec.regions)
     names.push_back(r.name);
+  d.recover(); // first: the 3D energy summary takes its peak |B| from the recovery
   run->energy = d.summarize_energy(names);
-  d.recover();
   const typename D::Locator locator = d.probe_locator();
   for (const auto& probe : run->spec.probes)
     run->probes.push_back(d.sample_probe(locator, probe));

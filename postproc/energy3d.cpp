@@ -33,8 +33,9 @@ struct ElementEnergy {
   double volume = 0, energy = 0, peak_B = 0;
 };
 
-// Volume, energy and (outside the shell) peak |B| at the DOF nodes of tet t.
-ElementEnergy element_energy(const Field3D& field, std::size_t t) {
+// Volume, energy and (outside the shell, unless `known_peak`) peak |B| at the DOF nodes of
+// tet t.
+ElementEnergy element_energy(const Field3D& field, std::size_t t, bool known_peak) {
   const auto& problem = field.problem();
   const auto& mesh = *problem.mesh;
   const ShellTransform shell{mesh.shell_inner_radius, mesh.shell_outer_radius};
@@ -62,7 +63,7 @@ ElementEnergy element_energy(const Field3D& field, std::size_t t) {
     e.volume += dv;
     e.energy += dv * w;
   }
-  if (in_shell)
+  if (in_shell || known_peak)
     return e;
   const int n_nodes = field.dofs().dofs_per_element();
   for (int i = 0; i < n_nodes; ++i)
@@ -72,7 +73,8 @@ ElementEnergy element_energy(const Field3D& field, std::size_t t) {
 
 } // namespace
 
-EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std::string>& names) {
+EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std::string>& names,
+                                    const std::vector<double>* element_peak_B) {
   const auto& problem = field.problem();
   const auto& mesh = *problem.mesh;
   EnergySummary3D out;
@@ -90,8 +92,11 @@ EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std:
   std::vector<ElementEnergy> share(mesh.n_tets());
   parallel_blocks(mesh.n_tets(), 4096, element_loop_threads(mesh.n_tets()),
                   [&](std::size_t, std::size_t lo, std::size_t hi) {
-                    for (std::size_t t = lo; t < hi; ++t)
-                      share[t] = element_energy(field, t);
+                    for (std::size_t t = lo; t < hi; ++t) {
+                      share[t] = element_energy(field, t, element_peak_B != nullptr);
+                      if (element_peak_B)
+                        share[t].peak_B = (*element_peak_B)[t];
+                    }
                   });
   for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
     auto& reg = out.regions[slot_of(mesh.tet_part[t], names.size())];

@@ -30,7 +30,10 @@ struct EnergySummary3D {
   std::vector<RegionSummary3D> regions; // parts in order, then air, then the exterior shell
 };
 
-// names: the part names, indexed like Geometry3D::parts.
-EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std::string>& names);
+// names: the part names, indexed like Geometry3D::parts. element_peak_B (optional): per tet,
+// max |B| over its DOF nodes (RecoveredB3D::element_peak_B of the same field), taken instead
+// of evaluating B there again; the summary is the same bits either way.
+EnergySummary3D summarize_energy_3d(const Field3D& field, const std::vector<std::string>& names,
+                                    const std::vector<double>* element_peak_B = nullptr);
 
 } // namespace magfem

@@ -60,6 +60,7 @@ RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
   const int n = dofs_->dofs_per_element();
   b_.assign(part_.size(), Eigen::Vector3d::Zero());
   weight_.assign(part_.size(), 0.0);
+  element_peak_B_.assign(mesh.n_tets(), 0.0);
   if (threads <= 0)
     threads = element_loop_threads(mesh.n_tets());
   // Per element and local DOF: vol B (3 values), vol and the slot (exact as a double). Each
@@ -75,12 +76,16 @@ RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
                                .volume;
         const int* dof = dofs_->element_dofs(t);
         const ElementField3D element(field, t);
+        double peak = 0;
         for (int i = 0; i < n; ++i) {
-          const Eigen::Vector3d b = vol * element.B_at_node(i);
+          const Eigen::Vector3d b_node = element.B_at_node(i);
+          peak = std::max(peak, b_node.norm());
+          const Eigen::Vector3d b = vol * b_node;
           double* o = out + 5 * i;
           o[0] = b.x(), o[1] = b.y(), o[2] = b.z(), o[3] = vol;
           o[4] = own_slot(dof[i], mesh.tet_part[t]);
         }
+        element_peak_B_[t] = peak;
       },
       [&](std::size_t t, const double* v, std::size_t lo, std::size_t hi) {
         if (problem.is_shell(t))

@@ -43,6 +43,10 @@ public:
   std::vector<Eigen::Vector3d> dof_average() const;
   // Every stored value (for finiteness checks).
   const std::vector<Eigen::Vector3d>& values() const { return b_; }
+  // Per tet, max |B| (T) of the element field over its DOF nodes, the values averaged here
+  // (0 for shell tets): the energy summary's peak |B| (summarize_energy_3d) without
+  // evaluating B at every node of every tet a second time.
+  const std::vector<double>& element_peak_B() const { return element_peak_B_; }
   std::size_t n_slots() const { return b_.size(); }
 
 private:
@@ -53,10 +57,11 @@ private:
 
   const Mesh3D* mesh_ = nullptr;
   const DofMap3D* dofs_ = nullptr;
-  std::vector<int> first_;         // n_dofs + 1
-  std::vector<int> part_;          // region (tet_part) of every slot
-  std::vector<Eigen::Vector3d> b_; // recovered B of every slot, T
-  std::vector<double> weight_;     // volume of the slot's tets around its DOF, m^3
+  std::vector<int> first_;             // n_dofs + 1
+  std::vector<int> part_;              // region (tet_part) of every slot
+  std::vector<Eigen::Vector3d> b_;     // recovered B of every slot, T
+  std::vector<double> weight_;         // volume of the slot's tets around its DOF, m^3
+  std::vector<double> element_peak_B_; // per tet, T
 };
 
 } // namespace magfem

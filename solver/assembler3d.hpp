@@ -10,6 +10,7 @@
 // outer faces are infinity (phi = 0); `dirichlet` also sets phi = 0 there; `neumann`
 // (B . n = 0 everywhere) fixes one gauge DOF instead.
 // Unknowns are the free DOFs; constrained DOFs are eliminated.
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -45,7 +46,8 @@ public:
   bool is_linear() const override { return linear_; }
   void evaluate(const Eigen::VectorXd& u, Eigen::VectorXd& residual,
                 Eigen::SparseMatrix<double>* matrix, TangentKind kind) const override;
-  double load_norm() const override { return load_norm_; }
+  // |r(0)|: remembered from the first evaluate() at u = 0, else evaluated on first demand.
+  double load_norm() const override;
   // Nonlinear problems: the residual at u = 0 and the matrix of the problem in which every
   // soft material has its start permeability (Material::start_permeability).
   bool start_problem(Eigen::VectorXd& residual, Eigen::SparseMatrix<double>& matrix) const override;
@@ -107,7 +109,9 @@ private:
   bool linear_ = true;
   SparsePattern pattern_;
   Eigen::VectorXd source_load_; // empty without coils
-  double load_norm_ = 0;
+  // Negative until known (load_norm()). Atomic: a const assembler may be shared by threads,
+  // which would all store the same value.
+  mutable std::atomic<double> load_norm_{-1};
 };
 
 } // namespace magfem

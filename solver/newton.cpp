@@ -82,12 +82,13 @@ NewtonReport newton_iterations(const NonlinearSystem& system, Eigen::VectorXd& u
   report.linear = system.is_linear();
   if (u.size() != system.n_unknowns())
     u = Eigen::VectorXd::Zero(system.n_unknowns());
-  const double scale = system.load_norm() > 0 ? system.load_norm() : 1.0;
-
   Eigen::VectorXd r;
   auto t0 = Clock::now();
   system.evaluate(u, r, &k, options.method);
   report.assemble_s += seconds_since(t0);
+  // After the first evaluation: at u = 0 (the usual start) it is the load's residual, which
+  // an assembler may keep as its load norm instead of evaluating it again (Assembler3D).
+  const double scale = system.load_norm() > 0 ? system.load_norm() : 1.0;
   double r_norm = r.norm();
   report.residual_history.push_back(r_norm / scale);
   if (system.load_norm() == 0) { // no sources: the zero field is the answer

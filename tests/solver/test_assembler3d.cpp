@@ -103,6 +103,32 @@ TEST(Assembler3D, ResidualIsLinearWithTheTangent) {
   EXPECT_GT(assembler.load_norm(), 0);
 }
 
+// load_norm() is |r(0)| however it is reached: on demand, or remembered from an evaluation at
+// u = 0 (with the tangent, either kind), never from one elsewhere (remembering the first
+// evaluation whatever its u, planted, fails the second check; seen, removed).
+TEST(Assembler3D, LoadNormIsTheResidualNormAtZero) {
+  Fixture f(3, 2, OuterKind3D::dirichlet);
+  const DofMap3D dofs(*f.problem.mesh, 2);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(Assembler3D(f.problem, dofs).n_unknowns());
+  Eigen::VectorXd r0;
+  Assembler3D(f.problem, dofs).evaluate(zero, r0, nullptr, TangentKind::newton);
+  ASSERT_GT(r0.norm(), 0);
+  EXPECT_EQ(Assembler3D(f.problem, dofs).load_norm(), r0.norm()) << "on demand";
+  {
+    const Assembler3D assembler(f.problem, dofs);
+    Eigen::VectorXd r;
+    assembler.evaluate(Eigen::VectorXd::Random(zero.size()), r, nullptr, TangentKind::newton);
+    EXPECT_EQ(assembler.load_norm(), r0.norm()) << "after an evaluation away from zero";
+  }
+  for (TangentKind kind : {TangentKind::newton, TangentKind::picard}) {
+    const Assembler3D assembler(f.problem, dofs);
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> k;
+    assembler.evaluate(zero, r, &k, kind);
+    EXPECT_EQ(assembler.load_norm(), r0.norm()) << "remembered from Newton's first evaluation";
+  }
+}
+
 // P2 contains every quadratic potential: for a harmonic one (x^2 - y^2 + 3 yz + linear), the
 // residual vanishes at every DOF not on the box boundary (no interior source), and its
 // gradient evaluated from the interpolant is exact everywhere. (P1 interpolation of the same
