@@ -41,12 +41,25 @@ namespace {
 using GetThreads = int (*)();
 using SetThreads = void (*)(int);
 
-// OpenBLAS's own entry points, if the process has OpenBLAS loaded (through CHOLMOD's BLAS).
+// One of OpenBLAS's own entry points, if the process has OpenBLAS loaded (through CHOLMOD's
+// BLAS): in the global scope, or else in libopenblas.so.0 loaded by a module (the PETSc module
+// is opened RTLD_LOCAL, so a program that links no BLAS itself sees its OpenBLAS only there).
+// RTLD_NOLOAD: never loads it.
+void* openblas_symbol(const char* name) {
+  if (void* f = dlsym(RTLD_DEFAULT, name))
+    return f;
+  void* library = dlopen("libopenblas.so.0", RTLD_LAZY | RTLD_NOLOAD);
+  if (!library)
+    return nullptr;
+  void* f = dlsym(library, name);
+  dlclose(library); // drops only the reference RTLD_NOLOAD took
+  return f;
+}
 GetThreads openblas_get() {
-  return reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  return reinterpret_cast<GetThreads>(openblas_symbol("openblas_get_num_threads"));
 }
 SetThreads openblas_set() {
-  return reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  return reinterpret_cast<SetThreads>(openblas_symbol("openblas_set_num_threads"));
 }
 
 } // namespace
