@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <numeric>
@@ -16,7 +17,9 @@
 
 #include "core/input_error.hpp"
 #include "core/progress.hpp"
+#include "core/thread_count.hpp"
 #include "solver/block_smoother.hpp"
+#include "solver/csr_product.hpp"
 #include "solver/galerkin_product.hpp"
 #include "solver/own_row_matrix.hpp"
 #include "solver/petsc_check.hpp"
@@ -163,12 +166,18 @@ namespace {
 
 // The block smoother is built when PETSc sets the smoothers up, not before: options that
 // replace it (-mg_levels_pc_type sor, the one-sweep SSOR smoother of before) then cost no
-// factorization. Down and up share it.
+// factorization. Down and up share it. Serially without petsc_options nothing can replace it,
+// and it is built on a thread of its own (`building`) from the start of pmg's set-up, while
+// the Galerkin product and BoomerAMG's set-up run: its CHOLMOD analysis (METIS) and
+// BoomerAMG's set-up are each serial (benchmark32: 1.4 and ~1.2 s of CPU, the factor 3.7 s on
+// two BLAS threads). The smoother is the same either way: built from the same arrays, which
+// nothing writes during the set-up.
 struct BlockSmootherSlot {
   CsrView matrix;
   const std::vector<int>* block = nullptr;
   BlockFactorCache* cache = nullptr;
   std::unique_ptr<BlockSmoother> smoother;
+  std::future<std::unique_ptr<BlockSmoother>> building; // joined after KSPSetUp
 };
 
 BlockSmoother& block_smoother_of(PC pc) {
@@ -181,7 +190,7 @@ PetscErrorCode set_up_block_smoother(PC pc) {
   void* context = nullptr;
   PetscCall(PCShellGetContext(pc, &context));
   auto& slot = *static_cast<BlockSmootherSlot*>(context);
-  if (slot.smoother)
+  if (slot.smoother || slot.building.valid())
     return 0;
   try {
     slot.smoother = std::make_unique<BlockSmoother>(slot.matrix, *slot.block, *slot.cache);
@@ -215,6 +224,20 @@ template <bool Down> PetscErrorCode smooth_apply(PC pc, Vec b, Vec x) {
   return smooth_richardson<Down>(pc, b, x, nullptr, 0, 0, 0, 1, PETSC_TRUE, &done, &reason);
 }
 
+// y = A x for the MATSHELL over our CSR arrays (PetscKspSolver::setup).
+PetscErrorCode multiply_csr(Mat a, Vec x, Vec y) {
+  void* context = nullptr;
+  PetscCall(MatShellGetContext(a, &context));
+  const PetscScalar* vx = nullptr;
+  PetscScalar* vy = nullptr;
+  PetscCall(VecGetArrayRead(x, &vx));
+  PetscCall(VecGetArrayWrite(y, &vy));
+  csr_multiply(*static_cast<const CsrView*>(context), vx, vy, available_threads());
+  PetscCall(VecRestoreArrayWrite(y, &vy));
+  PetscCall(VecRestoreArrayRead(x, &vx));
+  return 0;
+}
+
 } // namespace
 
 // galerkin_product and our CSR arrays share PETSc's index type (Debian's PETSc: 32-bit).
@@ -225,6 +248,12 @@ struct PetscKspSolver::Impl {
   PetscOptions db = nullptr;
   KSP ksp = nullptr;
   Mat a = nullptr;
+  // Serial pmg without petsc_options: the operator of CG's products and PCMG's fine residual
+  // (two per iteration, a third of CG's time at benchmark32) as a MATSHELL over `a`'s arrays
+  // multiplying on all cores; PETSc's own product is serial. `a` stays the matrix the
+  // preconditioner is built from.
+  Mat product = nullptr;
+  CsrView product_matrix;
   Mat p = nullptr;      // pmg's interpolation
   Mat coarse = nullptr; // pmg's coarse operator P^T A P
   Vec rhs = nullptr;    // distributed mode: the right-hand side of the solve
@@ -257,6 +286,8 @@ struct PetscKspSolver::Impl {
       KSPDestroy(&ksp);
     if (a)
       MatDestroy(&a);
+    if (product)
+      MatDestroy(&product);
     if (p)
       MatDestroy(&p);
     if (coarse)
@@ -374,6 +405,16 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& q = *options.prolongation;
+  // The global block decides (every process must set the same smoother type up).
+  const bool has_block = options.smoother_block && !options.smoother_block->empty();
+  if (has_block && !distributed) {
+    block_smoother = std::make_unique<BlockSmootherSlot>(
+        BlockSmootherSlot{fine_matrix(), options.smoother_block, &block_factor, nullptr, {}});
+    if (options.petsc_options.empty() && options.concurrent_block_factor)
+      block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get()] {
+        return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, *slot->cache);
+      });
+  }
   if (distributed)
     set_up_distributed_coarse_space(q);
   else
@@ -385,11 +426,10 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   check(PCMGSetInterpolation(pc, 1, p), "PCMGSetInterpolation");
   check(PCMGSetGalerkin(pc, PC_MG_GALERKIN_NONE), "PCMGSetGalerkin");
   KSP coarse_ksp = nullptr;
-  // The global block decides (every process must set the same smoother type up).
-  if (options.smoother_block && !options.smoother_block->empty()) {
-    block_smoother = std::make_unique<BlockSmootherSlot>(
-        BlockSmootherSlot{fine_matrix(), distributed ? &local_block : options.smoother_block,
-                          &block_factor, nullptr});
+  if (has_block) {
+    if (distributed) // the process's diagonal block is known once the coarse space is
+      block_smoother = std::make_unique<BlockSmootherSlot>(
+          BlockSmootherSlot{fine_matrix(), &local_block, &block_factor, nullptr, {}});
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
@@ -555,7 +595,7 @@ void PetscKspSolver::Impl::set_up_ksp(MPI_Comm comm) {
   PC pc = nullptr;
   check(KSPGetPC(ksp, &pc), "KSPGetPC");
   check(PetscObjectSetOptions(reinterpret_cast<PetscObject>(pc), db), "options");
-  check(KSPSetOperators(ksp, a, a), "KSPSetOperators");
+  check(KSPSetOperators(ksp, product ? product : a, a), "KSPSetOperators");
   check(KSPSetType(ksp, KSPCG), "KSPSetType");
   // The unpreconditioned residual: the same test as the incomplete-Cholesky CG, so the
   // tolerance means the same whichever preconditioner ran.
@@ -574,6 +614,8 @@ void PetscKspSolver::Impl::set_up_ksp(MPI_Comm comm) {
   check(KSPSetFromOptions(ksp), "applying petsc_options");
   check(KSPMonitorSet(ksp, &Impl::monitor, this, nullptr), "KSPMonitorSet");
   check(KSPSetUp(ksp), "preconditioner set-up");
+  if (block_smoother && block_smoother->building.valid())
+    block_smoother->smoother = block_smoother->building.get(); // rethrows the build's error
 }
 
 void PetscKspSolver::setup(const Eigen::SparseMatrix<double>& lower) {
@@ -586,6 +628,15 @@ void PetscKspSolver::setup(const Eigen::SparseMatrix<double>& lower) {
   check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, m.row_start.data(), m.column.data(),
                                   m.value.data(), &m.a),
         "MatCreateSeqAIJWithArrays");
+  if (m.options.preconditioner == "pmg" && m.options.petsc_options.empty() &&
+      m.options.threaded_product) {
+    m.product_matrix = m.fine_matrix();
+    check(MatCreateShell(PETSC_COMM_SELF, n, n, n, n, &m.product_matrix, &m.product),
+          "MatCreateShell");
+    check(
+        MatShellSetOperation(m.product, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiply_csr)),
+        "MatShellSetOperation");
+  }
   m.set_up_ksp(PETSC_COMM_SELF);
 }
 
@@ -605,6 +656,11 @@ KrylovOutcome PetscKspSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd&
   Vec vb = nullptr, vx = nullptr;
   check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, b.data(), &vb), "VecCreateSeqWithArray");
   check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &vx), "VecCreateSeqWithArray");
+  // OpenBLAS on one thread for CG: CHOLMOD's triangular solves in the V-cycles gain little
+  // from a second one, and between calls idle OpenBLAS threads spin (sched_yield) on the core
+  // the product's second thread needs (benchmark32: sys time 13.9 -> 3.9 s, one run each).
+  // The factorization, in the set-up, keeps every thread.
+  const BlasThreads one_blas_thread(1);
   const PetscErrorCode code = KSPSolve(m.ksp, vb, vx);
   VecDestroy(&vb);
   VecDestroy(&vx);

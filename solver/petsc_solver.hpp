@@ -39,6 +39,13 @@ struct PetscSolverOptions {
   // Distributed pmg: the rows each process owns, decided before assembly
   // (partition_distributed_rows); null: begin_distributed partitions the given pattern.
   const DistributedRows* rows = nullptr;
+  // Serial pmg with a smoother block and no petsc_options: factorize the block on a thread of
+  // its own during the rest of the set-up (petsc_ksp_solver.cpp). false: when PETSc sets the
+  // smoother up, after the coarse operator (tests compare the two).
+  bool concurrent_block_factor = true;
+  // Serial pmg and no petsc_options: CG's and PCMG's products with the system matrix on all
+  // cores (petsc_ksp_solver.cpp) rather than PETSc's serial one. false: PETSc's (tests).
+  bool threaded_product = true;
 };
 
 // How a Krylov solve ended. `converged` only when it stopped on the tolerance.
