@@ -2,8 +2,11 @@
 // A 10 mm box of structured tets (no TetGen) as a 3D problem: a magnet (B_r 1.2 T, mu_r 1.05,
 // magnetized along (1, 2, 3)) in the lower half, iron (mu_r 50) in the upper half, air as the
 // background material, and the given outer boundary kind.
+#include <Eigen/Sparse>
+
 #include "materials/magnetization.hpp"
 #include "materials/material.hpp"
+#include "solver/assembler3d.hpp"
 #include "solver/problem3d.hpp"
 #include "structured_mesh3d.hpp"
 
@@ -34,6 +37,20 @@ struct BoxProblem3D {
     m.pattern = Magnetization::Pattern::parallel;
     m.direction = Eigen::Vector3d(1, 2, 3).normalized();
     problem.parts = {{&magnet, m}, {&iron, {}}};
+  }
+};
+
+// The P2 box with Dirichlet faces, assembled at u = 0: its tangent (lower triangle) and the
+// magnet's load (minus the residual there), what the linear solver tests solve.
+struct BoxTangent3D {
+  BoxProblem3D box{6, 2, OuterKind3D::dirichlet};
+  DofMap3D dofs{box.mesh, 2};
+  Assembler3D a{box.problem, dofs};
+  Eigen::SparseMatrix<double> lower;
+  Eigen::VectorXd load;
+  BoxTangent3D() {
+    a.evaluate(Eigen::VectorXd::Zero(a.n_unknowns()), load, &lower, TangentKind::newton);
+    load = -load;
   }
 };
 

@@ -22,21 +22,13 @@ namespace {
 
 // The P2 box (magnet and iron halves, Dirichlet faces) at u = 0, its P1 coarse space and the
 // iron half's equations as the smoother block (standing in for the open boundary's shell).
-struct BoxSystem {
-  test::BoxProblem3D box{6, 2, OuterKind3D::dirichlet};
-  DofMap3D dofs{box.mesh, 2};
-  Assembler3D a{box.problem, dofs};
-  Eigen::SparseMatrix<double> lower;
-  Eigen::VectorXd rhs;
+struct BoxSystem : test::BoxTangent3D {
+  const Eigen::VectorXd& rhs = load;
   Eigen::SparseMatrix<double, Eigen::RowMajor> prolongation =
       p1_prolongation(dofs, a.dof_to_equation());
   std::vector<int> block =
       element_equations(dofs, a.dof_to_equation(), box.mesh.n_tets(),
                         [&](std::size_t t) { return box.mesh.tet_part[t] == 1; });
-  BoxSystem() {
-    a.evaluate(Eigen::VectorXd::Zero(a.n_unknowns()), rhs, &lower, TangentKind::newton);
-    rhs = -rhs;
-  }
   PetscSolverOptions options(bool as_before, Progress* progress = nullptr) const {
     PetscSolverOptions o{"pmg", "", 1e-12, 200, progress, &prolongation, &block};
     o.concurrent_block_factor = o.threaded_product = !as_before;
