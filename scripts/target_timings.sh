@@ -32,6 +32,11 @@ timed() { # file command...
 }
 rss_mb() { awk '{ printf "%.0f", $4 / 1024 }' "$1"; }
 
+# The memory read bandwidth, before and after (GB/s on 1 and 2 threads): the solves stream
+# their matrices from memory, and this host's speed drifts.
+g++ -std=c++20 -O2 -o "$out/memory_bandwidth" scripts/memory_bandwidth.cpp -lpthread
+bandwidth_before=$("$out/memory_bandwidth")
+
 b32=examples/3d/benchmark32_parallel.yaml
 load_before=$(load)
 $magfem analytic $b32 --out "$out/b32_exact" > /dev/null
@@ -58,6 +63,7 @@ for ((k = 1; k <= pairs; ++k)); do
   awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }' > "$out/sweep_2ranks.$k.wall"
 done
 load_after=$(load)
+bandwidth_after=$("$out/memory_bandwidth")
 
 stages() { # dir
   printf "mesh %.1f, assembly %.1f, pmg set-up %.1f, CG %.1f, post %.1f (total %.1f s)" \
@@ -72,6 +78,7 @@ serial_mb=$(rss_mb "$out/serial.time")
   echo "Written by \`scripts/target_timings.sh\` on commit \`$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- . ':!docs' || echo -dirty)\`,"
   echo "$(date -u +%Y-%m-%d), $(nproc) cores, load average $load_before before and $load_after after."
   echo "Wall times: a loaded machine makes them longer."
+  echo "Memory read bandwidth (scripts/memory_bandwidth.cpp, GB/s on 1 and 2 threads): $bandwidth_before before, $bandwidth_after after."
   echo
   echo "## benchmark32 at its default mesh (issue 35: <= 30 s end to end at pointwise rms <= 0.6 %)"
   echo
