@@ -97,6 +97,10 @@ struct MeshOptions3D {
   // own, combined by the minimum, so the case's sizes, chord and gap rules stay upper bounds;
   // not multiplied by size_scale). Shared by the copies of a case; null = none.
   std::shared_ptr<const std::vector<SizeSample3D>> refine_sizes;
+  // Estimated tetrahedra from which the mesher may cut the domain in two and mesh the pieces
+  // at once (mesh/domain_split3d.hpp). Below it (most tests) the mesh is one TetGen call's;
+  // tests lower it to split small meshes. Not a case-file setting.
+  double split_min_tetrahedra = 400e3;
 };
 
 struct Geometry3D {

@@ -44,6 +44,9 @@ struct Mesh3D {
   // nodes farther apart than it is wide at a coarse --mesh-scale); the run reports them
   // (summary.json warnings).
   std::vector<std::string> warnings;
+  // The sphere (radius, m, about the origin) at which the mesher cut the domain to mesh the two
+  // pieces at once (mesh/domain_split3d.hpp); 0: meshed as one piece.
+  double split_radius = 0;
 
   std::size_t n_nodes() const { return nodes.size(); }
   std::size_t n_tets() const { return tets.size(); }

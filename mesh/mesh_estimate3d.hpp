@@ -11,6 +11,7 @@
 // about 30 % of the exact integral over it. tets_per_h3 is calibrated on the 3D examples
 // (docs/performance.md, "Memory guard calibration").
 #include <functional>
+#include <vector>
 
 #include "mesh/geometry3d.hpp"
 
@@ -26,10 +27,16 @@ struct MeshEstimate3D {
   double tetrahedra = 0;
   double nodes = 0; // a Delaunay tetrahedral mesh has about 1 node per 5.5 tetrahedra
   long octree_cells = 0;
+  // Per radius asked for (estimate_mesh_3d's within_radii): the share of `tetrahedra` within
+  // the sphere of that radius about the origin (how a split of the domain there would divide
+  // the work).
+  std::vector<double> tetrahedra_within;
 };
 
 // size(x): the local size h(x) in metres (the mesher's size field, region caps included).
-// ball_radius: the meshed ball (the open boundary's shell included).
-MeshEstimate3D estimate_mesh_3d(const std::function<double(const Vec3&)>& size, double ball_radius);
+// ball_radius: the meshed ball (the open boundary's shell included). within_radii: spheres
+// whose inner share to report in tetrahedra_within (same octree, so no extra size queries).
+MeshEstimate3D estimate_mesh_3d(const std::function<double(const Vec3&)>& size, double ball_radius,
+                                const std::vector<double>& within_radii = {});
 
 } // namespace magfem

@@ -2,13 +2,17 @@
 #include "mesh/mesher3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -18,6 +22,7 @@
 #include "core/constants.hpp"
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "mesh/domain_split3d.hpp"
 #include "mesh/face_chart3d.hpp"
 #include "mesh/face_soup3d.hpp"
 #include "mesh/grid_frame3d.hpp"
@@ -28,6 +33,7 @@
 #include "mesh/surface_mesher3d.hpp"
 #include "mesh/surface_part_checks3d.hpp"
 #include "mesh/surface_part_rays3d.hpp"
+#include "mesh/tetgen_shared_state.hpp"
 #include "mesh/tetgen_termination.hpp"
 
 namespace magfem {
@@ -351,9 +357,12 @@ std::string tetgen_failure(int code) {
 }
 
 // Seeds one region point on each side of every interface face, just off its first triangle,
-// with the region's label and volume bound (that of a regular tet of the region size).
+// with the region's label and volume bound (that of a regular tet of the region size). For a
+// piece of a split domain (surf: the piece's surface mesh), only the seeds inside the piece:
+// on the cut, the side towards it (a seed beyond the cut would be outside the piece's volume).
 void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
-                      const SizeRules& rules, tetgenio& in) {
+                      const SizeRules& rules, tetgenio& in, const DomainSplit3D* split = nullptr,
+                      int piece = 0) {
   std::vector<std::array<double, 5>> seeds;
   std::vector<bool> seen(dec.faces.size(), false);
   for (std::size_t t = 0; t < surf.triangles.size(); ++t) {
@@ -375,6 +384,8 @@ void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
       const int label = side < 0 ? face.label_low : face.label_high;
       if (label == region_exterior_3d)
         continue;
+      if (split && split->on_cut(dec, f) && side != (piece == 0 ? -1 : 1))
+        continue;
       const double h = rules.region(label);
       const Vec3 x = centre + side * eps * n;
       seeds.push_back({x.x(), x.y(), x.z(), attribute_of(label), h * h * h / (6 * std::sqrt(2.0))});
@@ -385,6 +396,8 @@ void add_region_seeds(const GridDecomposition3D& dec, const SurfaceMesh3D& surf,
     const Part3D& part = rules.geo.parts[p];
     if (const auto* s = std::get_if<TriangleSurface>(&part.shape)) {
       const Vec3 x = part.placement.to_global(s->inside_point);
+      if (split && split->piece_of(x) != piece)
+        continue;
       const double h = rules.region(static_cast<int>(p));
       seeds.push_back({x.x(), x.y(), x.z(), attribute_of(static_cast<int>(p)),
                        h * h * h / (6 * std::sqrt(2.0))});
@@ -420,7 +433,20 @@ void fill_plc(const SurfaceMesh3D& surf, tetgenio& in) {
   }
 }
 
-void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeField3D& field) {
+// TetGen keeps its exact-arithmetic state in globals: exactinit() sets the error bounds and the
+// static filters of orient3d/insphere from each call's bounding box. Two meshes built at once
+// (sweep positions, study designs on a thread pool) overwrite each other's filters, and a
+// filter sized for a smaller box lets a wrong predicate sign through (seen: a two-thread FE
+// sweep whose mesh, and result, differed between runs). One mesh at a time: a split mesh's two
+// pieces share the filters of the whole box under this lock (tetgen_shared_state.hpp).
+std::mutex& tetgen_lock() {
+  static std::mutex m;
+  return m;
+}
+
+// One tetrahedralize() call, the caller holding tetgen_lock().
+void tetrahedralize_locked(const Geometry3D& geo, tetgenio& in, tetgenio& out,
+                           const SizeField3D& field) {
   const double ratio = geo.options.radius_edge_ratio > 0 ? geo.options.radius_edge_ratio : 1.6;
   // p: PLC, Y: keep the surface mesh (nodes stay on the curved surfaces, shared faces stay
   // shared), q: quality, A/a: region labels and volume bounds, M: no facet merging (the
@@ -435,13 +461,6 @@ void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeFi
   // Keeps the interposed terminatetetgen linked in (see tetgen_termination.cpp).
   if (!tetgen_termination_interposed)
     throw MeshError("", "", "internal: TetGen's error path is not interposed");
-  // TetGen keeps its exact-arithmetic state in globals: exactinit() sets the error bounds
-  // and the static filters of orient3d/insphere from each call's bounding box. Two meshes
-  // built at once (sweep positions, study designs on a thread pool) overwrite each other's
-  // filters, and a filter sized for a smaller box lets a wrong predicate sign through (seen:
-  // a two-thread FE sweep whose mesh, and result, differed between runs). One call at a time.
-  static std::mutex tetgen_globals;
-  const std::lock_guard<std::mutex> lock(tetgen_globals);
   try {
     const TetGenErrorScope scope;
     tetrahedralize(&b, &in, &out);
@@ -450,6 +469,117 @@ void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeFi
   } catch (const TetGenAssertion& e) {
     throw MeshError("", "", std::string("TetGen failed: ") + e.what());
   }
+}
+
+void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeField3D& field) {
+  const std::lock_guard<std::mutex> lock(tetgen_lock());
+  tetrahedralize_locked(geo, in, out, field);
+}
+
+// One piece's volume mesh, its points numbered as in the piece's surface mesh first.
+struct PieceMesh {
+  std::vector<double> points; // x, y, z per point
+  std::vector<int> tets;      // 4 per tet
+  std::vector<double> attributes;
+};
+
+void mesh_piece(const Geometry3D& geo, const GridDecomposition3D& dec, const SizeRules& rules,
+                const DomainSplit3D& split, int piece, const SizeField3D& field,
+                PieceMesh& result) {
+  const SurfaceMesh3D& surf = split.pieces[static_cast<std::size_t>(piece)];
+  tetgenio in, out;
+  fill_plc(surf, in);
+  add_region_seeds(dec, surf, rules, in, &split, piece);
+  if (piece == 1) {
+    // The outer piece has the cut's triangles as an inner boundary, with nothing inside.
+    in.numberofholes = 1;
+    in.holelist = new REAL[3]{0, 0, 0};
+  }
+  const TetGenPieceScope own_random;
+  tetrahedralize_locked(geo, in, out, field);
+  result.points.assign(out.pointlist, out.pointlist + 3 * out.numberofpoints);
+  result.tets.assign(out.tetrahedronlist,
+                     out.tetrahedronlist + out.numberofcorners * out.numberoftetrahedra);
+  result.attributes.resize(static_cast<std::size_t>(out.numberoftetrahedra));
+  for (int t = 0; t < out.numberoftetrahedra; ++t)
+    result.attributes[static_cast<std::size_t>(t)] =
+        out.tetrahedronattributelist[out.numberoftetrahedronattributes * t];
+}
+
+// The pieces' meshes as one TetGen output: the whole surface mesh's points first (in its
+// order, as -Y gives them), then each piece's own points.
+void stitch_pieces(const SurfaceMesh3D& surf, const DomainSplit3D& split,
+                   const std::array<PieceMesh, 2>& pieces, tetgenio& out) {
+  std::vector<double> points;
+  for (const Vec3& x : surf.points)
+    points.insert(points.end(), {x.x(), x.y(), x.z()});
+  std::vector<int> tets;
+  std::vector<double> attributes;
+  for (std::size_t p = 0; p < 2; ++p) {
+    const PieceMesh& piece = pieces[p];
+    const std::vector<int>& whole = split.whole_point[p];
+    std::vector<int> index(piece.points.size() / 3);
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      if (i < whole.size()) {
+        index[i] = whole[i];
+        continue;
+      }
+      index[i] = static_cast<int>(points.size() / 3);
+      points.insert(points.end(), piece.points.begin() + 3 * static_cast<std::ptrdiff_t>(i),
+                    piece.points.begin() + 3 * static_cast<std::ptrdiff_t>(i) + 3);
+    }
+    for (int v : piece.tets)
+      tets.push_back(index[static_cast<std::size_t>(v)]);
+    attributes.insert(attributes.end(), piece.attributes.begin(), piece.attributes.end());
+  }
+  out.numberofpoints = static_cast<int>(points.size() / 3);
+  out.pointlist = new REAL[points.size()];
+  std::copy(points.begin(), points.end(), out.pointlist);
+  out.numberofcorners = 4;
+  out.numberoftetrahedra = static_cast<int>(attributes.size());
+  out.tetrahedronlist = new int[tets.size()];
+  std::copy(tets.begin(), tets.end(), out.tetrahedronlist);
+  out.numberoftetrahedronattributes = 1;
+  out.tetrahedronattributelist = new REAL[attributes.size()];
+  std::copy(attributes.begin(), attributes.end(), out.tetrahedronattributelist);
+}
+
+// The two pieces of a split domain, on two threads when there are two, and stitched. The
+// pieces' meshes do not depend on it: each call has its own random generator and both use the
+// whole domain's predicate filters (tetgen_shared_state.hpp), one thread or two.
+void run_tetgen_split(const Geometry3D& geo, const GridDecomposition3D& dec, const SizeRules& rules,
+                      const SurfaceMesh3D& surf, const DomainSplit3D& split,
+                      const SizeField3D& field, tetgenio& out) {
+  Eigen::AlignedBox3d box;
+  for (const Vec3& x : surf.points)
+    box.extend(x);
+  const Vec3 extent = box.sizes();
+  std::array<PieceMesh, 2> pieces;
+  const std::lock_guard<std::mutex> lock(tetgen_lock());
+  const TetGenSharedFilters filters(extent.x(), extent.y(), extent.z());
+  if (available_threads() < 2) {
+    for (int p = 0; p < 2; ++p)
+      mesh_piece(geo, dec, rules, split, p, field, pieces[static_cast<std::size_t>(p)]);
+  } else {
+    std::exception_ptr inner_failure;
+    std::thread inner([&] {
+      try {
+        mesh_piece(geo, dec, rules, split, 0, field, pieces[0]);
+      } catch (...) {
+        inner_failure = std::current_exception();
+      }
+    });
+    try {
+      mesh_piece(geo, dec, rules, split, 1, field, pieces[1]);
+    } catch (...) {
+      inner.join();
+      throw;
+    }
+    inner.join();
+    if (inner_failure)
+      std::rethrow_exception(inner_failure);
+  }
+  stitch_pieces(surf, split, pieces, out);
 }
 
 Mesh3D collect_mesh(const Geometry3D& geo, const GridDecomposition3D& dec,
@@ -616,7 +746,8 @@ void add_surface_part_sources(const GridDecomposition3D& dec, const SizeRules& r
 // The size field capped by the region size of the part (or air) at x: TetGen's volume bound
 // keeps elements inside a part no larger than its region size even far from any surface.
 MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
-                                  const SizeField3D& field) {
+                                  const SizeField3D& field,
+                                  const std::vector<double>& within_radii = {}) {
   const bool open = geo.outer.kind == OuterKind3D::open;
   auto size = [&](const Vec3& x) {
     double region =
@@ -630,10 +761,12 @@ MeshEstimate3D estimate_mesh_size(const Geometry3D& geo, const SizeRules& rules,
   };
   const double ball = geo.outer.radius * (open ? geo.outer.shell_ratio : 1.0);
   // The size field of a symmetric model is symmetric: its share is the ball's over the factor.
-  MeshEstimate3D e = estimate_mesh_3d(size, ball);
+  MeshEstimate3D e = estimate_mesh_3d(size, ball, within_radii);
   const double factor = symmetry_factor(geo.symmetry);
   e.tetrahedra /= factor;
   e.nodes /= factor;
+  for (double& n : e.tetrahedra_within)
+    n /= factor;
   return e;
 }
 
@@ -688,19 +821,33 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   if (geo.options.refine_sizes)
     for (auto& [pair, gap] : unresolved)
       gap.across = std::min(gap.across, field(gap.middle) / gap_source_factor);
-  if (check)
-    check(estimate_mesh_size(geo, rules, field),
-          [&](double factor) { return estimate_scaled(geo, refine, factor).tetrahedra; });
+  // The estimate is needed for the split only where a sphere to split at exists.
+  const std::vector<double> cuts = split_sphere_radii(geo, dec);
+  std::optional<double> cut;
+  if (check || !cuts.empty()) {
+    const MeshEstimate3D estimate = estimate_mesh_size(geo, rules, field, cuts);
+    if (check)
+      check(estimate,
+            [&](double factor) { return estimate_scaled(geo, refine, factor).tetrahedra; });
+    cut = choose_split_radius(cuts, estimate, geo.options.split_min_tetrahedra);
+  }
 
   const double outer =
       geo.outer.radius * (geo.outer.kind == OuterKind3D::open ? geo.outer.shell_ratio : 1.0);
   const SurfaceMesh3D surf = mesh_surfaces_3d(
       geo, dec, field, 1e-9 * geo.outer.radius * geo.outer.shell_ratio, geo.symmetry, outer);
   tetgenio in, out;
-  fill_plc(surf, in);
-  add_region_seeds(dec, surf, rules, in);
-  run_tetgen(geo, in, out, field);
+  const std::optional<DomainSplit3D> split =
+      cut ? split_surface_mesh(dec, surf, *cut) : std::nullopt;
+  if (split) {
+    run_tetgen_split(geo, dec, rules, surf, *split, field, out);
+  } else {
+    fill_plc(surf, in);
+    add_region_seeds(dec, surf, rules, in);
+    run_tetgen(geo, in, out, field);
+  }
   Mesh3D m = collect_mesh(geo, dec, surf, out);
+  m.split_radius = split ? split->radius : 0.0;
   m.warnings = unresolved_gap_warnings(geo, rules.scale, unresolved);
   m.tet_size = requested_sizes(m, rules, field);
   return m;

@@ -34,5 +34,19 @@ TEST(MeshEstimate3D, GradedSizeMatchesTheRadialIntegral) {
   EXPECT_NEAR(e.tetrahedra / exact, 1.0, 0.10);
 }
 
+// The share within inner spheres (the split mesher's balance): for a uniform size, the ball
+// of radius rho holds (rho / R)^3 of the count; a sphere beyond the ball holds all of it.
+// (Planted: the cell's ball fraction used for the inner spheres too, so every share was the
+// whole count: this failed.)
+TEST(MeshEstimate3D, ShareWithinInnerSpheresFollowsTheirVolume) {
+  const double r = 1.0, h = 0.05;
+  const auto e = estimate_mesh_3d([&](const Vec3&) { return h; }, r, {0.5, 0.8, 2.0});
+  ASSERT_EQ(e.tetrahedra_within.size(), 3u);
+  EXPECT_NEAR(e.tetrahedra_within[0] / e.tetrahedra, 0.125, 0.01);
+  EXPECT_NEAR(e.tetrahedra_within[1] / e.tetrahedra, 0.512, 0.02);
+  EXPECT_NEAR(e.tetrahedra_within[2], e.tetrahedra, 1e-9 * e.tetrahedra);
+  EXPECT_TRUE(estimate_mesh_3d([&](const Vec3&) { return h; }, r).tetrahedra_within.empty());
+}
+
 } // namespace
 } // namespace magfem
