@@ -557,7 +557,7 @@ void run_tetgen_split(const Geometry3D& geo, const GridDecomposition3D& dec, con
   std::array<PieceMesh, 2> pieces;
   const std::lock_guard<std::mutex> lock(tetgen_lock());
   const TetGenSharedFilters filters(extent.x(), extent.y(), extent.z());
-  if (available_threads() < 2) {
+  if (available_threads() < 2 || !tetgen_calls_may_overlap(filters)) {
     for (int p = 0; p < 2; ++p)
       mesh_piece(geo, dec, rules, split, p, field, pieces[static_cast<std::size_t>(p)]);
   } else {

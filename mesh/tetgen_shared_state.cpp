@@ -41,6 +41,7 @@ struct PieceRandom {
   }
 };
 thread_local PieceRandom piece_random;
+thread_local long piece_draws = 0; // rand() calls answered by piece_random on this thread
 
 } // namespace
 
@@ -56,6 +57,7 @@ extern "C" int rand() noexcept {
   static const auto real = reinterpret_cast<Rand>(dlsym(RTLD_NEXT, "rand"));
   if (!piece_random.active)
     return real();
+  ++piece_draws;
   std::int32_t r = 0;
   random_r(&piece_random.data, &r);
   return r;
@@ -72,7 +74,8 @@ extern "C" void srand(unsigned seed) noexcept {
 
 namespace magfem {
 
-TetGenSharedFilters::TetGenSharedFilters(double dx, double dy, double dz) {
+TetGenSharedFilters::TetGenSharedFilters(double dx, double dy, double dz)
+    : dx_(dx), dy_(dy), dz_(dz) {
   // TetGen's own call with -Q and default exactness: verbose 0, noexact 0, nofilter 0.
   real_exactinit()(0, 0, 0, dx, dy, dz);
   filters_pinned.store(true);
@@ -84,6 +87,24 @@ TetGenSharedFilters::~TetGenSharedFilters() {
 
 long TetGenSharedFilters::ignored_calls() {
   return n_ignored.load();
+}
+
+bool TetGenSharedFilters::pinned_for_tetgen() const {
+  // The pinned box itself: if the call reaches TetGen's own exactinit, nothing changes.
+  const long before = ignored_calls();
+  exactinit(0, 0, 0, dx_, dy_, dz_);
+  return ignored_calls() > before;
+}
+
+bool TetGenPieceScope::reaches_tetgen() {
+  const TetGenPieceScope probe;
+  const long before = piece_draws;
+  (void)std::rand();
+  return piece_draws > before;
+}
+
+bool tetgen_calls_may_overlap(const TetGenSharedFilters& filters) {
+  return filters.pinned_for_tetgen() && TetGenPieceScope::reaches_tetgen();
 }
 
 TetGenPieceScope::TetGenPieceScope() {

@@ -35,6 +35,14 @@ public:
   // exactinit calls ignored so far in this process (TetGen's own, one per call while pinned):
   // that they reach this file at all shows the interposition in place.
   static long ignored_calls();
+
+  // Whether a call of exactinit made as libtet makes it reaches the definition here (so the
+  // filters stay pinned). Not in every process: in a module that Python opens RTLD_LOCAL the
+  // lookup may find another definition first.
+  bool pinned_for_tetgen() const;
+
+private:
+  double dx_, dy_, dz_;
 };
 
 // rand() and srand() on the calling thread use a generator of the thread's own, seeded as
@@ -45,6 +53,16 @@ public:
   ~TetGenPieceScope();
   TetGenPieceScope(const TetGenPieceScope&) = delete;
   TetGenPieceScope& operator=(const TetGenPieceScope&) = delete;
+
+  // Whether rand() called as libtet calls it reaches the per-thread generator here. In the
+  // Python module glibc's rand, in the global scope, is found first: there two pieces meshed
+  // at once would share glibc's generator, and their meshes would depend on the timing.
+  static bool reaches_tetgen();
 };
+
+// Whether two pieces may be meshed at once in this process: both interpositions in effect
+// (`filters`: the ones the caller holds). Otherwise the pieces are meshed one after the other,
+// which gives the same mesh (each TetGen call seeds its generator and sets its filters itself).
+bool tetgen_calls_may_overlap(const TetGenSharedFilters& filters);
 
 } // namespace magfem
