@@ -281,8 +281,13 @@ MeshOutputs mesh_3d(CaseSpec& spec, const MeshOptions& o) {
   j["mesh_quality"] = {{"min_dihedral_deg", mesh.quality.min_dihedral_deg},
                        {"max_dihedral_deg", mesh.quality.max_dihedral_deg},
                        {"max_radius_edge", mesh.quality.max_radius_edge}};
+  // TetGen met the domain as two pieces cut at this sphere (0: one piece), mesh/domain_split3d.hpp.
+  j["mesh_split_radius_mm"] = mesh.split_radius * 1e3;
   j["warnings"] = mesh.warnings;
   print_regions(spec, table, "volume_m3");
+  if (mesh.split_radius > 0)
+    std::printf("meshed as two pieces at once, cut at the sphere r = %.6g mm\n",
+                mesh.split_radius * 1e3);
   for (const auto& w : mesh.warnings)
     std::cerr << "magfem: warning: " << w << "\n";
   std::vector<std::vector<int>> cells;

@@ -386,6 +386,8 @@ public:
     j["timings_s"]["inductance"] = run.coil_results.inductance_s;
     // Rank 0 post-processes alone, on the cores the other processes lent it.
     j["post_processing_cores"] = cores_in_affinity();
+    // TetGen met the domain as two pieces cut at this sphere (0: one piece).
+    j["mesh_split_radius_mm"] = run.mesh.split_radius * 1e3;
     j["memory_guard"] = {
         {"estimated_tetrahedra", std::lround(run.mesh_estimate.tetrahedra)},
         {"estimated_peak_memory_MB",

@@ -91,6 +91,17 @@ solver: {order: 1}
   EXPECT_EQ(s["unknowns"].get<int>(), s["nodes"].get<int>()); // order 1: one per node
   EXPECT_GT(s["shell_elements"].get<int>(), 0);
   EXPECT_EQ(s["picture_plane"], "z = 0");
+  EXPECT_EQ(s["mesh_split_radius_mm"].get<double>(), 0.0); // a small mesh: one TetGen call
+}
+
+// A large spherical case is meshed as two pieces cut at its magnets' outer sphere (55 mm),
+// and the summary says where (planted: the radius left in metres -> 0.055 -> fails).
+TEST(MeshCommand, SaysWhereALargeMeshWasCut) {
+  const auto s = mesh_summary(
+      {test::example("3d/benchmark32_parallel.yaml"), "--mesh-scale", "2", "--order", "1"},
+      "mesh_command_split");
+  EXPECT_GT(s["elements"].get<long>(), 400000);
+  EXPECT_DOUBLE_EQ(s["mesh_split_radius_mm"].get<double>(), 55.0);
 }
 
 TEST(MeshCommand, BadOptionsAreNamed) {
