@@ -38,6 +38,8 @@
 #include "mesh/mesh_fingerprint3d.hpp"
 #include "mesh/mesher3d.hpp"
 #include "mesh/tetgen_shared_state.hpp"
+#include "tests/mesh/segment_part3d.hpp"
+#include "tests/threads_variable.hpp"
 
 namespace magfem {
 namespace {
@@ -45,13 +47,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double mm = 1e-3;
 
-Part3D segment(const std::string& name, double r1, double r2, double t1, double t2, double p1,
-               double p2) {
-  Part3D p;
-  p.name = name;
-  p.shape = SphericalSegment{r1, r2, t1, t2, p1, p2};
-  return p;
-}
+using test::segment;
 
 // A coarse benchmark32: a shell 40..55 mm of 2 x 4 segments in an open domain of 100 mm.
 // split_min_tetrahedra 0: split whatever its size.
@@ -72,27 +68,7 @@ Geometry3D shell_of_segments(double split_min_tetrahedra) {
   return g;
 }
 
-// Sets MAGFEM_THREADS (available_threads()) for the life of this object.
-class ThreadsVariable {
-public:
-  explicit ThreadsVariable(const char* n) {
-    if (const char* old = std::getenv("MAGFEM_THREADS"))
-      previous_ = old, had_ = true;
-    setenv("MAGFEM_THREADS", n, 1);
-  }
-  ~ThreadsVariable() {
-    if (had_)
-      setenv("MAGFEM_THREADS", previous_.c_str(), 1);
-    else
-      unsetenv("MAGFEM_THREADS");
-  }
-  ThreadsVariable(const ThreadsVariable&) = delete;
-  ThreadsVariable& operator=(const ThreadsVariable&) = delete;
-
-private:
-  std::string previous_;
-  bool had_ = false;
-};
+using test::ThreadsVariable;
 
 double volume(const Mesh3D& m, std::size_t t) {
   const auto& k = m.tets[t];

@@ -18,6 +18,7 @@
 #include "mesh/mesh_error.hpp"
 #include "mesh/mesh_quality3d.hpp"
 #include "mesh/mesher3d.hpp"
+#include "tests/mesh/segment_part3d.hpp"
 
 namespace magfem {
 namespace {
@@ -25,13 +26,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double mm = 1e-3;
 
-Part3D segment(const std::string& name, double r1, double r2, double t1, double t2, double p1,
-               double p2) {
-  Part3D p;
-  p.name = name;
-  p.shape = SphericalSegment{r1, r2, t1, t2, p1, p2};
-  return p;
-}
+using test::segment;
 
 double segment_volume(double r1, double r2, double t1, double t2, double p1, double p2) {
   return (std::pow(r2, 3) - std::pow(r1, 3)) / 3 * (std::cos(t1) - std::cos(t2)) * (p2 - p1);

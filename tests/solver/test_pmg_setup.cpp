@@ -16,6 +16,7 @@
 #include "solver/assembler3d.hpp"
 #include "solver/p1_coarse_space.hpp"
 #include "solver/petsc_solver.hpp"
+#include "tests/threads_variable.hpp"
 
 namespace magfem {
 namespace {
@@ -61,25 +62,7 @@ void expect_same_bits(const Solution& a, const Solution& b) {
                        << " of " << b.x.norm();
 }
 
-// Sets MAGFEM_THREADS (available_threads()) for the life of this object.
-class ThreadsVariable {
-public:
-  explicit ThreadsVariable(const char* n) {
-    if (const char* old = std::getenv("MAGFEM_THREADS"))
-      previous_ = old, had_ = true;
-    setenv("MAGFEM_THREADS", n, 1);
-  }
-  ~ThreadsVariable() {
-    if (had_)
-      setenv("MAGFEM_THREADS", previous_.c_str(), 1);
-    else
-      unsetenv("MAGFEM_THREADS");
-  }
-
-private:
-  std::string previous_;
-  bool had_ = false;
-};
+using test::ThreadsVariable;
 
 } // namespace
 
