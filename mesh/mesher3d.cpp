@@ -477,15 +477,9 @@ void run_tetgen(const Geometry3D& geo, tetgenio& in, tetgenio& out, const SizeFi
 }
 
 // One piece's volume mesh, its points numbered as in the piece's surface mesh first.
-struct PieceMesh {
-  std::vector<double> points; // x, y, z per point
-  std::vector<int> tets;      // 4 per tet
-  std::vector<double> attributes;
-};
-
-void mesh_piece(const Geometry3D& geo, const GridDecomposition3D& dec, const SizeRules& rules,
-                const DomainSplit3D& split, int piece, const SizeField3D& field,
-                PieceMesh& result) {
+TetPieceMesh3D mesh_piece(const Geometry3D& geo, const GridDecomposition3D& dec,
+                          const SizeRules& rules, const DomainSplit3D& split, int piece,
+                          const SizeField3D& field) {
   const SurfaceMesh3D& surf = split.pieces[static_cast<std::size_t>(piece)];
   tetgenio in, out;
   fill_plc(surf, in);
@@ -497,6 +491,7 @@ void mesh_piece(const Geometry3D& geo, const GridDecomposition3D& dec, const Siz
   }
   const TetGenPieceScope own_random;
   tetrahedralize_locked(geo, in, out, field);
+  TetPieceMesh3D result;
   result.points.assign(out.pointlist, out.pointlist + 3 * out.numberofpoints);
   result.tets.assign(out.tetrahedronlist,
                      out.tetrahedronlist + out.numberofcorners * out.numberoftetrahedra);
@@ -504,19 +499,20 @@ void mesh_piece(const Geometry3D& geo, const GridDecomposition3D& dec, const Siz
   for (int t = 0; t < out.numberoftetrahedra; ++t)
     result.attributes[static_cast<std::size_t>(t)] =
         out.tetrahedronattributelist[out.numberoftetrahedronattributes * t];
+  return result;
 }
 
 // The pieces' meshes as one TetGen output: the whole surface mesh's points first (in its
 // order, as -Y gives them), then each piece's own points.
 void stitch_pieces(const SurfaceMesh3D& surf, const DomainSplit3D& split,
-                   const std::array<PieceMesh, 2>& pieces, tetgenio& out) {
+                   const std::array<TetPieceMesh3D, 2>& pieces, tetgenio& out) {
   std::vector<double> points;
   for (const Vec3& x : surf.points)
     points.insert(points.end(), {x.x(), x.y(), x.z()});
   std::vector<int> tets;
   std::vector<double> attributes;
   for (std::size_t p = 0; p < 2; ++p) {
-    const PieceMesh& piece = pieces[p];
+    const TetPieceMesh3D& piece = pieces[p];
     const std::vector<int>& whole = split.whole_point[p];
     std::vector<int> index(piece.points.size() / 3);
     for (std::size_t i = 0; i < index.size(); ++i) {
@@ -544,41 +540,51 @@ void stitch_pieces(const SurfaceMesh3D& surf, const DomainSplit3D& split,
   std::copy(attributes.begin(), attributes.end(), out.tetrahedronattributelist);
 }
 
-// The two pieces of a split domain, on two threads when there are two, and stitched. The
-// pieces' meshes do not depend on it: each call has its own random generator and both use the
-// whole domain's predicate filters (tetgen_shared_state.hpp), one thread or two.
+// The two pieces of a split domain in this process: on two threads when there are two and
+// TetGen's shared state allows it (tetgen_shared_state.hpp), else one after the other.
+std::array<TetPieceMesh3D, 2> mesh_pieces_here(const MeshPiece3D& mesh,
+                                               const TetGenSharedFilters& filters) {
+  std::array<TetPieceMesh3D, 2> pieces;
+  if (available_threads() < 2 || !tetgen_calls_may_overlap(filters)) {
+    for (int p = 0; p < 2; ++p)
+      pieces[static_cast<std::size_t>(p)] = mesh(p);
+    return pieces;
+  }
+  std::exception_ptr inner_failure;
+  std::thread inner([&] {
+    try {
+      pieces[0] = mesh(0);
+    } catch (...) {
+      inner_failure = std::current_exception();
+    }
+  });
+  try {
+    pieces[1] = mesh(1);
+  } catch (...) {
+    inner.join();
+    throw;
+  }
+  inner.join();
+  if (inner_failure)
+    std::rethrow_exception(inner_failure);
+  return pieces;
+}
+
+// The two pieces of a split domain, meshed where `runner` says (here when it is empty), and
+// stitched. The pieces' meshes do not depend on where: each call has its own random generator
+// and all use the whole domain's predicate filters (tetgen_shared_state.hpp).
 void run_tetgen_split(const Geometry3D& geo, const GridDecomposition3D& dec, const SizeRules& rules,
                       const SurfaceMesh3D& surf, const DomainSplit3D& split,
-                      const SizeField3D& field, tetgenio& out) {
+                      const SizeField3D& field, const PieceRunner3D& runner, tetgenio& out) {
   Eigen::AlignedBox3d box;
   for (const Vec3& x : surf.points)
     box.extend(x);
   const Vec3 extent = box.sizes();
-  std::array<PieceMesh, 2> pieces;
   const std::lock_guard<std::mutex> lock(tetgen_lock());
   const TetGenSharedFilters filters(extent.x(), extent.y(), extent.z());
-  if (available_threads() < 2 || !tetgen_calls_may_overlap(filters)) {
-    for (int p = 0; p < 2; ++p)
-      mesh_piece(geo, dec, rules, split, p, field, pieces[static_cast<std::size_t>(p)]);
-  } else {
-    std::exception_ptr inner_failure;
-    std::thread inner([&] {
-      try {
-        mesh_piece(geo, dec, rules, split, 0, field, pieces[0]);
-      } catch (...) {
-        inner_failure = std::current_exception();
-      }
-    });
-    try {
-      mesh_piece(geo, dec, rules, split, 1, field, pieces[1]);
-    } catch (...) {
-      inner.join();
-      throw;
-    }
-    inner.join();
-    if (inner_failure)
-      std::rethrow_exception(inner_failure);
-  }
+  const MeshPiece3D mesh = [&](int p) { return mesh_piece(geo, dec, rules, split, p, field); };
+  const std::array<TetPieceMesh3D, 2> pieces =
+      runner ? runner(mesh) : mesh_pieces_here(mesh, filters);
   stitch_pieces(surf, split, pieces, out);
 }
 
@@ -804,7 +810,7 @@ MeshEstimate3D estimate_scaled(const Geometry3D& geo, const std::vector<ProbeSur
 } // namespace
 
 Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& refine,
-                     const MeshSizeCheck& check) {
+                     const MeshSizeCheck& check, const PieceRunner3D& pieces) {
   const GridDecomposition3D dec = decompose_geometry_3d(geo);
   const SizeRules rules(geo);
   const FaceSizing fs = face_sizing(dec, rules);
@@ -840,7 +846,7 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   const std::optional<DomainSplit3D> split =
       cut ? split_surface_mesh(dec, surf, *cut) : std::nullopt;
   if (split) {
-    run_tetgen_split(geo, dec, rules, surf, *split, field, out);
+    run_tetgen_split(geo, dec, rules, surf, *split, field, pieces, out);
   } else {
     fill_plc(surf, in);
     add_region_seeds(dec, surf, rules, in);

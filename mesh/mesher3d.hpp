@@ -31,6 +31,7 @@
 #include "mesh/geometry3d.hpp"
 #include "mesh/mesh3d.hpp"
 #include "mesh/mesh_estimate3d.hpp"
+#include "mesh/tet_piece_mesh3d.hpp"
 
 namespace magfem {
 
@@ -42,9 +43,11 @@ using MeshSizeCheck =
     std::function<void(const MeshEstimate3D&, const std::function<double(double)>&)>;
 
 // Throws MeshError naming the offending part(s) for degenerate primitives, parts outside the
-// domain ball, intersecting parts and TetGen failures.
+// domain ball, intersecting parts and TetGen failures. `pieces`: who meshes the two pieces of
+// a domain split for TetGen (domain_split3d.hpp); empty: this process, on two threads if it has
+// them. The mesh is the same either way.
 Mesh3D build_mesh_3d(const Geometry3D& geometry, const std::vector<ProbeSurface>& refine = {},
-                     const MeshSizeCheck& check = {});
+                     const MeshSizeCheck& check = {}, const PieceRunner3D& pieces = {});
 
 // The estimate build_mesh_3d passes to its check, without meshing (the size field only): for a
 // caller that must know the size of several meshes before it runs them at once.

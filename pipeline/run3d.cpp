@@ -20,6 +20,7 @@
 #include "pipeline/demagnetization_results.hpp"
 #include "pipeline/force3d.hpp"
 #include "pipeline/memory_guard.hpp"
+#include "pipeline/mesh_pieces_on_processes.hpp"
 #include "pipeline/mirror_image_regions.hpp"
 #include "pipeline/resource_usage.hpp"
 #include "pipeline/result_checks.hpp"
@@ -85,7 +86,9 @@ InputError input_error_of(const CaseSpec& spec, const MeshError& e) {
 Mesh3D mesh_case(const CaseSpec& spec, const RunOverrides& ov, MeshEstimate3D& estimate) {
   check_symmetry_3d(spec); // before meshing: the share would stand for a different device
   try {
-    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), memory_guard(spec, ov, estimate));
+    return build_mesh_3d(spec.geometry3d, probe_surfaces(spec), memory_guard(spec, ov, estimate),
+                         ov.world.distributed() ? mesh_pieces_on_processes(ov.world)
+                                                : PieceRunner3D{});
   } catch (const MeshError& e) {
     throw input_error_of(spec, e);
   }

@@ -60,6 +60,11 @@ int code_of_root(int code) {
   return backend ? backend->code_of_root(code) : code;
 }
 
+void broadcast_bytes(int root, std::string& bytes) {
+  if (PetscBackend* backend = loaded_petsc_backend())
+    backend->broadcast_bytes(root, bytes);
+}
+
 WorkDealer::WorkDealer(std::vector<int> items, int workers)
     : engine_(petsc_backend().make_work_dealer(std::move(items), workers)) {}
 

@@ -76,6 +76,10 @@ void lend_node_cores_to_root();
 // decides), waiting as idle_barrier does.
 int code_of_root(int code);
 
+// Collective: process `root`'s `bytes` on every process (waiting as idle_barrier does: the
+// others may wait seconds for it). No-op in a serial run.
+void broadcast_bytes(int root, std::string& bytes);
+
 // Work items (here: the indices of a sweep's positions) dealt to the processes of
 // MPI_COMM_WORLD one at a time as each asks, so that a process takes the next item when it
 // finishes one (positions differ in cost, processes in speed), and each finished item's

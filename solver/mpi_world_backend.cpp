@@ -147,6 +147,23 @@ int code_of_root(int code) {
   return code;
 }
 
+void broadcast_bytes(int root, std::string& bytes) {
+  if (!started_mpi_world().distributed())
+    return;
+  // Waits of seconds (a process still meshing its piece): a 5 ms sleep costs nothing.
+  constexpr std::chrono::milliseconds pause(5);
+  std::uint64_t n = bytes.size();
+  MPI_Request request = MPI_REQUEST_NULL;
+  MPI_Ibcast(&n, 1, MPI_UINT64_T, root, MPI_COMM_WORLD, &request);
+  wait_idly(request, pause);
+  bytes.resize(n);
+  for (std::size_t at = 0; at < n; at += max_piece) {
+    MPI_Ibcast(bytes.data() + at, static_cast<int>(std::min<std::size_t>(max_piece, n - at)),
+               MPI_CHAR, root, MPI_COMM_WORLD, &request);
+    wait_idly(request, pause);
+  }
+}
+
 // Messages of the dealer, on its own communicator: a request (to rank 0) is the worker's
 // number, the item it finished (-1: none) and that item's result text; the reply (tagged for
 // the worker, so that replies cannot cross between the threads of a process) is an item or -1.

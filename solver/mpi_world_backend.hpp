@@ -18,6 +18,7 @@ void union_to_root(float* values, std::size_t n);
 void idle_barrier();
 void lend_node_cores_to_root();
 int code_of_root(int code);
+void broadcast_bytes(int root, std::string& bytes);
 // MPI_Abort when distributed; returns otherwise (the caller exits).
 void abort_mpi_world(int code);
 

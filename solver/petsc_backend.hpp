@@ -62,6 +62,7 @@ public:
   virtual void idle_barrier() = 0;
   virtual void lend_node_cores_to_root() = 0;
   virtual int code_of_root(int code) = 0;
+  virtual void broadcast_bytes(int root, std::string& bytes) = 0;
   virtual std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items,
                                                              int workers) = 0;
   virtual void abort_mpi_world(int code) = 0; // returns only if MPI is not distributed

@@ -40,6 +40,9 @@ public:
   void idle_barrier() override { petsc_module::idle_barrier(); }
   void lend_node_cores_to_root() override { petsc_module::lend_node_cores_to_root(); }
   int code_of_root(int code) override { return petsc_module::code_of_root(code); }
+  void broadcast_bytes(int root, std::string& bytes) override {
+    petsc_module::broadcast_bytes(root, bytes);
+  }
   std::unique_ptr<WorkDealerEngine> make_work_dealer(std::vector<int> items, int workers) override {
     return std::make_unique<MpiWorkDealer>(std::move(items), workers);
   }

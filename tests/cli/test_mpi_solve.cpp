@@ -259,6 +259,30 @@ TEST_F(MpiSolve, CoilCaseOnTwoProcessesGivesTheSerialField) {
   fs::remove_all(dir);
 }
 
+// A mesh large enough for TetGen's two pieces (benchmark32, P1, 0.5 M tetrahedra, cut at the
+// magnets' outer sphere, 55 mm): under mpirun process 0 meshes the inner piece and process 1
+// the outer one, and each stitches both (pipeline/mesh_pieces_on_processes.hpp). The same mesh
+// as the serial run's two threads, so the field to the solver tolerance, on 2 and 3 processes;
+// a piece meshed with another random sequence or stitched with its points misnumbered moves the
+// energy by far more than 1e-8 (or fails the processes' fingerprint check).
+TEST_F(MpiSolve, SplitMeshMeshedOnePiecePerProcessKeepsTheSerialField) {
+  const fs::path dir = magfem::test::fresh_dir("split_mesh");
+  const std::string args =
+      write_case(dir, "3d/benchmark32_parallel.yaml", "solver: {order: 1, linear_tolerance: 1e-12}")
+          .string() +
+      " --mesh-scale 4";
+  for (int n : {2, 3}) {
+    expect_serial_field(dir, args, n);
+    const auto s = magfem::test::read_json(dir / "serial" / "summary.json");
+    const auto m = magfem::test::read_json(dir / ("ranks_" + std::to_string(n)) / "summary.json");
+    EXPECT_EQ(s["mesh_split_radius_mm"], 55.0);
+    EXPECT_EQ(m["mesh_split_radius_mm"], 55.0);
+    EXPECT_EQ(m["elements"], s["elements"]);
+    EXPECT_EQ(m["nodes"], s["nodes"]);
+  }
+  fs::remove_all(dir);
+}
+
 // Newton with every residual (the line search's too) summed over the processes.
 TEST_F(MpiSolve, NonlinearCaseOnTwoProcessesGivesTheSerialField) {
   const fs::path dir = magfem::test::fresh_dir("steel");

@@ -1,0 +1,89 @@
+#include "pipeline/mesh_pieces_on_processes.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "mesh/mesh_error.hpp"
+
+namespace magfem {
+namespace {
+
+// What a piece's owner sends: a tag byte, then the piece or the failure.
+enum class Outcome : char { meshed = 'm', mesh_error = 'e', other_error = 'x' };
+
+void append_text(std::string& out, const std::string& text) {
+  const std::uint64_t n = text.size();
+  out.append(reinterpret_cast<const char*>(&n), sizeof n);
+  out += text;
+}
+
+std::string take_text(std::string_view& in) {
+  std::uint64_t n = 0;
+  if (in.size() < sizeof n)
+    throw std::runtime_error("a mesh piece's failure message ends early");
+  std::memcpy(&n, in.data(), sizeof n);
+  in.remove_prefix(sizeof n);
+  if (in.size() < n)
+    throw std::runtime_error("a mesh piece's failure message ends early");
+  std::string text(in.substr(0, n));
+  in.remove_prefix(n);
+  return text;
+}
+
+std::string mesh_here(const MeshPiece3D& mesh, int piece, int rank) {
+  try {
+    return static_cast<char>(Outcome::meshed) + to_bytes(mesh(piece));
+  } catch (const MeshError& e) {
+    std::string out(1, static_cast<char>(Outcome::mesh_error));
+    append_text(out, e.part);
+    append_text(out, e.field);
+    append_text(out, e.reason);
+    return out;
+  } catch (const std::exception& e) {
+    std::string out(1, static_cast<char>(Outcome::other_error));
+    append_text(out, "process " + std::to_string(rank) + ", meshing piece " +
+                         std::to_string(piece) + " of the domain: " + e.what());
+    return out;
+  }
+}
+
+TetPieceMesh3D piece_or_throw(std::string_view bytes) {
+  if (bytes.empty())
+    throw std::runtime_error("a mesh piece arrived empty");
+  const auto outcome = static_cast<Outcome>(bytes.front());
+  bytes.remove_prefix(1);
+  if (outcome == Outcome::meshed)
+    return tet_piece_from_bytes(bytes);
+  if (outcome == Outcome::mesh_error) {
+    std::string part = take_text(bytes);
+    std::string field = take_text(bytes);
+    throw MeshError(std::move(part), std::move(field), take_text(bytes));
+  }
+  throw std::runtime_error(take_text(bytes));
+}
+
+} // namespace
+
+PieceRunner3D mesh_pieces_on_processes(const MpiWorld& world) {
+  return [world](const MeshPiece3D& mesh) {
+    std::array<std::string, 2> sent;
+    const auto owner = [&](int piece) { return piece % world.size; };
+    // Both pieces are meshed before either is sent: a process sends its piece when every
+    // process has arrived at that piece's broadcast, i.e. has meshed its own.
+    for (int p = 0; p < 2; ++p)
+      if (world.rank == owner(p))
+        sent[static_cast<std::size_t>(p)] = mesh_here(mesh, p, world.rank);
+    for (int p = 0; p < 2; ++p)
+      broadcast_bytes(owner(p), sent[static_cast<std::size_t>(p)]);
+    std::array<TetPieceMesh3D, 2> pieces;
+    for (std::size_t p = 0; p < 2; ++p)
+      pieces[p] = piece_or_throw(sent[p]);
+    return pieces;
+  };
+}
+
+} // namespace magfem
