@@ -16,6 +16,7 @@
 #include "postproc/probes3d.hpp"
 #include "postproc/recovered_b3d.hpp"
 #include "sphere_cases3d.hpp"
+#include "tests/threads_variable.hpp"
 
 namespace magfem {
 namespace {
@@ -148,14 +149,10 @@ TEST(MagnetizedSphere, EnergyAndOpenBoundary) {
     // The summary's per-element shares are added in element order: one thread must give the
     // same bits as the automatic count (two or more here, on a machine with two cores).
     EXPECT_GT(s->mesh.n_tets(), 20000u) << "too few tets for a threaded summary";
-    const char* before = std::getenv("MAGFEM_THREADS");
-    const std::string saved = before ? before : "";
-    setenv("MAGFEM_THREADS", "1", 1);
-    const EnergySummary3D serial = summarize_energy_3d(*s->field, {"magnet"});
-    if (before)
-      setenv("MAGFEM_THREADS", saved.c_str(), 1);
-    else
-      unsetenv("MAGFEM_THREADS");
+    const EnergySummary3D serial = [&] {
+      const test::ThreadsVariable one_thread("1");
+      return summarize_energy_3d(*s->field, {"magnet"});
+    }();
     // With the recovery's peak |B| per tet (as run_case_3d does; shell and curved tets here):
     // the same bits too.
     const RecoveredB3D rec(*s->field);
