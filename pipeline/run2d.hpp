@@ -46,6 +46,10 @@ struct RunOverrides {
   // Adaptive refinement (adapt2d.hpp): the size bound of the mesher's refinement for this
   // pass (not owned; null = the case's sizes).
   const SizeField2D* refine_sizes = nullptr;
+  // 3D: print the mesh's warnings as soon as it is made (they stay in Run3D::mesh.warnings and
+  // the summary either way). A sweep says them once for all its positions instead
+  // (studies/position_mesh_warnings.hpp).
+  bool say_mesh_warnings = true;
 };
 
 // An axisymmetric coil (region with turns and current): its flux linkage with the total field,

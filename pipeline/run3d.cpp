@@ -227,7 +227,7 @@ public:
   Mesh3D mesh() const { return mesh_case(run_.spec, ov_, run_.mesh_estimate); }
   void check_mesh() const {
     // Said now (a solve can take minutes) and again in the summary.
-    if (world_.is_root())
+    if (world_.is_root() && ov_.say_mesh_warnings)
       for (const auto& w : run_.mesh.warnings)
         std::cerr << "magfem: warning: " + w + "\n" << std::flush;
     if (world_.distributed())

@@ -18,6 +18,7 @@
 #include "pipeline/run3d.hpp"
 #include "pipeline/run_checkpoint.hpp"
 #include "pipeline/solve_case.hpp"
+#include "studies/position_mesh_warnings.hpp"
 #include "studies/position_runner.hpp"
 
 namespace magfem {
@@ -176,6 +177,7 @@ RunOverrides fe_overrides(const SweepOptions& o) {
   ov.order = o.order;
   ov.mesh_scale = o.mesh_scale;
   ov.max_memory_gb = o.max_memory_gb;
+  ov.say_mesh_warnings = false; // once for the sweep, with the positions (sweep_warnings)
   return ov;
 }
 
@@ -252,6 +254,7 @@ void solve_position(SweepRow& row, const CaseSpec& base, const SweepOptions& o,
     if (inside.estimated)
       row.torque_bound = inside.torque_err.norm(), row.force_bound = inside.force_err.norm();
     row.adapt = position_adapt(run->adapt);
+    row.mesh_warnings = run->mesh.warnings;
   }
   row.force = on_group.force;
   row.torque = on_group.torque;
@@ -458,6 +461,8 @@ nlohmann::json sweep_row_to_json(const SweepRow& r) {
                       {"torque_bound", r.torque_bound},
                       {"force_bound", r.force_bound}};
   add_position_adapt(j, r.adapt);
+  if (!r.mesh_warnings.empty())
+    j["mesh_warnings"] = r.mesh_warnings;
   return j;
 }
 
@@ -474,6 +479,7 @@ SweepRow sweep_row_from_json(const nlohmann::json& j, double /*angle_deg: stored
   r.torque_bound = j.at("torque_bound").get<double>();
   r.force_bound = j.at("force_bound").get<double>();
   r.adapt = position_adapt_from_json(j);
+  r.mesh_warnings = j.value("mesh_warnings", std::vector<std::string>{});
   r.ok = true;
   return r;
 }
@@ -529,7 +535,11 @@ std::string sweep_method(const std::vector<SweepRow>& rows, const SweepOptions& 
 
 std::vector<std::string> sweep_warnings(const std::vector<SweepRow>& rows,
                                         const SweepOptions& options) {
-  std::vector<std::string> out;
+  std::vector<std::pair<double, std::vector<std::string>>> meshes;
+  for (const auto& r : rows)
+    if (r.ok) // every solved position: "k of n positions"
+      meshes.emplace_back(r.angle_deg, r.mesh_warnings);
+  std::vector<std::string> out = grouped_mesh_warnings(sweep_position_key(options.motion), meshes);
   for (const auto& r : rows)
     if (const std::string w =
             position_adapt_warning(sweep_position_key(options.motion), r.angle_deg, r.adapt);

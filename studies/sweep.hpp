@@ -87,6 +87,9 @@ struct SweepRow {
   // FE with an `adapt:` section: the passes, and whether the sweep's output (torque of a
   // rotation, force of a translation) reached the accuracy.
   PositionAdapt adapt;
+  // FE: the warnings of the position's mesh (an unresolved gap...), said once per kind for the
+  // whole sweep (sweep_warnings).
+  std::vector<std::string> mesh_warnings;
 };
 
 // The case with every part of `group` rotated by angle (radians, right-hand rule) about the
