@@ -678,8 +678,9 @@ std::vector<std::string> unresolved_gap_warnings(const Geometry3D& geo, double s
     std::snprintf(text, sizeof text,
                   "the %.3g mm air gap between parts '%s' and '%s' has elements of about %.3g "
                   "mm across it, their nodes (order %d) farther apart than the gap is wide "
-                  "(gap_layers %d at mesh scale %.3g): the field in the gap is not resolved; use "
-                  "a mesh scale of at most %d or a smaller mesh size near the gap",
+                  "(gap_layers %d, sizes scaled by %.3g in all: the case's mesh scale times "
+                  "--mesh-scale): the field in the gap is not resolved; scale the sizes by at "
+                  "most %d in all, or make the mesh size near the gap smaller",
                   gap.width * 1e3, geo.parts[static_cast<std::size_t>(pair.first)].name.c_str(),
                   geo.parts[static_cast<std::size_t>(pair.second)].name.c_str(), gap.across * 1e3,
                   order, layers, scale, order * layers);

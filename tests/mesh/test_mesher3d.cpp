@@ -653,8 +653,8 @@ TEST(Mesher3D, GapWiderThanItsOrderOneElementsIsWarnedAbout) {
   EXPECT_TRUE(gap_warnings(1.0).empty());
   const auto coarse = gap_warnings(2.5);
   ASSERT_EQ(coarse.size(), 1u);
-  for (const char* text :
-       {"1 mm air gap", "'ball'", "'other'", "order 1", "gap_layers 2", "scale 2.5", "at most 2"})
+  for (const char* text : {"1 mm air gap", "'ball'", "'other'", "order 1", "gap_layers 2",
+                           "scaled by 2.5 in all", "at most 2 in all"})
     EXPECT_NE(coarse[0].find(text), std::string::npos) << text << " in: " << coarse[0];
   EXPECT_TRUE(gap_warnings(2.5, 0.4 * mm).empty());
   EXPECT_EQ(gap_warnings(2.5, 3 * mm).size(), 1u); // adaptive sizes coarser than the gap: still
@@ -669,7 +669,7 @@ TEST(Mesher3D, GapIsWarnedAboutAtOrderTwoOnlyWhenItsNodesAreFartherApartThanItIs
   EXPECT_TRUE(gap_warnings(2.5, 0, 2).empty());
   const auto p2 = gap_warnings(5, 0, 2);
   ASSERT_EQ(p2.size(), 1u);
-  for (const char* text : {"1 mm air gap", "order 2", "scale 5", "at most 4"})
+  for (const char* text : {"1 mm air gap", "order 2", "scaled by 5 in all", "at most 4 in all"})
     EXPECT_NE(p2[0].find(text), std::string::npos) << text << " in: " << p2[0];
 }
 
