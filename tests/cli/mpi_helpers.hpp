@@ -45,8 +45,9 @@ inline std::string mpirun_path() {
 // machine whose cores builds share (CI saw an FE study that takes 15 s alone take over 120 s
 // under a load of 16).
 // `mpirun_options` go to mpirun itself (e.g. a binding).
-inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400,
-                          const std::string& mpirun_options = "") {
+// `program` is a command line of its own (run_mpi_program: e.g. a test executable).
+inline CliOutcome run_mpi_program(int n, const std::string& program, int timeout_s = 400,
+                                  const std::string& mpirun_options = "") {
   std::string cmd = "timeout " + std::to_string(timeout_s) + " " + mpirun_path() + " -n " +
                     std::to_string(n) + " --oversubscribe " + mpirun_options + " ";
   if (geteuid() == 0) {
@@ -54,7 +55,11 @@ inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400,
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   }
-  return run_command(cmd + magfem_binary() + " " + args);
+  return run_command(cmd + program);
+}
+inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400,
+                          const std::string& mpirun_options = "") {
+  return run_mpi_program(n, std::string(magfem_binary()) + " " + args, timeout_s, mpirun_options);
 }
 
 inline nlohmann::json read_json(const fs::path& p) {

@@ -12,7 +12,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 
 #include "mesh/mesh_error.hpp"
 #include "pipeline/mesh_pieces_on_processes.hpp"
@@ -83,14 +82,8 @@ protected:
     const std::string self = fs::read_symlink("/proc/self/exe").string();
     setenv("MAGFEM_PIECES_CHILD", dir.c_str(), 1);
     setenv("MAGFEM_PIECES_FAIL", fail.c_str(), 1);
-    const std::string cmd = "timeout 120 " + test::mpirun_path() + " -n " + std::to_string(n) +
-                            " --oversubscribe " + (geteuid() == 0 ? "--allow-run-as-root " : "") +
-                            self + " --gtest_filter=PiecesOnProcessesChild.*";
-    if (geteuid() == 0) {
-      setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-      setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    }
-    const test::CliOutcome o = test::run_command(cmd);
+    const test::CliOutcome o =
+        test::run_mpi_program(n, self + " --gtest_filter=PiecesOnProcessesChild.*", 120);
     unsetenv("MAGFEM_PIECES_CHILD");
     unsetenv("MAGFEM_PIECES_FAIL");
     EXPECT_EQ(o.status, 0) << o.out;
