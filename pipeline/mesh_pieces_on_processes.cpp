@@ -34,6 +34,13 @@ std::string take_text(std::string_view& in) {
   return text;
 }
 
+std::string other_error(int piece, int rank, const std::string& what) {
+  std::string out(1, static_cast<char>(Outcome::other_error));
+  append_text(out, "process " + std::to_string(rank) + ", meshing piece " + std::to_string(piece) +
+                       " of the domain: " + what);
+  return out;
+}
+
 std::string mesh_here(const MeshPiece3D& mesh, int piece, int rank) {
   try {
     return static_cast<char>(Outcome::meshed) + to_bytes(mesh(piece));
@@ -44,10 +51,9 @@ std::string mesh_here(const MeshPiece3D& mesh, int piece, int rank) {
     append_text(out, e.reason);
     return out;
   } catch (const std::exception& e) {
-    std::string out(1, static_cast<char>(Outcome::other_error));
-    append_text(out, "process " + std::to_string(rank) + ", meshing piece " +
-                         std::to_string(piece) + " of the domain: " + e.what());
-    return out;
+    return other_error(piece, rank, e.what());
+  } catch (...) { // whatever it is, the other processes must hear of it, not wait for ever
+    return other_error(piece, rank, "an exception that is not a std::exception");
   }
 }
 

@@ -34,7 +34,7 @@ TetPieceMesh3D stand_in_piece(int piece) {
 }
 
 // The child: what one process of an mpirun meshed and received, written to rank.<r> in the
-// folder MAGFEM_PIECES_CHILD names; MAGFEM_PIECES_FAIL = mesh | other makes piece 1 fail.
+// folder MAGFEM_PIECES_CHILD names; MAGFEM_PIECES_FAIL = mesh | other | int makes piece 1 fail.
 TEST(PiecesOnProcessesChild, WritesWhatThisProcessMeshedAndReceived) {
   const char* out = std::getenv("MAGFEM_PIECES_CHILD");
   if (!out)
@@ -49,6 +49,8 @@ TEST(PiecesOnProcessesChild, WritesWhatThisProcessMeshedAndReceived) {
       throw MeshError("magnet", "max_size", "TetGen could not refine it");
     if (p == 1 && fail == "other")
       throw std::runtime_error("out of memory");
+    if (p == 1 && fail == "int")
+      throw 42;
     return stand_in_piece(p);
   };
   std::string outcome;
@@ -118,6 +120,13 @@ TEST_F(PiecesOnProcesses, APieceThatFailsFailsEveryProcessWithItsError) {
   const std::string said = "error process 1, meshing piece 1 of the domain: out of memory\n";
   EXPECT_EQ(other[0], "meshed 0\n" + said);
   EXPECT_EQ(other[1], "meshed 1\n" + said);
+  // Not a std::exception at all: still said on every process rather than left to hang them.
+  const auto odd = run(2, "int");
+  const std::string odd_said =
+      "error process 1, meshing piece 1 of the domain: an exception that is not a "
+      "std::exception\n";
+  EXPECT_EQ(odd[0], "meshed 0\n" + odd_said);
+  EXPECT_EQ(odd[1], "meshed 1\n" + odd_said);
 }
 
 TEST(TetPieceBytes, RoundTripAndTruncation) {
