@@ -209,7 +209,7 @@ PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
   PetscScalar* vx = nullptr;
   PetscCall(VecGetArrayRead(b, &vb));
   PetscCall(VecGetArray(x, &vx));
-  block_smoother_of(pc).smooth(vb, vx, Down, zero_guess, its);
+  block_smoother_of(pc).smooth(vb, vx, Down, zero_guess, its, available_threads());
   PetscCall(VecRestoreArray(x, &vx));
   PetscCall(VecRestoreArrayRead(b, &vb));
   *done = its;
@@ -690,7 +690,7 @@ void PetscKspSolver::Impl::multiply_many(const ColumnBlock& x, ColumnBlock& y) c
 void PetscKspSolver::Impl::vcycle_many(const ColumnBlock& r, ColumnBlock& z) {
   BlockSmoother& smoother = *block_smoother->smoother;
   z.resize(r.rows(), r.cols());
-  smoother.smooth_many(r, z, true, true);
+  smoother.smooth_many(r, z, true, true, available_threads());
   ColumnBlock residual;
   multiply_many(z, residual);
   residual = r - residual;
@@ -717,7 +717,7 @@ void PetscKspSolver::Impl::vcycle_many(const ColumnBlock& r, ColumnBlock& z) {
     check(code, "KSPSolve (coarse)");
   }
   z.noalias() += q * ec;
-  smoother.smooth_many(r, z, false, false);
+  smoother.smooth_many(r, z, false, false, available_threads());
 }
 
 std::vector<KrylovOutcome> PetscKspSolver::solve_many(const Eigen::MatrixXd& rhs,
