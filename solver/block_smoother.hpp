@@ -71,75 +71,111 @@ struct CsrView {
   const PetscScalar* value = nullptr;
 };
 
+// Each equation's place in the block (0, 1, ...) or -1 outside it; `block`: sorted.
+inline std::vector<PetscInt> block_places(PetscInt n, const std::vector<int>& block) {
+  std::vector<PetscInt> place(n, -1);
+  for (int e : block) {
+    if (e < 0 || e >= n)
+      throw SolveError("internal: a smoother block equation is out of range");
+    place[e] = 0;
+  }
+  PetscInt next = 0;
+  for (PetscInt i = 0; i < n; ++i)
+    if (place[i] >= 0)
+      place[i] = next++;
+  return place;
+}
+
+// The block's lower triangle (CSC, in the block's numbering) from the whole matrix in CSR.
+inline Eigen::SparseMatrix<double> block_lower_triangle(CsrView a,
+                                                        const std::vector<PetscInt>& place) {
+  std::vector<Eigen::Triplet<double>> entries;
+  PetscInt m = 0;
+  for (PetscInt i = 0; i < a.rows; ++i) {
+    const PetscInt b = place[i];
+    if (b < 0)
+      continue;
+    ++m;
+    for (PetscInt k = a.row_start[i]; k < a.row_start[i + 1]; ++k) {
+      const PetscInt j = place[a.column[k]];
+      if (j >= b)
+        entries.emplace_back(static_cast<int>(j), static_cast<int>(b), a.value[k]);
+    }
+  }
+  Eigen::SparseMatrix<double> lower(m, m);
+  lower.setFromTriplets(entries.begin(), entries.end());
+  lower.makeCompressed();
+  return lower;
+}
+
+// The same from the whole matrix's lower triangle in CSC (what the assembler hands over), so
+// that the block's factorization can start before the full CSR exists.
+inline Eigen::SparseMatrix<double> block_lower_triangle(const Eigen::SparseMatrix<double>& lower,
+                                                        const std::vector<int>& block) {
+  const std::vector<PetscInt> place = block_places(static_cast<PetscInt>(lower.rows()), block);
+  std::vector<Eigen::Triplet<double>> entries;
+  PetscInt m = 0;
+  for (Eigen::Index j = 0; j < lower.outerSize(); ++j) {
+    const PetscInt b = place[j];
+    if (b < 0)
+      continue;
+    ++m;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
+      const PetscInt i = place[it.row()];
+      if (i >= b)
+        entries.emplace_back(static_cast<int>(i), static_cast<int>(b), it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> block_lower(m, m);
+  block_lower.setFromTriplets(entries.begin(), entries.end());
+  block_lower.makeCompressed();
+  return block_lower;
+}
+
+// The block's Cholesky factor: the cached one while `lower` is bit for bit the matrix it was
+// computed from, else computed (and cached). Null for an empty block.
+inline std::shared_ptr<const BlockFactor> factorize_block(const Eigen::SparseMatrix<double>& lower,
+                                                          BlockFactorCache& cache) {
+  const Eigen::Index m = lower.rows();
+  if (m == 0)
+    return nullptr;
+  const auto same = [](const auto* data, Eigen::Index n, const auto& kept) {
+    return static_cast<std::size_t>(n) == kept.size() && std::equal(data, data + n, kept.begin());
+  };
+  if (!cache.factor || !same(lower.outerIndexPtr(), m + 1, cache.outer) ||
+      !same(lower.innerIndexPtr(), lower.nonZeros(), cache.inner) ||
+      !same(lower.valuePtr(), lower.nonZeros(), cache.values)) {
+    auto factor = std::make_shared<BlockFactor>();
+    // Nested dissection: the shell is a thick spherical layer, where METIS's ordering fills
+    // in a third of what AMD's does (11 against 35 GFlop at 53k equations).
+    factor->cholmod().nmethods = 1;
+    factor->cholmod().method[0].ordering = CHOLMOD_METIS;
+    factor->compute(lower);
+    if (factor->info() != Eigen::Success)
+      throw SolveError("the p-multigrid smoother's block is not positive definite");
+    cache.outer.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + m + 1);
+    cache.inner.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
+    cache.values.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
+    cache.factor = std::move(factor);
+    ++cache.factorizations;
+  }
+  return cache.factor;
+}
+
 class BlockSmoother {
 public:
   // `a`: the whole symmetric matrix (its arrays must outlive the smoother). `block`: sorted
   // equations. `cache`: the last factorization.
   BlockSmoother(CsrView a, const std::vector<int>& block, BlockFactorCache& cache)
-      : row_start_(a.row_start), column_(a.column), value_(a.value) {
-    const PetscInt* row_start = a.row_start;
-    const PetscInt* column = a.column;
-    const PetscScalar* value = a.value;
-    const PetscInt n = a.rows;
-    std::vector<PetscInt> local(n, -1);
-    for (int e : block) {
-      if (e < 0 || e >= n)
-        throw SolveError("internal: a smoother block equation is out of range");
-      local[e] = 0;
-    }
-    inv_diag_.assign(n, 0.0);
-    for (PetscInt i = 0; i < n; ++i) {
-      if (local[i] >= 0) {
-        local[i] = static_cast<PetscInt>(block_.size());
-        block_.push_back(i);
-      }
-      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k)
-        if (column[k] == i && value[k] > 0)
-          inv_diag_[i] = 1 / value[k];
-      if (local[i] < 0 && inv_diag_[i] == 0)
-        throw SolveError("internal: a diagonal entry is not positive");
-    }
-    for (PetscInt i = 0; i < n; ++i)
-      if (local[i] < 0)
-        (couples_to_block(i, local) ? near_ : far_).push_back(i);
-    std::vector<Eigen::Triplet<double>> entries;
-    for (std::size_t b = 0; b < block_.size(); ++b) {
-      const PetscInt i = block_[b];
-      for (PetscInt k = row_start[i]; k < row_start[i + 1]; ++k) {
-        const PetscInt j = local[column[k]];
-        if (j >= 0 && j >= static_cast<PetscInt>(b))
-          entries.emplace_back(static_cast<int>(j), static_cast<int>(b), value[k]);
-      }
-    }
-    const auto m = static_cast<Eigen::Index>(block_.size());
-    Eigen::SparseMatrix<double> lower(m, m);
-    lower.setFromTriplets(entries.begin(), entries.end());
-    lower.makeCompressed();
-    r_.resize(m);
-    // Distributed, a process may own none of the block's equations: Gauss-Seidel alone.
-    if (m == 0)
-      return;
-    const auto same = [](const auto* data, Eigen::Index n, const auto& kept) {
-      return static_cast<std::size_t>(n) == kept.size() && std::equal(data, data + n, kept.begin());
-    };
-    if (!cache.factor || !same(lower.outerIndexPtr(), m + 1, cache.outer) ||
-        !same(lower.innerIndexPtr(), lower.nonZeros(), cache.inner) ||
-        !same(lower.valuePtr(), lower.nonZeros(), cache.values)) {
-      auto factor = std::make_shared<BlockFactor>();
-      // Nested dissection: the shell is a thick spherical layer, where METIS's ordering fills
-      // in a third of what AMD's does (11 against 35 GFlop at 53k equations).
-      factor->cholmod().nmethods = 1;
-      factor->cholmod().method[0].ordering = CHOLMOD_METIS;
-      factor->compute(lower);
-      if (factor->info() != Eigen::Success)
-        throw SolveError("the p-multigrid smoother's block is not positive definite");
-      cache.outer.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + m + 1);
-      cache.inner.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
-      cache.values.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
-      cache.factor = std::move(factor);
-      ++cache.factorizations;
-    }
-    factor_ = cache.factor;
+      : BlockSmoother(a, block_places(a.rows, block)) {
+    factor_ = factorize_block(block_lower_triangle(a, place_), cache);
+  }
+  // The same with the block's factor already computed (factorize_block).
+  BlockSmoother(CsrView a, const std::vector<int>& block, std::shared_ptr<const BlockFactor> factor)
+      : BlockSmoother(a, block_places(a.rows, block)) {
+    if (!block_.empty() && !factor)
+      throw SolveError("internal: a smoother block without its factor");
+    factor_ = std::move(factor);
   }
 
   // x <- x + M^-1 (b - A x), `its` times; M = down's or up's splitting. `threads` >= 2: the
@@ -209,10 +245,28 @@ public:
   }
 
 private:
-  // Whether point equation i has an entry in a block column (`local` >= 0 there).
-  bool couples_to_block(PetscInt i, const std::vector<PetscInt>& local) const {
+  // Everything but the factor: the groups, the diagonal. `place`: block_places.
+  BlockSmoother(CsrView a, std::vector<PetscInt> place)
+      : row_start_(a.row_start), column_(a.column), value_(a.value), place_(std::move(place)) {
+    inv_diag_.assign(a.rows, 0.0);
+    for (PetscInt i = 0; i < a.rows; ++i) {
+      if (place_[i] >= 0)
+        block_.push_back(i);
+      for (PetscInt k = row_start_[i]; k < row_start_[i + 1]; ++k)
+        if (column_[k] == i && value_[k] > 0)
+          inv_diag_[i] = 1 / value_[k];
+      if (place_[i] < 0 && inv_diag_[i] == 0)
+        throw SolveError("internal: a diagonal entry is not positive");
+    }
+    for (PetscInt i = 0; i < a.rows; ++i)
+      if (place_[i] < 0)
+        (couples_to_block(i) ? near_ : far_).push_back(i);
+    r_.resize(static_cast<Eigen::Index>(block_.size()));
+  }
+  // Whether point equation i has an entry in a block column.
+  bool couples_to_block(PetscInt i) const {
     for (PetscInt k = row_start_[i]; k < row_start_[i + 1]; ++k)
-      if (local[column_[k]] >= 0)
+      if (place_[column_[k]] >= 0)
         return true;
     return false;
   }
@@ -261,6 +315,7 @@ private:
   const PetscInt* row_start_;
   const PetscInt* column_;
   const PetscScalar* value_;
+  std::vector<PetscInt> place_;              // block_places
   std::vector<PetscInt> block_, far_, near_; // near_: the point equations coupled to the block
   std::vector<double> inv_diag_;
   std::shared_ptr<const BlockFactor> factor_;

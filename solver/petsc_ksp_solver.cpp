@@ -166,12 +166,13 @@ namespace {
 
 // The block smoother is built when PETSc sets the smoothers up, not before: options that
 // replace it (-mg_levels_pc_type sor, the one-sweep SSOR smoother of before) then cost no
-// factorization. Down and up share it. Serially without petsc_options nothing can replace it,
-// and it is built on a thread of its own (`building`) from the start of pmg's set-up, while
-// the Galerkin product and BoomerAMG's set-up run: its CHOLMOD analysis (METIS) and
-// BoomerAMG's set-up are each serial (benchmark32: 1.4 and ~1.2 s of CPU, the factor 3.7 s on
-// two BLAS threads). The smoother is the same either way: built from the same arrays, which
-// nothing writes during the set-up.
+// factorization. Down and up share it. Serially without petsc_options nothing can replace it:
+// its block's factorization starts in setup() from the lower triangle (block_factoring), and
+// the rest of it is built on a thread of its own (`building`) from the start of pmg's set-up,
+// while the full CSR, the Galerkin product and BoomerAMG's set-up are made: the CHOLMOD
+// analysis (METIS) and BoomerAMG's set-up are each serial (benchmark32: 1.4 and ~1.2 s of CPU,
+// the factor 3.7 s on two BLAS threads). The smoother is the same either way: the block's
+// lower triangle is the same matrix from either form, and nothing writes the arrays meanwhile.
 struct BlockSmootherSlot {
   CsrView matrix;
   const std::vector<int>* block = nullptr;
@@ -259,6 +260,10 @@ struct PetscKspSolver::Impl {
   Vec rhs = nullptr;    // distributed mode: the right-hand side of the solve
   std::unique_ptr<BlockSmootherSlot> block_smoother; // pmg with a smoother block
   BlockFactorCache block_factor;                     // kept across setup() calls (not release()d)
+  // Serial pmg: the block's factorization, started by setup() from the lower triangle before
+  // the full CSR is built (joined by the smoother's build; declared after block_factor, which
+  // it writes, so that it is joined first).
+  std::future<std::shared_ptr<const BlockFactor>> block_factoring;
   std::vector<PetscInt> row_start, column, p_row_start, p_column;
   std::vector<PetscScalar> value, p_value;
   CsrMatrix coarse_csr; // the arrays behind `coarse`
@@ -295,7 +300,8 @@ struct PetscKspSolver::Impl {
     if (rhs)
       VecDestroy(&rhs);
     block_smoother.reset();
-    diag_block = {}; // pointed into `a`
+    block_factoring = {}; // waits for a factorization still running
+    diag_block = {};      // pointed into `a`
   }
   void to_full_csr(const Eigen::SparseMatrix<double>& lower);
   void set_up_ksp(MPI_Comm comm);
@@ -410,9 +416,10 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (has_block && !distributed) {
     block_smoother = std::make_unique<BlockSmootherSlot>(
         BlockSmootherSlot{fine_matrix(), options.smoother_block, &block_factor, nullptr, {}});
-    if (options.petsc_options.empty() && options.concurrent_block_factor)
-      block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get()] {
-        return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, *slot->cache);
+    if (block_factoring.valid())
+      block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(),
+                                                                 this] {
+        return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
       });
   }
   if (distributed)
@@ -623,6 +630,17 @@ void PetscKspSolver::setup(const Eigen::SparseMatrix<double>& lower) {
   Impl& m = *impl_;
   m.release();
   m.distributed = false;
+  // The smoother block's factorization (the longest part of the set-up: METIS and CHOLMOD,
+  // 4 s at benchmark32) from the lower triangle, beside the full CSR, the Galerkin product
+  // and BoomerAMG's set-up. Only where nothing can replace the block smoother.
+  if (m.options.preconditioner == "pmg" && m.options.petsc_options.empty() &&
+      m.options.concurrent_block_factor && m.options.smoother_block &&
+      !m.options.smoother_block->empty())
+    m.block_factoring = std::async(
+        std::launch::async, [&cache = m.block_factor,
+                             block_lower = block_lower_triangle(lower, *m.options.smoother_block)] {
+          return factorize_block(block_lower, cache);
+        });
   m.to_full_csr(lower);
   const auto n = static_cast<PetscInt>(lower.rows());
   check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, m.row_start.data(), m.column.data(),

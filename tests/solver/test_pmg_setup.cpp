@@ -66,14 +66,17 @@ using test::ThreadsVariable;
 
 } // namespace
 
-// The block factorized concurrently with the Galerkin product and BoomerAMG's set-up, and the
-// products on two threads: the same V-cycle and the same CG, so the same solution to the bit
-// and the same iteration count as the serial set-up and PETSc's product (each row of the
-// product is one thread's sum in column order, as PETSc's is; this box's 1,331 rows are one
-// block of the product, so the thread counts check the set-up's threads only). Planted and
+// The block factorized concurrently with the full CSR, the Galerkin product and BoomerAMG's
+// set-up, and the products on two threads: the same V-cycle and the same CG, so the same
+// solution to the bit and the same iteration count as the serial set-up and PETSc's product
+// (each row of the product is one thread's sum in column order, as PETSc's is; this box's
+// 1,331 rows are one block of the product, so the thread counts check the set-up's and the
+// smoother's threads only). Planted and
 // caught (13 iterations here): the concurrent build given an empty block (Gauss-Seidel only:
 // 16 iterations, every entry of x differs), the product's rows cut one short per block (2
-// iterations, a wrong x), the product's sum over a row started at its second entry (19).
+// iterations, a wrong x), the product's sum over a row started at its second entry (19), the
+// block's lower triangle taken from the assembler's CSC (where the concurrent factorization
+// starts, before the full CSR exists) with its diagonal 1e-9 off.
 TEST(PmgSetUp, ConcurrentFactorAndThreadedProductKeepTheSolutionBitForBit) {
   const BoxSystem s;
   const Solution before = solve(s, s.options(true));
