@@ -106,9 +106,11 @@ SparsePattern::SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int
   outer[0] = 0;
   for (int j = 0; j < n_eqs; ++j)
     outer[j + 1] = outer[j] + count[j];
-  for (std::size_t b = 0; b < n_blocks; ++b)
+  double* values = matrix_.valuePtr();
+  parallel_blocks(n_blocks, 1, threads, [&](std::size_t b, std::size_t, std::size_t) {
     std::copy(rows[b].begin(), rows[b].end(), inner + outer[b * block]);
-  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + nnz, 0.0);
+    std::fill(values + outer[b * block], values + outer[b * block] + rows[b].size(), 0.0);
+  });
 
   parallel_blocks(n_elements, block, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     for (std::size_t e = lo; e < hi; ++e) {
@@ -124,6 +126,24 @@ SparsePattern::SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int
         }
     }
   });
+}
+
+Eigen::SparseMatrix<double> SparsePattern::zero_matrix() const {
+  Eigen::SparseMatrix<double> m(matrix_.rows(), matrix_.cols());
+  const Eigen::Index nnz = matrix_.nonZeros();
+  m.resizeNonZeros(nnz);
+  std::copy(matrix_.outerIndexPtr(), matrix_.outerIndexPtr() + matrix_.outerSize() + 1,
+            m.outerIndexPtr());
+  const int* from = matrix_.innerIndexPtr();
+  int* inner = m.innerIndexPtr();
+  double* values = m.valuePtr();
+  // Blocks of a million entries: what the copy's threads take in turn.
+  parallel_blocks(static_cast<std::size_t>(nnz), std::size_t{1} << 20, available_threads(),
+                  [&](std::size_t, std::size_t lo, std::size_t hi) {
+                    std::copy(from + lo, from + hi, inner + lo);
+                    std::fill(values + lo, values + hi, 0.0);
+                  });
+  return m;
 }
 
 void SparsePattern::add(Eigen::SparseMatrix<double>& m, std::size_t e, const double* ke) const {

@@ -6,6 +6,8 @@
 
 #include <Eigen/SparseCore>
 
+#include "core/default_init_vector.hpp"
+
 namespace magfem {
 
 class SparsePattern {
@@ -13,8 +15,8 @@ public:
   // element_eqs: for each element, `per_element` equation numbers (-1 = constrained DOF).
   SparsePattern(int n_eqs, const std::vector<int>& element_eqs, int per_element);
 
-  // A matrix with this pattern and zero values.
-  Eigen::SparseMatrix<double> zero_matrix() const { return matrix_; }
+  // A matrix with this pattern and zero values (copied on all cores: 420 MB at benchmark32).
+  Eigen::SparseMatrix<double> zero_matrix() const;
   // Adds the element matrix ke (per_element x per_element, row major, full) of element e.
   void add(Eigen::SparseMatrix<double>& m, std::size_t e, const double* ke) const;
   // Scatter table of element e: per_element^2 indices into valuePtr (-1 = not stored), row
@@ -24,7 +26,7 @@ public:
 private:
   int per_element_;
   Eigen::SparseMatrix<double> matrix_;
-  std::vector<int> slot_; // per element entry: index into valuePtr or -1
+  DefaultInitVector<int> slot_; // per element entry: index into valuePtr or -1
 };
 
 } // namespace magfem
