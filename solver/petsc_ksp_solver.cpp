@@ -15,11 +15,14 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/default_init_vector.hpp"
 #include "core/input_error.hpp"
+#include "core/parallel_blocks.hpp"
 #include "core/progress.hpp"
 #include "core/thread_count.hpp"
 #include "solver/block_smoother.hpp"
 #include "solver/csr_product.hpp"
+#include "solver/full_csr.hpp"
 #include "solver/galerkin_product.hpp"
 #include "solver/own_row_matrix.hpp"
 #include "solver/petsc_check.hpp"
@@ -264,8 +267,10 @@ struct PetscKspSolver::Impl {
   // the full CSR is built (joined by the smoother's build; declared after block_factor, which
   // it writes, so that it is joined first).
   std::future<std::shared_ptr<const BlockFactor>> block_factoring;
-  std::vector<PetscInt> row_start, column, p_row_start, p_column;
-  std::vector<PetscScalar> value, p_value;
+  std::vector<PetscInt> row_start, p_row_start, p_column;
+  DefaultInitVector<PetscInt> column; // filled on all cores (to_full_csr), so not zeroed first
+  DefaultInitVector<PetscScalar> value;
+  std::vector<PetscScalar> p_value;
   CsrMatrix coarse_csr; // the arrays behind `coarse`
   double rhs_norm = 1;
   // Distributed mode (begin_distributed): `a` is one MPIAIJ matrix over MPI_COMM_WORLD, and
@@ -331,60 +336,11 @@ struct PetscKspSolver::Impl {
   static PetscErrorCode monitor(KSP, PetscInt it, PetscReal rnorm, void* self);
 };
 
-// CSR of the full symmetric matrix from the CSC lower triangle: row i holds (i, j < i) from
-// the lower entries of row i, then (i, j >= i) from column i. Columns come out sorted as PETSc
-// requires (columns are visited in order; a column's rows are sorted in a compressed Eigen
-// matrix, and any that are not get sorted below).
 void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower) {
-  const int n = static_cast<int>(lower.rows());
-  std::vector<PetscInt> n_left(n, 0), n_right(n, 0);
-  for (int j = 0; j < n; ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
-      if (it.row() < j)
-        throw SolveError("internal: the matrix is not a lower triangle");
-      if (it.row() > j)
-        ++n_left[it.row()];
-      ++n_right[j];
-    }
-  row_start.assign(n + 1, 0);
-  for (int i = 0; i < n; ++i)
-    row_start[i + 1] = row_start[i] + n_left[i] + n_right[i];
-  column.resize(row_start[n]);
-  value.resize(row_start[n]);
-  std::vector<PetscInt> left(row_start.begin(), row_start.end() - 1), right(n);
-  for (int i = 0; i < n; ++i)
-    right[i] = row_start[i] + n_left[i];
-  bool sorted = true;
-  for (int j = 0; j < n; ++j) {
-    PetscInt previous = -1;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it) {
-      const PetscInt i = static_cast<PetscInt>(it.row());
-      if (i > j) {
-        column[left[i]] = j;
-        value[left[i]++] = it.value();
-      }
-      sorted = sorted && i > previous;
-      previous = i;
-      column[right[j]] = i;
-      value[right[j]++] = it.value();
-    }
-  }
-  if (sorted)
-    return;
-  std::vector<int> order;
-  std::vector<PetscInt> c;
-  std::vector<PetscScalar> v;
-  for (int i = 0; i < n; ++i) {
-    const PetscInt b = row_start[i], e = row_start[i + 1];
-    order.resize(e - b);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](int x, int y) { return column[b + x] < column[b + y]; });
-    c.assign(column.begin() + b, column.begin() + e);
-    v.assign(value.begin() + b, value.begin() + e);
-    for (PetscInt k = 0; k < e - b; ++k)
-      column[b + k] = c[order[k]], value[b + k] = v[order[k]];
-  }
+  FullCsr full = full_csr_from_lower(lower);
+  row_start = std::move(full.row_start);
+  column = std::move(full.column);
+  value = std::move(full.value);
 }
 
 // Two-level p-multigrid as PETSc's PCMG: the given interpolation, the Galerkin coarse operator
