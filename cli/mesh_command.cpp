@@ -337,7 +337,7 @@ int run_mesh_command(const std::vector<std::string>& args) {
   for (const auto& r : spec.regions)
     region_names.push_back(r.name);
   add_cell_names(out.grid, "region_id", "region", "region_names", region_names);
-  write_vtu(stage.path_for("mesh.vtu").string(), out.grid);
+  write_vtu(stage.path_for("mesh.vtu").string(), std::move(out.grid));
   std::string why;
   if (!plot_polygons(out.picture, spec,
                      case_file + " (" + std::to_string(j["elements"].get<long>()) + " elements)",

@@ -267,7 +267,7 @@ public:
     grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2));
     add_B_along_M(grid, run.demagnetization,
                   [&](std::size_t t) { return run.problem.is_shell(t); });
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
+    write_vtu(stage.path_for("solution.vtu").string(), std::move(grid));
     if (run.spec.write_revolved_vtu)
       write_vtu(stage.path_for("solution_revolved.vtu").string(),
                 make_vtu_revolved(*run.field, materials.of_region, 0, materials.names,

@@ -429,7 +429,7 @@ public:
     grid.cell_data.push_back(error_indicator_cells(run.problem, run.error_estimate.eta2_J));
     add_B_along_M(grid, run.demagnetization,
                   [&](std::size_t t) { return run.problem.is_shell(t); });
-    write_vtu(stage.path_for("solution.vtu").string(), grid);
+    write_vtu(stage.path_for("solution.vtu").string(), std::move(grid));
   }
   static std::string describe_head(const Run3D& run) {
     char buf[640];

@@ -21,20 +21,24 @@
 namespace magfem {
 namespace {
 
-template <class Array, class Value> vtkSmartPointer<vtkDataArray> filled(const VtuArray& a) {
-  vtkNew<Array> arr;
+// VTK reads the grid's doubles in place (SetArray with save = 1: VTK neither copies nor frees
+// them; the writer only reads, and the grid outlives it). Int32 arrays are converted.
+vtkSmartPointer<vtkDataArray> make_array(const VtuArray& a) {
+  const vtkIdType n = static_cast<vtkIdType>(a.values.size()) / a.components;
+  if (a.type == VtuType::Int32) { // vtkIntArray is written as Int32 (VTK's int is 32 bits)
+    vtkNew<vtkIntArray> arr;
+    arr->SetName(a.name.c_str());
+    arr->SetNumberOfComponents(a.components);
+    arr->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n * a.components; ++i)
+      arr->SetValue(i, static_cast<int>(a.values[i]));
+    return vtkSmartPointer<vtkDataArray>(arr.GetPointer());
+  }
+  vtkNew<vtkDoubleArray> arr;
   arr->SetName(a.name.c_str());
   arr->SetNumberOfComponents(a.components);
-  const vtkIdType n = static_cast<vtkIdType>(a.values.size()) / a.components;
-  arr->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n * a.components; ++i)
-    arr->SetValue(i, static_cast<Value>(a.values[i]));
+  arr->SetArray(const_cast<double*>(a.values.data()), n * a.components, 1);
   return vtkSmartPointer<vtkDataArray>(arr.GetPointer());
-}
-
-vtkSmartPointer<vtkDataArray> make_array(const VtuArray& a) {
-  // vtkIntArray is written as Int32 (VTK's int is 32 bits on every platform it supports).
-  return a.type == VtuType::Int32 ? filled<vtkIntArray, int>(a) : filled<vtkDoubleArray, double>(a);
 }
 
 vtkNew<vtkStringArray> make_strings(const VtuStrings& s) {
@@ -47,20 +51,27 @@ vtkNew<vtkStringArray> make_strings(const VtuStrings& s) {
 }
 
 void write_vtu_with_vtk(const std::string& path, const VtuGrid& grid) {
+  // The points in place too: Eigen::Vector3d is three packed doubles.
+  static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double));
+  vtkNew<vtkDoubleArray> xyz;
+  xyz->SetNumberOfComponents(3);
+  xyz->SetArray(const_cast<double*>(grid.points.empty() ? nullptr : grid.points[0].data()),
+                static_cast<vtkIdType>(3 * grid.points.size()), 1);
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(grid.points.size()));
-  for (std::size_t i = 0; i < grid.points.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), grid.points[i].data());
+  points->SetData(xyz);
 
+  // The cells as VTK's two arrays (offsets from 0, connectivity), filled in one pass each
+  // rather than a cell at a time.
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfValues(static_cast<vtkIdType>(grid.offsets.size()) + 1);
+  offsets->SetValue(0, 0);
+  for (std::size_t c = 0; c < grid.offsets.size(); ++c)
+    offsets->SetValue(static_cast<vtkIdType>(c) + 1, grid.offsets[c]);
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(grid.connectivity.size()));
+  for (std::size_t k = 0; k < grid.connectivity.size(); ++k)
+    connectivity->SetValue(static_cast<vtkIdType>(k), grid.connectivity[k]);
   vtkNew<vtkCellArray> cells;
-  int begin = 0;
-  std::vector<vtkIdType> ids;
-  for (const int end : grid.offsets) {
-    ids.assign(grid.connectivity.begin() + begin, grid.connectivity.begin() + end);
-    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    begin = end;
-  }
+  cells->SetData(offsets, connectivity);
   vtkNew<vtkUnstructuredGrid> ug;
   ug->SetPoints(points);
   ug->SetCells(const_cast<int*>(grid.cell_types.data()), cells);

@@ -13,10 +13,9 @@ const VtkBackend& vtk_backend() {
   return *backend;
 }
 
-void write_vtu(const std::string& path, const VtuGrid& grid) {
-  VtuGrid used = grid;
-  drop_unused_points(used);
-  vtk_backend().write_vtu(path, used);
+void write_vtu(const std::string& path, VtuGrid grid) {
+  drop_unused_points(grid);
+  vtk_backend().write_vtu(path, grid);
 }
 
 } // namespace magfem

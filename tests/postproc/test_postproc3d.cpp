@@ -8,6 +8,8 @@
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -292,6 +294,15 @@ TEST(VtuExport3D, QuadraticTetsWithAllArrays) {
     ug->GetPoint(static_cast<vtkIdType>(p), x);
     for (int k = 0; k < 3; ++k)
       ASSERT_EQ(x[k], g.points[p][k]) << "point " << p;
+  }
+  // Every cell's points in the order written (VTK's cell arrays are filled in bulk: planted,
+  // the connectivity read one entry on, seen to fail).
+  for (std::size_t c = 0, begin = 0; c < g.offsets.size(); begin = g.offsets[c++]) {
+    vtkNew<vtkIdList> ids;
+    ug->GetCellPoints(static_cast<vtkIdType>(c), ids);
+    ASSERT_EQ(ids->GetNumberOfIds(), static_cast<vtkIdType>(g.offsets[c] - begin)) << "cell " << c;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      ASSERT_EQ(ids->GetId(k), g.connectivity[begin + k]) << "cell " << c;
   }
   for (const auto& array : g.point_data) {
     vtkDataArray* read = ug->GetPointData()->GetArray(array.name.c_str());
