@@ -1,12 +1,10 @@
 #include "pipeline/mesh_pieces_on_processes.hpp"
 
-#include <cstddef>
-#include <cstdint>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
+#include "core/byte_records.hpp"
 #include "mesh/mesh_error.hpp"
 
 namespace magfem {
@@ -15,29 +13,10 @@ namespace {
 // What a piece's owner sends: a tag byte, then the piece or the failure.
 enum class Outcome : char { meshed = 'm', mesh_error = 'e', other_error = 'x' };
 
-void append_text(std::string& out, const std::string& text) {
-  const std::uint64_t n = text.size();
-  out.append(reinterpret_cast<const char*>(&n), sizeof n);
-  out += text;
-}
-
-std::string take_text(std::string_view& in) {
-  std::uint64_t n = 0;
-  if (in.size() < sizeof n)
-    throw std::runtime_error("a mesh piece's failure message ends early");
-  std::memcpy(&n, in.data(), sizeof n);
-  in.remove_prefix(sizeof n);
-  if (in.size() < n)
-    throw std::runtime_error("a mesh piece's failure message ends early");
-  std::string text(in.substr(0, n));
-  in.remove_prefix(n);
-  return text;
-}
-
 std::string other_error(int piece, int rank, const std::string& what) {
   std::string out(1, static_cast<char>(Outcome::other_error));
-  append_text(out, "process " + std::to_string(rank) + ", meshing piece " + std::to_string(piece) +
-                       " of the domain: " + what);
+  append_record(out, "process " + std::to_string(rank) + ", meshing piece " +
+                         std::to_string(piece) + " of the domain: " + what);
   return out;
 }
 
@@ -46,9 +25,9 @@ std::string mesh_here(const MeshPiece3D& mesh, int piece, int rank) {
     return static_cast<char>(Outcome::meshed) + to_bytes(mesh(piece));
   } catch (const MeshError& e) {
     std::string out(1, static_cast<char>(Outcome::mesh_error));
-    append_text(out, e.part);
-    append_text(out, e.field);
-    append_text(out, e.reason);
+    append_record(out, e.part);
+    append_record(out, e.field);
+    append_record(out, e.reason);
     return out;
   } catch (const std::exception& e) {
     return other_error(piece, rank, e.what());
@@ -65,11 +44,12 @@ TetPieceMesh3D piece_or_throw(std::string_view bytes) {
   if (outcome == Outcome::meshed)
     return tet_piece_from_bytes(bytes);
   if (outcome == Outcome::mesh_error) {
-    std::string part = take_text(bytes);
-    std::string field = take_text(bytes);
-    throw MeshError(std::move(part), std::move(field), take_text(bytes));
+    ByteRecordReader in(bytes, "a mesh piece's failure message");
+    std::string part = in.text();
+    std::string field = in.text();
+    throw MeshError(std::move(part), std::move(field), in.text());
   }
-  throw std::runtime_error(take_text(bytes));
+  throw std::runtime_error(ByteRecordReader(bytes, "a mesh piece's failure message").text());
 }
 
 } // namespace
