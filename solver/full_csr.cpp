@@ -27,8 +27,10 @@ FullCsr full_csr_from_lower(const Eigen::SparseMatrix<double>& given, int thread
   const int* outer = lower.outerIndexPtr();
   const int* inner = lower.innerIndexPtr();
   const double* lower_value = lower.valuePtr();
+  // Each range keeps a count per row (threads x n ints): at most 8 ranges, so that a many-core
+  // machine does not pay gigabytes for it (2 M rows: 64 MB at 8).
   if (threads <= 0)
-    threads = available_threads();
+    threads = std::min(available_threads(), 8);
   FullCsr out;
   std::vector<int>& row_start = out.row_start;
   DefaultInitVector<int>& column = out.column;
