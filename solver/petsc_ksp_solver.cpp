@@ -17,7 +17,6 @@
 
 #include "core/default_init_vector.hpp"
 #include "core/input_error.hpp"
-#include "core/parallel_blocks.hpp"
 #include "core/progress.hpp"
 #include "core/thread_count.hpp"
 #include "solver/block_smoother.hpp"

@@ -22,8 +22,8 @@ int index_of(int i, int j, int k) {
   return i + nx * (j + ny * k);
 }
 
-// The Laplacian with a diagonal shift (SPD, not an M-matrix by accident of the grid only) in
-// CSR with sorted columns, as the smoother reads it.
+// The Laplacian with a diagonal shift (SPD: strictly diagonally dominant) in CSR with sorted
+// columns, as the smoother reads it.
 struct Grid {
   std::vector<PetscInt> row_start{0}, column;
   std::vector<PetscScalar> value;

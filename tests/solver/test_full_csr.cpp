@@ -77,6 +77,27 @@ TEST(FullCsr, UncompressedInputIsReadAsItsCompressedCopy) {
   expect_full_csr(uncompressed, 2);
 }
 
+// A compressed matrix whose columns hold their rows out of order (Eigen does not require the
+// order) still gives rows with sorted columns, as PETSc requires: the branch that sorts them.
+// Planted and caught: that branch skipped (row 3's columns come out 2, 0).
+TEST(FullCsr, RowsComeOutSortedFromColumnsOutOfOrder) {
+  // Lower triangle of a 4 x 4 matrix, CSC with column 0's rows as 0, 3, 1 (out of order).
+  const std::vector<int> outer{0, 3, 5, 7, 8};
+  const std::vector<int> inner{0, 3, 1, 1, 2, 2, 3, 3};
+  const std::vector<double> values{4, -1, -2, 5, -3, 6, -4, 7};
+  const Eigen::Map<const Eigen::SparseMatrix<double>> mapped(4, 4, 8, outer.data(), inner.data(),
+                                                             values.data());
+  const Eigen::SparseMatrix<double> lower = mapped;
+  ASSERT_EQ(lower.innerIndexPtr()[1], 3) << "the copy must keep the out-of-order rows";
+  const FullCsr full = full_csr_from_lower(lower, 2);
+  const std::vector<int> row_start{0, 3, 6, 9, 12};
+  const std::vector<int> column{0, 1, 3, 0, 1, 2, 1, 2, 3, 0, 2, 3};
+  const std::vector<double> value{4, -2, -1, -2, 5, -3, -3, 6, -4, -1, -4, 7};
+  EXPECT_EQ(full.row_start, row_start);
+  EXPECT_EQ(std::vector<int>(full.column.begin(), full.column.end()), column);
+  EXPECT_EQ(std::vector<double>(full.value.begin(), full.value.end()), value);
+}
+
 // An entry above the diagonal is an internal error, not silently mirrored.
 TEST(FullCsr, AnEntryAboveTheDiagonalIsRefused) {
   Eigen::SparseMatrix<double> a(3, 3);
