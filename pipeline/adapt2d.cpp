@@ -47,6 +47,7 @@ std::unique_ptr<Run2D> run_adaptive_2d(const CaseSpec& spec, const RunOverrides&
                    run->energy.total_J_per_m * length_factor(run->spec),
                    run->error_estimate.energy_error_pct,
                    {},
+                   {},
                    {}};
     for (const auto& q : quantities) {
       m.quantities.push_back(

@@ -173,17 +173,20 @@ std::unique_ptr<Run3D> run_adaptive_3d(const CaseSpec& spec, const RunOverrides&
                    run->energy.total_J,
                    run->error_estimate.energy_error_pct,
                    {},
+                   {},
                    {}};
     goals = probe_goals_3d(*run, quantities);
     auto goal = goals.begin();
     for (const auto& q : quantities) {
       m.quantities.push_back(
           adapt_quantity_value(q, m.energy_J, run->forces, run->probes, b_columns));
-      // A probe table's one-mesh estimate is its local field error (ProbeGoal3D): the loop
-      // reports the larger of it and the extrapolated change between passes.
-      m.quantity_mesh_error_pct.push_back(q.kind == AdaptQuantity::Kind::probe
-                                              ? (goal++)->error_pct
-                                              : adapt_quantity_mesh_error_pct(q, run->forces));
+      // A probe table's one-mesh estimate is the element field's local error (ProbeGoal3D),
+      // an upper bound for the patch-recovered table: the loop takes it alone. Other
+      // quantities: the larger of their own and the extrapolated change between passes.
+      const bool probe = q.kind == AdaptQuantity::Kind::probe;
+      m.quantity_mesh_error_pct.push_back(probe ? (goal++)->error_pct
+                                                : adapt_quantity_mesh_error_pct(q, run->forces));
+      m.quantity_mesh_error_bounds.push_back(probe);
     }
     return m;
   };

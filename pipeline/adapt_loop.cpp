@@ -102,8 +102,9 @@ const AdaptPass& record_pass(const AdaptMeasure& m, int pass, const AdaptSpec& s
     // exact). The larger of the two, from the second pass on (the first has no change to
     // compare and stays unknown).
     const double mesh = i < m.quantity_mesh_error_pct.size() ? m.quantity_mesh_error_pct[i] : nan;
+    const bool bound = i < m.quantity_mesh_error_bounds.size() && m.quantity_mesh_error_bounds[i];
     if (std::isfinite(e) && std::isfinite(mesh))
-      e = std::max(e, mesh);
+      e = bound ? mesh : std::max(e, mesh);
     passes.back().quantity_error_pct.push_back(e);
   }
   return passes.back();

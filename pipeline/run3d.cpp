@@ -311,8 +311,12 @@ public:
   EnergySummary3D summarize_energy(const std::vector<std::string>& names) const {
     return summarize_energy_3d(*run_.field, names, &run_.recovered_B.element_peak_B());
   }
-  // Nodal B per region, once for the probes, the VTU and the energy summary's peak |B|.
-  void recover() const { run_.recovered_B = RecoveredB3D(*run_.field); }
+  // Nodal B per region, once for the VTU and the energy summary's peak |B|; the patch
+  // recovery, once for the probes and the error estimates.
+  void recover() const {
+    run_.recovered_B = RecoveredB3D(*run_.field);
+    run_.recovery = std::make_unique<PatchRecovery3D>(*run_.field);
+  }
   // A grid over the tets near the probe points only, not the whole mesh (1 s of
   // benchmark32's post-processing went into a grid of all 1.6 M tets for 2116 points).
   PointLocator3D probe_locator() const {
@@ -324,7 +328,7 @@ public:
     return PointLocator3D(run_.mesh, points);
   }
   ProbeTable sample_probe(const PointLocator3D& locator, const ProbeSpec& probe) const {
-    return sample_probe_3d(*run_.field, locator, probe, run_.spec.length_unit, &run_.recovered_B);
+    return sample_probe_3d(*run_.field, locator, probe, run_.spec.length_unit, *run_.recovery);
   }
   // Sections integrate the element field itself: a flux is an integral, which the recovered
   // (smoothed) B would only approximate, and the element B is exact in B.n per element.
@@ -344,7 +348,7 @@ public:
   // The energy-norm estimate and one for each stress-tensor and Lorentz force, from one patch
   // recovery.
   void estimate_error() const {
-    const PatchRecovery3D recovery(*run_.field);
+    const PatchRecovery3D& recovery = *run_.recovery;
     run_.error_estimate = estimate_error_3d(recovery, run_.energy.total_J);
     estimate_force_errors_3d(run_, recovery, run_.forces);
     estimate_lorentz_errors_3d(run_, recovery, run_.forces);

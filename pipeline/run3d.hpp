@@ -18,6 +18,7 @@
 #include "postproc/energy3d.hpp"
 #include "postproc/error_estimate3d.hpp"
 #include "postproc/field3d.hpp"
+#include "postproc/patch_recovery3d.hpp"
 #include "postproc/recovered_b3d.hpp"
 #include "postproc/section_flux3d.hpp"
 #include "solver/coil_source3d.hpp"
@@ -39,7 +40,10 @@ struct Run3D {
   std::unique_ptr<Field3D> field;
   NewtonReport report;
   EnergySummary3D energy;
-  RecoveredB3D recovered_B; // nodal B per region, computed once (probes, VTU)
+  RecoveredB3D recovered_B; // nodal B per region, computed once (VTU point data, peak |B|)
+  // The superconvergent patch recovery of `field`, computed once: what the probes read (one
+  // order better than the nodal averages) and what the error estimates compare with.
+  std::unique_ptr<PatchRecovery3D> recovery;
   std::vector<ProbeTable> probes;
   std::vector<SectionFlux> sections; // parallel to spec.sections
   std::vector<ForceResult> forces;

@@ -294,14 +294,22 @@ Eigen::Vector3d PatchRecovery3D::G(std::size_t t, const std::array<double, 4>& b
   return g;
 }
 
-Eigen::Vector3d PatchRecovery3D::B(std::size_t t, const std::array<double, 4>& bary) const {
-  const Problem3D& problem = field_.problem();
-  const Eigen::Vector3d x = field_.point(t, bary);
+Eigen::Vector3d PatchRecovery3D::H_at(std::size_t t, const std::array<double, 4>& bary,
+                                      const Eigen::Vector3d& x) const {
   Eigen::Vector3d h = G(t, bary);
-  const CoilSource3D* src = problem.source;
+  const CoilSource3D* src = field_.problem().source;
   if (src && src->active() && !src->is_total(t))
     h += src->field->H(x);
-  return field_.B_of_H(t, x, h);
+  return h;
+}
+
+Eigen::Vector3d PatchRecovery3D::H(std::size_t t, const std::array<double, 4>& bary) const {
+  return H_at(t, bary, field_.point(t, bary));
+}
+
+Eigen::Vector3d PatchRecovery3D::B(std::size_t t, const std::array<double, 4>& bary) const {
+  const Eigen::Vector3d x = field_.point(t, bary);
+  return field_.B_of_H(t, x, H_at(t, bary, x));
 }
 
 } // namespace magfem

@@ -70,8 +70,10 @@ public:
   // The element's own G_h = -grad phi_h (A/m) at bary of tet t: H_h less the coils' H_s in
   // reduced regions.
   Eigen::Vector3d G_h(std::size_t t, const std::array<double, 4>& bary) const;
-  // Recovered B* (T) at a point x of tet t (not a shell tet): the region's law applied to
-  // G* plus (reduced regions) the coils' H_s at x.
+  // Recovered H* (A/m) at bary of tet t (not a shell tet): G* plus (reduced regions) the
+  // coils' H_s at the point.
+  Eigen::Vector3d H(std::size_t t, const std::array<double, 4>& bary) const;
+  // Recovered B* (T) at bary of tet t (not a shell tet): the region's law applied to H*.
   Eigen::Vector3d B(std::size_t t, const std::array<double, 4>& bary) const;
 
   const Field3D& field() const { return field_; }
@@ -81,6 +83,9 @@ public:
 
 private:
   void build_slots();
+  // H* at bary of tet t, x the point (physical).
+  Eigen::Vector3d H_at(std::size_t t, const std::array<double, 4>& bary,
+                       const Eigen::Vector3d& x) const;
   void keep_radial_at_infinity();    // n x G* = 0 on the open boundary's outer sphere
   int slot(int dof, int part) const; // -1 if region part does not touch dof
   // The slot of region `part` at `dof` for a tet of that region holding the DOF.

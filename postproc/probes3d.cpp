@@ -66,9 +66,12 @@ std::vector<Eigen::Vector3d> probe_points_3d(const ProbeSpec& probe) {
   return pts;
 }
 
-ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
-                           const ProbeSpec& probe, double length_unit,
-                           const RecoveredB3D* recovered) {
+namespace {
+
+// B_at(tet, bary): the field the probe reads (see the header).
+template <class BAt>
+ProbeTable sample_probe(const Field3D& field, const PointLocator3D& locator, const ProbeSpec& probe,
+                        double length_unit, const BAt& B_at) {
   const std::vector<Eigen::Vector3d> pts = probe_points_3d(probe);
   ProbeTable table;
   table.name = probe.name;
@@ -89,8 +92,7 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
     const auto loc = locator.locate(pts[k]);
     if (!loc)
       throw std::runtime_error("probe '" + probe.name + "': point outside the mesh");
-    const Eigen::Vector3d b = loc->b_map * (recovered ? recovered->at(loc->tet, loc->bary)
-                                                      : field.B(loc->tet, loc->bary));
+    const Eigen::Vector3d b = loc->b_map * B_at(loc->tet, loc->bary);
     const double region = field.problem().mesh->tet_part[loc->tet];
     const Eigen::Vector3d x = pts[k] / length_unit;
     if (plane) {
@@ -108,6 +110,25 @@ ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
                           b.dot(s[k].e_phi), region});
   }
   return table;
+}
+
+} // namespace
+
+ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
+                           const ProbeSpec& probe, double length_unit,
+                           const RecoveredB3D* recovered) {
+  return sample_probe(field, locator, probe, length_unit,
+                      [&](std::size_t t, const std::array<double, 4>& bary) {
+                        return recovered ? recovered->at(t, bary) : field.B(t, bary);
+                      });
+}
+
+ProbeTable sample_probe_3d(const Field3D& field, const PointLocator3D& locator,
+                           const ProbeSpec& probe, double length_unit,
+                           const PatchRecovery3D& recovery) {
+  return sample_probe(
+      field, locator, probe, length_unit,
+      [&](std::size_t t, const std::array<double, 4>& bary) { return recovery.B(t, bary); });
 }
 
 } // namespace magfem

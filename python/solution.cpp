@@ -148,10 +148,10 @@ Eigen::Vector3d Solution::field_3d(const Eigen::Vector3d& x, bool want_H) const 
   const auto loc = locator3d_->locate(x);
   if (!loc)
     return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-  // B as the probes read it (the recovered B of the point's region, probes3d.hpp); H has no
-  // recovered counterpart, so it is the element's own.
-  return loc->b_map * (want_H ? run3d_->field->H(loc->tet, loc->bary)
-                              : run3d_->recovered_B.at(loc->tet, loc->bary));
+  // B as the probes read it, and H with it: the patch recovery of the point's region
+  // (probes3d.hpp).
+  const PatchRecovery3D& recovery = *run3d_->recovery;
+  return loc->b_map * (want_H ? recovery.H(loc->tet, loc->bary) : recovery.B(loc->tet, loc->bary));
 }
 
 py::array_t<double> Solution::field_at(const py::array_t<double>& points_m, bool want_H) {

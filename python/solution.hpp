@@ -33,7 +33,7 @@ public:
   pybind11::dict probes() const;         // name -> {column: numpy array}
   // B (T) or H (A/m) at N x 3 points in metres, N x 3 Cartesian out; NaN rows outside the
   // meshed physical domain. Planar: z ignored. Axisymmetric: r = hypot(x, y) about the z axis.
-  // 3D B is the recovered B (RecoveredB3D), as the probe CSVs; 3D H is the element field.
+  // 3D B and H are the patch-recovered fields (PatchRecovery3D), as the probe CSVs.
   pybind11::array_t<double> field_at(const pybind11::array_t<double>& points_m, bool want_H);
   pybind11::dict mesh() const;
   // The command line's outputs (write_outputs_2d/3d) into `dir`; returns the files written.

@@ -11,6 +11,7 @@
 
 #include "core/constants.hpp"
 #include "pipeline/adapt3d.hpp"
+#include "postproc/point_locator3d.hpp"
 #include "postproc/probes3d.hpp"
 #include "tests/case_helpers.hpp"
 
@@ -33,9 +34,8 @@ Eigen::Vector3d dipole_B(const Eigen::Vector3d& x) {
   return a * a * a / 3 * (3 * rhat.z() * rhat - z) / (r * r * r);
 }
 
-// rms |B_h - B| over the table's points relative to its rms |B| (%).
-double true_probe_error_pct(const Run3D& run) {
-  const ProbeTable& t = run.probes.at(0);
+// rms |B_written - B| over a table's points relative to its rms |B| (%).
+double true_table_error_pct(const Run3D& run, const ProbeTable& t) {
   const std::size_t x = t.column("x"), bx = t.column("Bx");
   double err2 = 0, b2 = 0;
   for (const auto& row : t.rows) {
@@ -48,6 +48,20 @@ double true_probe_error_pct(const Run3D& run) {
   return 100 * std::sqrt(err2 / b2);
 }
 
+// The true error of the table `magfem solve` writes (the patch-recovered B*, probes3d.hpp).
+double true_probe_error_pct(const Run3D& run) {
+  return true_table_error_pct(run, run.probes.at(0));
+}
+
+// The true error of the element field B_h at the table's points: what the probe's estimate
+// (the tets' rms of |B* - B_h|, postproc/probe_error3d.hpp) estimates. The written B* is one
+// order better, so the estimate bounds the written table's error from above.
+double true_element_error_pct(const Run3D& run) {
+  const PointLocator3D locator(run.mesh);
+  return true_table_error_pct(
+      run, sample_probe_3d(*run.field, locator, run.spec.probes.at(0), run.spec.length_unit));
+}
+
 std::unique_ptr<Run3D> solve_with(const CaseSpec& spec, std::vector<SizeSample3D> sizes) {
   return test::solve_with_sizes_3d(spec, std::move(sizes));
 }
@@ -56,17 +70,18 @@ std::unique_ptr<Run3D> solve_with(const CaseSpec& spec, std::vector<SizeSample3D
 
 // One pass planned from the same coarse first mesh two ways: with the probe's goal (energy
 // aimed at 0.1 %, the probe at 0.5 % rms pointwise) and by the energy alone, aimed low enough
-// (0.0125 %) to spend more unknowns. Measured (order 2): first mesh 22.1k unknowns, probe
-// error 2.17 % true, 4.04 % estimated; goal 69.3k unknowns, 0.46 % true, 0.62 % estimated
-// (before the probe points were sources: 66.1k, 0.70 %, 1.03 %); energy alone 107k unknowns,
-// 0.75 % true (at 84k 0.99 %, at 139k 0.61 %). So the goal beats the energy rule's error with
+// (0.0125 %) to spend more unknowns. Measured (order 2; true: the written, patch-recovered
+// table): first mesh 22.1k unknowns, probe error 1.46 % true, 3.98 % estimated; goal 69.3k
+// unknowns, 0.100 % true, 0.63 % estimated; energy alone 108k unknowns, 0.21 % true. (With the
+// nodal averages written: 2.17, 0.46 and 0.75 %.) So the goal beats the energy rule's error with
 // 1.5x fewer unknowns; asserted: 1.5x fewer and a lower error (the meshes are deterministic).
 // Planted: the probe rule not applied (apply_probe_rule returning at once): the goal pass is
 // the energy's 0.1 % pass, 52k unknowns and 1.41 % true, and the error comparison fails.
 // The estimate's effectivity (estimated / true, both rms over the 40 points) is held to
-// issue 29's 3x both ways on both meshes: it is the tet's rms of |B* - B_h| where the probe
-// reads the recovered nodal B, an upper-side estimate (measured 1.86 and 1.35). Planted: mu
-// dropped from e_K (1658x).
+// issue 29's 3x both ways on both meshes against the error of the element field, which it
+// estimates (the tet's rms of |B* - B_h|; measured 1.14 and 1.11); the written table, the
+// patch recovery, is one order better and the estimate bounds its error (measured 2.7x and
+// 6.3x above it). Planted: mu dropped from e_K (1658x).
 TEST(Adapt3DProbe, GoalRefinesAtTheProbeAndItsEstimateHolds) {
   const CaseSpec spec = probe_spec();
   const auto quantities = resolve_adapt_quantities(spec);
@@ -85,10 +100,18 @@ TEST(Adapt3DProbe, GoalRefinesAtTheProbeAndItsEstimateHolds) {
   EXPECT_LE(1.5 * goal->dofs->n_dofs(), energy->dofs->n_dofs());
   EXPECT_LT(goal_true, energy_true);
   for (const Run3D* run : {first.get(), goal.get()}) {
-    const double effectivity =
-        probe_goals_3d(*run, quantities)[0].error_pct / true_probe_error_pct(*run);
+    const double estimate = probe_goals_3d(*run, quantities)[0].error_pct;
+    const double effectivity = estimate / true_element_error_pct(*run);
+    std::cout << run->dofs->n_dofs() << " unknowns: estimate " << estimate << " %, element field "
+              << true_element_error_pct(*run) << " %, written " << true_probe_error_pct(*run)
+              << " %\n";
     EXPECT_GT(effectivity, 1.0 / 3);
     EXPECT_LT(effectivity, 3.0);
+    EXPECT_LE(true_probe_error_pct(*run), estimate);
+    // The written table is the patch recovery, one order better than the element field:
+    // measured 0.42x and 0.17x its error on the two meshes. Planted: the pipeline writing the
+    // nodal averages (RecoveredB3D) instead: 0.62x and 0.81x -> fails.
+    EXPECT_LT(true_probe_error_pct(*run), 0.5 * true_element_error_pct(*run));
   }
 }
 
@@ -106,30 +129,38 @@ CaseSpec sphere_table_spec() {
   return read_case(test::write_temp_case("adapt3d_probe_sphere_table.yaml", text));
 }
 
-// The loop from the coarse start to the spec's accuracy: the passes it took, the true error
-// of the last one and its estimate, both honest.
-void expect_one_jump(const CaseSpec& spec, std::size_t max_unknowns) {
+// The loop from the coarse start, stopped after its first refinement (max_passes 2): that
+// pass must reach the spec's accuracy by its own one-mesh estimate, the local error of the
+// table (ProbeGoal3D), and in truth. The loop's own estimate is not asserted below the target
+// here: it is floored by the table's change from the coarse pass (adapt_loop.hpp), and the
+// coarse pass's patch-recovered table is 1 % off in its rms |B| (0.3080 against 0.3050 T),
+// so the loop checks with a third pass what the second already met (its estimate is then at
+// least that floor: asserted as the loop's rule).
+void expect_one_jump(CaseSpec spec, std::size_t max_unknowns) {
   const double target = spec.adapt.accuracy_pct;
+  spec.adapt.max_passes = 2;
   const auto run = run_adaptive_3d(spec, {});
   ASSERT_TRUE(run->adapt);
   const auto& passes = run->adapt->passes;
-  const double estimated = passes.back().quantity_error_pct.at(0),
-               truth = true_probe_error_pct(*run);
-  std::cout << passes.size() << " passes, " << passes.back().unknowns << " unknowns: " << estimated
-            << " % estimated, " << truth << " % true\n";
-  EXPECT_TRUE(run->adapt->converged);
-  EXPECT_EQ(passes.size(), 2u);
-  EXPECT_LE(estimated, target);
+  ASSERT_EQ(passes.size(), 2u);
+  const double local = probe_goals_3d(*run, resolve_adapt_quantities(spec)).at(0).error_pct;
+  const double truth = true_probe_error_pct(*run), element_truth = true_element_error_pct(*run);
+  std::cout << passes.back().unknowns << " unknowns: " << local << " % estimated (local), "
+            << passes.back().quantity_error_pct.at(0) << " % (the loop's), " << truth
+            << " % true (written), " << element_truth << " % true (element field)\n";
+  EXPECT_LE(local, target);
+  EXPECT_GE(passes.back().quantity_error_pct.at(0), local);
   EXPECT_LE(truth, target);
-  EXPECT_LE(truth, 3 * estimated);
-  EXPECT_LE(estimated, 3 * truth);
-  // Not overshooting: a pass whose local estimate (the table's e_K, ProbeGoal3D) lands at e
-  // below its aim spent about (aim / e)^(3/p) times the tets it needed around the points; more
-  // than 3x below the aim is a 5x waste. (The loop's estimate is floored by the change from
-  // the coarse pass and cannot show it.)
-  const double landed = probe_goals_3d(*run, resolve_adapt_quantities(spec)).at(0).error_pct;
-  std::cout << "landed at " << landed << " % (aim " << aim_below_target * target << " %)\n";
-  EXPECT_GE(landed, aim_below_target * target / 3);
+  // The estimate is the element field's local error (within issue 29's 3x both ways), and an
+  // upper bound of the written, patch-recovered table's.
+  EXPECT_LE(truth, local);
+  EXPECT_LE(element_truth, 3 * local);
+  EXPECT_LE(local, 3 * element_truth);
+  // Not overshooting: a pass whose local estimate lands at e below its aim spent about
+  // (aim / e)^(3/p) times the tets it needed around the points; more than 3x below the aim is
+  // a 5x waste.
+  std::cout << "landed at " << local << " % (aim " << aim_below_target * target << " %)\n";
+  EXPECT_GE(local, aim_below_target * target / 3);
   EXPECT_LE(std::size_t(passes.back().unknowns), max_unknowns);
 }
 
@@ -137,18 +168,17 @@ void expect_one_jump(const CaseSpec& spec, std::size_t max_unknowns) {
 
 // The probe points as sources sized in one jump (adapt3d.hpp): from the 22k-unknown start
 // the example's patch (40 points, 0.5 %) is reached on the first refinement. Measured: pass 2
-// 64.0k unknowns, 0.325 % estimated, 0.24 % true (rms of |B_h - B| over |B|); the zone rule
-// alone took 3 passes to 96.0k (0.296 % estimated). Planted: the point sources left out (3
-// passes, 96.0k: the pass count and the unknowns fail); their exponent 2/p instead of 1/p (the
-// jump squared: 234k unknowns, 0.034 % true, 0.28 % estimated: the unknowns, the effectivity
-// and the landing bound fail).
+// 63.8k unknowns, 0.30 % estimated, 0.055 % true (the element field 0.34 %); the zone rule
+// alone took 3 passes to 96.0k (0.296 % estimated). Planted: the point sources left out;
+// their exponent 2/p instead of 1/p (the jump squared: 234k unknowns, 0.034 % true, 0.28 %
+// estimated: the unknowns, the effectivity and the landing bound fail).
 TEST(Adapt3DProbe, PointSourcesReachThePatchInOneJump) {
   expect_one_jump(probe_spec(), 80000);
 }
 
-// Target (a) of issue 29: the whole r = 12 mm table to 0.1 %. Measured: 2 passes, 814k
-// unknowns, 0.076 % estimated, 0.056-0.061 % true per component (15 s CPU on 2 cores; the
-// zone rule alone: 4 passes to 1.33M, 55 s CPU). Asserted below 1.0M: the zone rule alone
+// Target (a) of issue 29: the whole r = 12 mm table to 0.1 %. Measured: pass 2 807k
+// unknowns, 0.064 % estimated, 0.031 % true (the element field 0.073 %); the zone rule alone
+// took 4 passes to 1.33M. Asserted below 1.0M: the zone rule alone
 // would need 1.33M. Long (15-40 s on a shared machine).
 TEST(Adapt3DProbe, LongSphereTableToAPointOnePercentInOneJump) {
   expect_one_jump(sphere_table_spec(), 1000000);

@@ -17,8 +17,8 @@ namespace {
 const double nan = std::numeric_limits<double>::quiet_NaN();
 
 // Three passes of a quantity converging like 10, 10.5, 10.501 (energy already within the
-// target), each pass's one-mesh estimate `mesh_pct`.
-AdaptHistory three_passes(double accuracy_pct, double mesh_pct) {
+// target), each pass's one-mesh estimate `mesh_pct`, an upper bound if `bound`.
+AdaptHistory three_passes(double accuracy_pct, double mesh_pct, bool bound = false) {
   AdaptSpec spec;
   spec.accuracy_pct = accuracy_pct;
   spec.quantities = {"forces.f.force"};
@@ -26,7 +26,8 @@ AdaptHistory three_passes(double accuracy_pct, double mesh_pct) {
   const double values[] = {10.0, 10.5, 10.501};
   AdaptSteps steps;
   steps.solve = [&](int pass) {
-    return AdaptMeasure{1000u * pass, 2000 * pass, 1.0, 1e-4, {values[pass - 1]}, {mesh_pct}};
+    return AdaptMeasure{1000u * pass,       2000 * pass, 1.0,    1e-4,
+                        {values[pass - 1]}, {mesh_pct},  {bound}};
   };
   steps.plan = [](double, bool) { return AdaptPlan{1e3, ""}; };
   return run_adapt_loop(spec, steps, {});
@@ -49,6 +50,19 @@ TEST(AdaptLoop, AQuantitysErrorIsNeverBelowItsOneMeshEstimate) {
   EXPECT_TRUE(std::isnan(floored.passes[0].quantity_error_pct[0]));
   // A one-mesh estimate below the extrapolated change does not lower it.
   EXPECT_NEAR(three_passes(0.3, 1e-6).passes[1].quantity_error_pct[0], 100 * 0.5 / 10.5, 1e-12);
+}
+
+// A one-mesh estimate that bounds the quantity's error (a 3D probe table's, adapt_loop.hpp)
+// is its estimate alone, from the second pass on: the change from the coarser pass (5 % from
+// pass 1 to 2) does not floor it. Planted: the bound ignored (the larger taken) -> pass 2
+// reads 4.76 % and fails.
+TEST(AdaptLoop, AnUpperBoundOneMeshEstimateIsTheEstimateAlone) {
+  const AdaptHistory bounded = three_passes(0.3, 0.2, true);
+  EXPECT_TRUE(std::isnan(bounded.passes[0].quantity_error_pct[0]));
+  ASSERT_GE(bounded.passes.size(), 2u);
+  EXPECT_DOUBLE_EQ(bounded.passes[1].quantity_error_pct[0], 0.2);
+  EXPECT_TRUE(bounded.converged);
+  EXPECT_EQ(bounded.passes.size(), 2u);
 }
 
 // A quantity whose error falls like C h^p (h ~ triangles^(-1/2), P2 elements) for every
