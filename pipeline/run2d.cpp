@@ -179,10 +179,10 @@ public:
   EnergySummary2D summarize_energy(const std::vector<std::string>& names) const {
     return summarize_energy_2d(*run_.field, names);
   }
-  void recover() const {}
+  void recover() const { run_.recovery = std::make_unique<PatchRecovery2D>(*run_.field); }
   PointLocator2D probe_locator() const { return PointLocator2D(run_.mesh); }
   ProbeTable sample_probe(const PointLocator2D& locator, const ProbeSpec& probe) const {
-    return sample_probe_2d(*run_.field, locator, probe, run_.spec.length_unit);
+    return sample_probe_2d(*run_.field, locator, probe, run_.spec.length_unit, run_.recovery.get());
   }
   SectionFlux integrate_section(const SectionSpec& section) const {
     const double depth = run_.spec.stack_length > 0 ? run_.spec.stack_length : 1.0;

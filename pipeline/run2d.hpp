@@ -21,6 +21,7 @@
 #include "postproc/energy2d.hpp"
 #include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
+#include "postproc/patch_recovery2d.hpp"
 #include "postproc/probe_table.hpp"
 #include "postproc/section_flux2d.hpp"
 #include "solver/dof_map2d.hpp"
@@ -78,6 +79,8 @@ struct Run2D {
   int free_unknowns = 0; // the DOFs the system solves for: dofs less those boundary values fix
   Problem2D problem;
   std::unique_ptr<Field2D> field;
+  // The superconvergent patch recovery of `field`: what the probes read (and the Python B).
+  std::unique_ptr<PatchRecovery2D> recovery;
   NewtonReport report;
   EnergySummary2D energy;
   ErrorEstimate2D error_estimate; // ZZ estimate of the discretisation error (error_estimate2d.hpp)

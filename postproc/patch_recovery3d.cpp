@@ -5,12 +5,11 @@
 #include <limits>
 #include <utility>
 
-#include <Eigen/Cholesky>
-
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
 #include "mesh/vertex_tets3d.hpp"
 #include "postproc/element_field3d.hpp"
+#include "postproc/patch_fit.hpp"
 #include "solver/coil_source3d.hpp"
 #include "solver/tet_lagrange.hpp"
 #include "solver/tet_quadrature.hpp"
@@ -19,78 +18,8 @@ namespace magfem {
 namespace {
 
 constexpr int no_part = std::numeric_limits<int>::min(); // tet_part values are >= -2
-constexpr int max_terms = 10;                            // a quadratic in three variables
-using Coefficients = Eigen::Matrix<double, max_terms, 3>;
-using Basis = Eigen::Matrix<double, max_terms, 1>;
-
-int n_terms(int degree) {
-  return degree == 0 ? 1 : degree == 1 ? 4 : 10;
-}
-
-// Monomials of degree <= 2 in xi (unused entries zero).
-Basis monomials(const Eigen::Vector3d& xi, int degree) {
-  Basis m = Basis::Zero();
-  m[0] = 1;
-  if (degree >= 1)
-    m.segment<3>(1) = xi;
-  if (degree >= 2)
-    m.segment<6>(4) << xi.x() * xi.x(), xi.y() * xi.y(), xi.z() * xi.z(), xi.x() * xi.y(),
-        xi.x() * xi.z(), xi.y() * xi.z();
-  return m;
-}
-
-// One patch fit: the polynomial about `center` in units of `scale`.
-struct PatchFit {
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  double scale = 1;
-  int degree = 0;
-  Coefficients c = Coefficients::Zero();
-
-  Eigen::Vector3d at(const Eigen::Vector3d& x) const {
-    return c.transpose() * monomials((x - center) / scale, degree);
-  }
-};
-
-struct Sample {
-  Eigen::Vector3d x, g;
-  double w = 0;
-};
-
-// Weighted least squares (weights: quadrature weight x volume, so that the fit is the L2
-// projection on the patch and small tets do not count more than large ones). Falls back to
-// lower degrees when the points do not determine the polynomial (a pivot below 1e-10 of the
-// largest: points on a plane, as in a patch of one flat layer).
-PatchFit fit(const std::vector<Sample>& samples, const Eigen::Vector3d& center, int degree) {
-  PatchFit f;
-  f.center = center;
-  double r = 0;
-  for (const auto& s : samples)
-    r = std::max(r, (s.x - center).norm());
-  f.scale = r > 0 ? r : 1;
-  // Fixed-size normal equations of the full quadratic basis (hundreds of samples per patch,
-  // tens of thousands of patches: no heap per sample); a lower degree solves the leading
-  // block (the basis is ordered by degree).
-  Eigen::Matrix<double, max_terms, max_terms> a =
-      Eigen::Matrix<double, max_terms, max_terms>::Zero();
-  Coefficients b = Coefficients::Zero();
-  for (const auto& s : samples) {
-    const Basis m = monomials((s.x - center) / f.scale, degree);
-    a.selfadjointView<Eigen::Lower>().rankUpdate(m, s.w);
-    b.noalias() += s.w * m * s.g.transpose();
-  }
-  a.triangularView<Eigen::StrictlyUpper>() = a.transpose();
-  for (; degree >= 0; --degree) {
-    const int n = n_terms(degree);
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(a.topLeftCorner(n, n));
-    const Eigen::VectorXd d = ldlt.vectorD();
-    if (ldlt.info() != Eigen::Success || d.minCoeff() <= 1e-10 * d.maxCoeff())
-      continue;
-    f.degree = degree;
-    f.c.topRows(n) = ldlt.solve(b.topRows(n));
-    return f;
-  }
-  return f; // no samples: zero (cannot happen for a slot, which has a tet)
-}
+using Fit = PatchFit<3>;
+using Sample = Fit::Sample;
 
 } // namespace
 
@@ -210,7 +139,7 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
 
   // One fit per (vertex, region): vertex slots come first (DOFs 0 .. n_vertices - 1).
   const int degree = dofs.order();
-  std::vector<PatchFit> fits(first_[n_vertices]);
+  std::vector<Fit> fits(first_[n_vertices]);
   std::atomic<std::size_t> degraded{0};
   parallel_blocks(n_vertices, 512, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     std::vector<int> patch;
@@ -235,7 +164,7 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
         pts.clear();
         for (int t : patch)
           add_samples(static_cast<std::size_t>(t), pts);
-        fits[s] = fit(pts, mesh.nodes[v], degree);
+        fits[s] = Fit::fit(pts, mesh.nodes[v], degree);
         if (fits[s].degree < degree)
           ++degraded;
       }

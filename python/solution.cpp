@@ -133,7 +133,7 @@ Eigen::Vector3d Solution::field_2d(const Eigen::Vector3d& x, bool want_H) const 
     return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   const Field2D& field = *run2d_->field;
   // Beyond a symmetry plane: H from B at the mirror image, both mapped back the same way.
-  const Eigen::Vector2d b = field.B(loc->triangle, loc->bary);
+  const Eigen::Vector2d b = run2d_->recovery->B(loc->triangle, loc->bary); // as the probes
   const Eigen::Vector2d v =
       loc->b_map *
       (want_H ? field.H(loc->triangle, fold_point_2d(run2d_->mesh.symmetry, q).point, b) : b);

@@ -12,6 +12,8 @@
 
 #include "pipeline/run2d.hpp"
 #include "pipeline/run3d.hpp"
+#include "postproc/point_locator2d.hpp"
+#include "postproc/probes2d.hpp"
 #include "tests/test_paths.hpp"
 
 namespace magfem::test {
@@ -151,6 +153,15 @@ inline const ProbeTable& probe(const Run2D& run, const std::string& name) {
   for (const auto& p : run.probes)
     if (p.name == name)
       return p;
+  throw std::runtime_error("no probe " + name);
+}
+
+// The probe `name` of a 2D run read from the element field itself instead of the patch
+// recovery the pipeline writes (to compare the two).
+inline ProbeTable element_probe(const Run2D& run, const std::string& name) {
+  for (const auto& p : run.spec.probes)
+    if (p.name == name)
+      return sample_probe_2d(*run.field, PointLocator2D(run.mesh), p, run.spec.length_unit);
   throw std::runtime_error("no probe " + name);
 }
 

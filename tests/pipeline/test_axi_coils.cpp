@@ -265,8 +265,10 @@ TEST(AxiCoils, CylinderMagnetOnAxisFieldEqualsTheClosedForm) {
   std::cout << "cylinder magnet on the axis: max |B_z - exact| " << err << " T (of "
             << 0.5 * b_r * 2 * half / std::hypot(2 * half, radius) << " T at the centre)\n";
   // B on the axis jumps nowhere, but dB_z/dz is discontinuous at the end faces, where the
-  // P2 element field is least accurate; measured 1.6e-3 T. Tolerance 5e-3 T (0.9 % of B(0)).
-  EXPECT_LT(err, 5e-3);
+  // P2 element field is least accurate (measured 1.6e-3 T); the probe reads the patch
+  // recovery, fitted per region on each side of the faces: measured 3.9e-5 T. Tolerance
+  // 2e-4 T (5x; the element field's error fails it).
+  EXPECT_LT(err, 2e-4);
 }
 
 TEST(AxiCoils, RevolvedVtuSweepsTheWindingIntoItsRing) {

@@ -121,16 +121,21 @@ TEST(AxiSphere, ConvergenceRatesMatchTheory) {
   // refined with the elements; B = curl A loses one order, so the pointwise B error is O(h)
   // for P1 and O(h^2) for P2 (also the order of the polygonal ball's sagitta). Asserted on the
   // finest pair with a margin of 0.25 for unstructured, non-nested refinement. The energy
-  // error is printed besides (O(h^2) for both: the polygonal ball dominates it).
+  // error is printed besides (O(h^2) for both: the polygonal ball dominates it). Those are
+  // the element field's rates; the probe CSV holds the patch recovery (patch_recovery2d.hpp),
+  // whose error must stay below the element field's on every mesh (the polygon's O(h^2)
+  // bounds both here; measured written / element on the finest mesh: 0.105 for P1, 0.91 for P2).
   const double exact = exact_energy();
   for (const int order : {1, 2}) {
-    std::vector<double> err;
+    std::vector<double> err, written;
     for (const double scale : {1.0, 0.5, 0.25}) {
       const auto run = run_sphere(order, scale, true);
       const double unit = run->spec.length_unit;
-      err.push_back(probe_rms_error(test::probe(*run, "arc15"), unit));
+      err.push_back(probe_rms_error(test::element_probe(*run, "arc15"), unit));
+      written.push_back(probe_rms_error(test::probe(*run, "arc15"), unit));
       std::cout << "P" << order << " scale " << scale << ": " << run->dofs->n_dofs()
-                << " dofs, arc15 rms error " << err.back() << ", energy error "
+                << " dofs, arc15 rms error " << err.back() << " element, " << written.back()
+                << " written (recovered), energy error "
                 << std::abs(run->energy.total_J_per_m - exact) / exact << "\n";
     }
     const double rate1 = std::log2(err[0] / err[1]), rate2 = std::log2(err[1] / err[2]);
@@ -138,6 +143,8 @@ TEST(AxiSphere, ConvergenceRatesMatchTheory) {
     EXPECT_GT(rate2, order - 0.25) << "order " << order;
     EXPECT_LT(rate2, order + 0.6) << "order " << order;
     EXPECT_GT(rate1, 0.5 * order) << "order " << order;
+    for (std::size_t i = 0; i < err.size(); ++i)
+      EXPECT_LT(written[i], err[i]) << "order " << order << ", level " << i;
   }
 }
 

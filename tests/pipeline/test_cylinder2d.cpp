@@ -81,21 +81,34 @@ TEST(Cylinder2D, EnergyEqualsTheExactFieldEnergy) {
 
 TEST(Cylinder2D, ConvergenceRatesMatchTheory) {
   // Uniform refinement (all sizes halved twice). B = curl A loses one order: the pointwise
-  // error of B is O(h) for order 1 and O(h^2) for order 2. The coarsest pair is
+  // error of the element B is O(h) for order 1 and O(h^2) for order 2. The coarsest pair is
   // pre-asymptotic (the boundary polygon has few chords), so the rate is asserted on the
-  // finest pair, with a margin of 0.25 for unstructured, non-nested refinement.
+  // finest pair, with a margin of 0.25 for unstructured, non-nested refinement. The probe CSV
+  // holds the patch recovery (postproc/patch_recovery2d.hpp), one order better on a smooth
+  // field, but here the magnet's polygon (chords scaled with h^2, straight triangles) puts an
+  // O(h^2) geometry error into every field: measured on the finest pair, recovered rates 1.28
+  // (order 1) and 2.00 (order 2), errors 0.089x and 0.41x the element field's. Asserted: the
+  // element field's rate, and at most half its error on the finest mesh.
   for (int order : {1, 2}) {
-    std::vector<double> err;
+    std::vector<double> err, written;
     for (double scale : {1.0, 0.5, 0.25}) {
       const auto run = run_cylinder({order, 2 * scale, 0}, true);
-      err.push_back(probe_error(test::probe(*run, "r12"), run->spec.length_unit).rms_rel);
+      err.push_back(probe_error(test::element_probe(*run, "r12"), run->spec.length_unit).rms_rel);
+      written.push_back(probe_error(test::probe(*run, "r12"), run->spec.length_unit).rms_rel);
     }
     const double rate1 = std::log2(err[0] / err[1]), rate2 = std::log2(err[1] / err[2]);
-    std::cout << "order " << order << ": errors " << err[0] << " " << err[1] << " " << err[2]
-              << ", rates " << rate1 << " " << rate2 << "\n";
+    const double written_rate = std::log2(written[1] / written[2]);
+    std::cout << "order " << order << ": element errors " << err[0] << " " << err[1] << " "
+              << err[2] << ", rates " << rate1 << " " << rate2 << "; written (recovered) "
+              << written[0] << " " << written[1] << " " << written[2] << ", rate " << written_rate
+              << "\n";
     EXPECT_GT(rate2, order - 0.25) << "order " << order;
     EXPECT_LT(rate2, order + 0.6) << "order " << order;
     EXPECT_GT(rate1, 0.5 * order) << "order " << order; // and already converging
+    EXPECT_GT(written_rate, order - 0.25) << "order " << order;
+    EXPECT_LT(written[2], 0.5 * err[2]) << "order " << order;
+    for (std::size_t i = 0; i < err.size(); ++i)
+      EXPECT_LT(written[i], err[i]) << "order " << order << ", level " << i;
   }
 }
 

@@ -18,7 +18,7 @@ import magfem
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from test_solve import EXE, but_times, example  # noqa: E402
 
-SOLENOID = example("axi/solenoid_adaptive.yaml")  # asks for 0.01 %: four passes
+SOLENOID = example("axi/solenoid_adaptive.yaml")  # asks for 0.01 %: two passes
 
 
 def cli_summary(case_path, *options):
@@ -57,8 +57,8 @@ class Accuracy(unittest.TestCase):
         self.assertEqual(adapt["accuracy_pct"], 0.05)  # not the case's 0.01
         self.assertTrue(adapt["converged"])
         self.assertEqual(self.warned, [])
-        # 0.05 % is met on the second pass (the case's own 0.01 % takes four): the energy by
-        # the estimator, the axis field by the change between the passes.
+        # 0.05 % is met on the second pass (the case's own 0.01 % too): the energy by the
+        # estimator, the axis field by the change between the passes.
         self.assertEqual(len(adapt["passes"]), 2)
         for quantity in ("energy", "probes.axis"):
             self.assertLessEqual(adapt["estimates"][quantity]["error_pct"], 0.05, quantity)
@@ -73,12 +73,13 @@ class Accuracy(unittest.TestCase):
 
 
 class MaxPasses(unittest.TestCase):
-    """max_passes=2 under the case's 0.01 %: stops early, warns, returns the last pass."""
+    """max_passes=1 under the case's 0.01 % (met on pass 2): stops early, warns, returns the
+    last pass."""
 
     @classmethod
     def setUpClass(cls):
-        cls.sol, cls.warned = solve_quietly(magfem.Case.load(SOLENOID), max_passes=2)
-        cls.cli = cli_summary(SOLENOID, "--max-passes", "2")
+        cls.sol, cls.warned = solve_quietly(magfem.Case.load(SOLENOID), max_passes=1)
+        cls.cli = cli_summary(SOLENOID, "--max-passes", "1")
 
     def test_summary_is_the_command_lines_but_times(self):
         self.assertEqual(but_times(self.sol.summary), but_times(self.cli))
@@ -86,10 +87,10 @@ class MaxPasses(unittest.TestCase):
     def test_the_limit_warns_and_is_not_converged(self):
         adapt = self.sol.adapt
         self.assertFalse(adapt["converged"])
-        self.assertEqual(len(adapt["passes"]), 2)
-        self.assertIn("max_passes (2) reached", adapt["stop_reason"])
+        self.assertEqual(len(adapt["passes"]), 1)
+        self.assertIn("max_passes (1) reached", adapt["stop_reason"])
         self.assertEqual(len(self.warned), 1)
-        self.assertIn("max_passes (2) reached", str(self.warned[0].message))
+        self.assertIn("max_passes (1) reached", str(self.warned[0].message))
         self.assertIn(str(self.warned[0].message), self.sol.summary["warnings"])
 
     def test_max_unknowns_stops_too(self):

@@ -1,0 +1,69 @@
+#pragma once
+// Superconvergent patch recovery (Zienkiewicz-Zhu SPR) of B in 2D and axisymmetric solutions,
+// per region: what the probes read (probes2d.hpp), as PatchRecovery3D is in 3D.
+//
+// Why not the element field: B_h = curl A_h is discontinuous across elements and O(h^p) for
+// order p; why not Field2D::recovered_B's nodal averages: they mix materials at region
+// boundaries (B_t jumps by mu_r) and, for order 2, do not gain an order (the P2 element
+// field's derivative error at an element's DOF nodes does not cancel in an average; see
+// patch_recovery3d.hpp). A least-squares fit of a polynomial of the element's degree p to
+// B_h at interior points of a patch of elements is a local L2 projection: the element-scale
+// oscillation of the error averages out and the fit carries the smooth field to O(h^(p+1))
+// (Zienkiewicz & Zhu 1992, IJNME 33). Cylinder2D.ConvergenceRatesMatchTheory asserts the
+// orders on the exact diametric cylinder.
+//
+// Construction: for every mesh vertex v and every region r with a triangle at v, the patch
+// is r's triangles at v (their second ring within r when fewer than min_patch_triangles, as
+// at region corners, where a one-sided patch would extrapolate); a degree-p polynomial in
+// (x - x_v) / h is fitted to B_h at the 3 interior points of the degree-2 rule of every
+// triangle of the patch (area-weighted least squares; a patch whose points do not determine
+// the polynomial falls back to a lower degree). Nodal values per (DOF, region): a vertex
+// takes its own patch's polynomial, a P2 edge node the mean of its two end vertices'
+// polynomials at the node; inside a triangle of r, B* interpolates r's nodal values with the
+// element's shape functions. A region never sees another region's field. The open-boundary
+// shell (mapped coordinates) is not recovered: probes sample the physical domain only. On the
+// axis of an axisymmetric case B_r is set to its exact zero.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "postproc/field2d.hpp"
+#include "postproc/patch_fit.hpp"
+
+namespace magfem {
+
+class PatchRecovery2D {
+public:
+  // Regions with fewer triangles at a vertex take the second ring (see above).
+  static constexpr int min_patch_triangles = 4;
+
+  // `field` (problem, mesh, DOF map) must outlive this object.
+  explicit PatchRecovery2D(const Field2D& field);
+
+  // Recovered B* (T) at bary of triangle t (not a shell triangle): planar (Bx, By),
+  // axisymmetric (Br, Bz).
+  Eigen::Vector2d B(std::size_t t, const std::array<double, 3>& bary) const;
+
+  std::size_t n_slots() const { return value_.size(); }
+  // Patches whose fit fell back to a lower degree (too few or collinear points).
+  std::size_t n_degraded() const { return n_degraded_; }
+
+private:
+  void build_slots();
+  // P2 edge nodes: the mean of their two end vertices' fits (fits: per vertex slot).
+  void set_edge_values(const std::vector<PatchFit<2>>& fits);
+  // Axisymmetric: B_r = 0 on the axis (A_phi = 0 there, curl2d.hpp), which a one-sided fit of
+  // the odd B_r misses by round-off of the fit (~1e-7 T).
+  void keep_axial_on_axis();
+  int slot(int dof, int part) const; // -1 if region `part` does not touch `dof`
+
+  const Field2D& field_;
+  std::vector<int> first_;             // per DOF: its slots first_[d] .. first_[d + 1] - 1
+  std::vector<int> part_;              // region of each slot
+  std::vector<Eigen::Vector2d> value_; // B* of each slot, T
+  std::size_t n_degraded_ = 0;
+};
+
+} // namespace magfem
