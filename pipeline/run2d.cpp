@@ -193,7 +193,7 @@ public:
     compute_coil_results_axi(run_, assembler, u);
   }
   void estimate_error() const {
-    run_.error_estimate = estimate_error_2d(*run_.field, run_.energy.total_J_per_m);
+    run_.error_estimate = estimate_error_2d(*run_.recovery, run_.energy.total_J_per_m);
   }
   void check_finite_fields() const {}
   void scale_to_whole_device() const { scale_to_whole_device_2d(run_); }

@@ -4,11 +4,12 @@
 //
 // Why recovery and not residuals: the P1/P2 B_h is discontinuous across elements, and the
 // exact B is smoother than B_h everywhere except across material interfaces, where only
-// B_n and H_t are continuous. Averaging B_h at the DOF points of each region separately (never
-// across an interface, where B_t jumps by mu_r) gives a recovered B* that is closer to B than
-// B_h is; B* - B_h then measures the error. Residual estimators need constants that depend on
-// the element shape and on mu_r, which would have to be tuned per problem; the recovery needs
-// none and its effectivity is tested against exact answers (tests/postproc/).
+// B_n and H_t are continuous. The superconvergent patch recovery of each region separately
+// (PatchRecovery2D, never across an interface, where B_t jumps by mu_r; the same object the
+// probes read) gives a B* that is closer to B than B_h is; B* - B_h then measures the error.
+// Residual estimators need constants that depend on the element shape and on mu_r, which
+// would have to be tuned per problem; the recovery needs none and its effectivity is tested
+// against exact answers (tests/pipeline/test_error_estimate2d.cpp).
 //
 // Per element K:
 //   eta_K^2 = integral_K (B* - B_h) . (H(B*) - H(B_h)) dV      (J/m planar, J axisymmetric)
@@ -24,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "postproc/field2d.hpp"
+#include "postproc/patch_recovery2d.hpp"
 
 namespace magfem {
 
@@ -36,7 +37,8 @@ struct ErrorEstimate2D {
   double energy_norm_error_pct = 0; // 100 * sqrt(total_eta2 / (2 W)): relative energy-norm error
 };
 
-// energy: the solution's stored energy W (J/m planar, J axisymmetric; energy2d.hpp).
-ErrorEstimate2D estimate_error_2d(const Field2D& field, double energy);
+// recovery: of the solution's field, shell included; energy: the solution's stored energy W
+// (J/m planar, J axisymmetric; energy2d.hpp).
+ErrorEstimate2D estimate_error_2d(const PatchRecovery2D& recovery, double energy);
 
 } // namespace magfem

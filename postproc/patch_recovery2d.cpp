@@ -44,11 +44,9 @@ void PatchRecovery2D::build_slots() {
   const Problem2D& problem = field_.problem();
   const Mesh2D& mesh = *problem.mesh;
   const DofMap2D& dofs = field_.dofs();
-  std::vector<std::pair<int, int>> pairs; // (DOF, region) for every non-shell triangle's DOFs
+  std::vector<std::pair<int, int>> pairs; // (DOF, region) for every triangle's DOFs
   pairs.reserve(mesh.n_triangles() * dofs.dofs_per_element());
   for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
-    if (problem.is_shell(t))
-      continue;
     const int* dof = dofs.element_dofs(t);
     for (int i = 0; i < dofs.dofs_per_element(); ++i)
       pairs.emplace_back(dof[i], mesh.triangle_part[t]);
@@ -138,8 +136,6 @@ void PatchRecovery2D::set_edge_values(const std::vector<PatchFit<2>>& fits) {
   const DofMap2D& dofs = field_.dofs();
   std::vector<char> done(part_.size(), 0);
   for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
-    if (problem.is_shell(t))
-      continue;
     const int part = mesh.triangle_part[t];
     const int* dof = dofs.element_dofs(t);
     const auto& k = mesh.triangles[t];

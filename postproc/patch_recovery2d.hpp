@@ -20,9 +20,13 @@
 // the polynomial falls back to a lower degree). Nodal values per (DOF, region): a vertex
 // takes its own patch's polynomial, a P2 edge node the mean of its two end vertices'
 // polynomials at the node; inside a triangle of r, B* interpolates r's nodal values with the
-// element's shape functions. A region never sees another region's field. The open-boundary
-// shell (mapped coordinates) is not recovered: probes sample the physical domain only. On the
-// axis of an axisymmetric case B_r is set to its exact zero.
+// element's shape functions. A region never sees another region's field. On the axis of an
+// axisymmetric case B_r is set to its exact zero.
+//
+// The open-boundary shell is a region of its own, recovered in its mapped (mesh) coordinates
+// (Field2D::B there is the curl of A in those coordinates, smooth under the radial map): the
+// error estimate (error_estimate2d.hpp) weighs B* - B_h there with the shell's metric. Probes
+// never read it (they sample the physical domain).
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -36,14 +40,19 @@ namespace magfem {
 
 class PatchRecovery2D {
 public:
-  // Regions with fewer triangles at a vertex take the second ring (see above).
-  static constexpr int min_patch_triangles = 4;
+  // Regions with fewer triangles at a vertex take the second ring (see above). Three, not
+  // more: at 4 the outline's vertices (2 or 3 triangles) took the second ring, whose wider fit
+  // smoothed over corners and the winding's edges (the error estimate's effectivity on the
+  // iron-cored solenoid, tests/pipeline/test_error_estimate2d.cpp: 1.06 -> 1.82).
+  static constexpr int min_patch_triangles = 3;
 
   // `field` (problem, mesh, DOF map) must outlive this object.
   explicit PatchRecovery2D(const Field2D& field);
 
-  // Recovered B* (T) at bary of triangle t (not a shell triangle): planar (Bx, By),
-  // axisymmetric (Br, Bz).
+  const Field2D& field() const { return field_; }
+
+  // Recovered B* (T) at bary of triangle t: planar (Bx, By), axisymmetric (Br, Bz); in a
+  // shell triangle the mapped coordinates' B, as Field2D::B gives it there.
   Eigen::Vector2d B(std::size_t t, const std::array<double, 3>& bary) const;
 
   std::size_t n_slots() const { return value_.size(); }
