@@ -40,42 +40,14 @@ struct VertexTriangles {
 
 } // namespace
 
-void PatchRecovery2D::build_slots() {
-  const Problem2D& problem = field_.problem();
-  const Mesh2D& mesh = *problem.mesh;
-  const DofMap2D& dofs = field_.dofs();
-  std::vector<std::pair<int, int>> pairs; // (DOF, region) for every triangle's DOFs
-  pairs.reserve(mesh.n_triangles() * dofs.dofs_per_element());
-  for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
-    const int* dof = dofs.element_dofs(t);
-    for (int i = 0; i < dofs.dofs_per_element(); ++i)
-      pairs.emplace_back(dof[i], mesh.triangle_part[t]);
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  first_.assign(dofs.n_dofs() + 1, 0);
-  part_.clear();
-  part_.reserve(pairs.size());
-  for (const auto& [dof, part] : pairs) {
-    ++first_[dof + 1];
-    part_.push_back(part);
-  }
-  for (int d = 0; d < dofs.n_dofs(); ++d)
-    first_[d + 1] += first_[d];
-}
-
-int PatchRecovery2D::slot(int dof, int part) const {
-  for (int s = first_[dof]; s < first_[dof + 1]; ++s)
-    if (part_[s] == part)
-      return s;
-  return -1;
-}
-
 PatchRecovery2D::PatchRecovery2D(const Field2D& field) : field_(field) {
   const Problem2D& problem = field.problem();
   const Mesh2D& mesh = *problem.mesh;
   const DofMap2D& dofs = field.dofs();
-  build_slots();
+  slots_ = RegionSlots(
+      dofs.n_dofs(), mesh.n_triangles(), dofs.dofs_per_element(),
+      [&](std::size_t t) { return dofs.element_dofs(t); },
+      [&](std::size_t t) { return mesh.triangle_part[t]; });
   const VertexTriangles around(mesh);
 
   auto add_samples = [&](int t, std::vector<Sample>& out) {
@@ -90,12 +62,12 @@ PatchRecovery2D::PatchRecovery2D(const Field2D& field) : field_(field) {
   // One fit per (vertex, region) slot of the vertex DOFs (DOFs 0 .. n_nodes - 1).
   const int degree = dofs.order();
   const int n_vertices = static_cast<int>(mesh.n_nodes());
-  std::vector<Fit> fits(first_[n_vertices]);
+  std::vector<Fit> fits(slots_.begin(n_vertices));
   std::vector<int> patch;
   std::vector<Sample> pts;
   for (int v = 0; v < n_vertices; ++v)
-    for (int s = first_[v]; s < first_[v + 1]; ++s) {
-      const int part = part_[s];
+    for (int s = slots_.begin(v); s < slots_.end(v); ++s) {
+      const int part = slots_.part(s);
       patch.clear();
       around.each(v, [&](int t) {
         if (mesh.triangle_part[t] == part)
@@ -121,9 +93,9 @@ PatchRecovery2D::PatchRecovery2D(const Field2D& field) : field_(field) {
     }
 
   // Nodal values: a vertex its own fit, an edge node the mean of its two ends' fits there.
-  value_.assign(part_.size(), Eigen::Vector2d::Zero());
+  value_.assign(slots_.size(), Eigen::Vector2d::Zero());
   for (int v = 0; v < n_vertices; ++v)
-    for (int s = first_[v]; s < first_[v + 1]; ++s)
+    for (int s = slots_.begin(v); s < slots_.end(v); ++s)
       value_[s] = fits[s].at(mesh.nodes[v]);
   if (dofs.order() >= 2)
     set_edge_values(fits);
@@ -134,19 +106,19 @@ void PatchRecovery2D::set_edge_values(const std::vector<PatchFit<2>>& fits) {
   const Problem2D& problem = field_.problem();
   const Mesh2D& mesh = *problem.mesh;
   const DofMap2D& dofs = field_.dofs();
-  std::vector<char> done(part_.size(), 0);
+  std::vector<char> done(slots_.size(), 0);
   for (std::size_t t = 0; t < mesh.n_triangles(); ++t) {
     const int part = mesh.triangle_part[t];
     const int* dof = dofs.element_dofs(t);
     const auto& k = mesh.triangles[t];
     for (int e = 0; e < 3; ++e) {
-      const int s = slot(dof[3 + e], part);
+      const int s = slots_.own_slot(dof[3 + e], part);
       if (done[s])
         continue;
       done[s] = 1;
       const Eigen::Vector2d& x = dofs.dof_points()[dof[3 + e]];
-      value_[s] = 0.5 * (fits[slot(k[triangle_edges[e][0]], part)].at(x) +
-                         fits[slot(k[triangle_edges[e][1]], part)].at(x));
+      value_[s] = 0.5 * (fits[slots_.own_slot(k[triangle_edges[e][0]], part)].at(x) +
+                         fits[slots_.own_slot(k[triangle_edges[e][1]], part)].at(x));
     }
   }
 }
@@ -156,7 +128,7 @@ void PatchRecovery2D::keep_axial_on_axis() {
   if (!problem.axisymmetric())
     return;
   for (int d : field_.dofs().dofs_on_edges(problem.mesh->axis_edges))
-    for (int s = first_[d]; s < first_[d + 1]; ++s)
+    for (int s = slots_.begin(d); s < slots_.end(d); ++s)
       value_[s].x() = 0;
 }
 
@@ -168,7 +140,7 @@ Eigen::Vector2d PatchRecovery2D::B(std::size_t t, const std::array<double, 3>& b
   const int part = field_.problem().mesh->triangle_part[t];
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
   for (int i = 0; i < count; ++i)
-    b += n[i] * value_[slot(dof[i], part)];
+    b += n[i] * value_[slots_.own_slot(dof[i], part)];
   return b;
 }
 

@@ -35,6 +35,7 @@
 
 #include "postproc/field2d.hpp"
 #include "postproc/patch_fit.hpp"
+#include "postproc/region_slots.hpp"
 
 namespace magfem {
 
@@ -60,17 +61,14 @@ public:
   std::size_t n_degraded() const { return n_degraded_; }
 
 private:
-  void build_slots();
   // P2 edge nodes: the mean of their two end vertices' fits (fits: per vertex slot).
   void set_edge_values(const std::vector<PatchFit<2>>& fits);
   // Axisymmetric: B_r = 0 on the axis (A_phi = 0 there, curl2d.hpp), which a one-sided fit of
   // the odd B_r misses by round-off of the fit (~1e-7 T).
   void keep_axial_on_axis();
-  int slot(int dof, int part) const; // -1 if region `part` does not touch `dof`
 
   const Field2D& field_;
-  std::vector<int> first_;             // per DOF: its slots first_[d] .. first_[d + 1] - 1
-  std::vector<int> part_;              // region of each slot
+  RegionSlots slots_;                  // per (DOF, region), the shell's too
   std::vector<Eigen::Vector2d> value_; // B* of each slot, T
   std::size_t n_degraded_ = 0;
 };

@@ -17,58 +17,10 @@
 namespace magfem {
 namespace {
 
-constexpr int no_part = std::numeric_limits<int>::min(); // tet_part values are >= -2
 using Fit = PatchFit<3>;
 using Sample = Fit::Sample;
 
 } // namespace
-
-void PatchRecovery3D::build_slots() {
-  const Problem3D& problem = field_.problem();
-  const Mesh3D& mesh = *problem.mesh;
-  const DofMap3D& dofs = field_.dofs();
-  const int n = dofs.dofs_per_element();
-  // As RecoveredB3D: the first region at each DOF, and (DOF, region) for any other.
-  std::vector<int> first_part(dofs.n_dofs(), no_part);
-  std::vector<std::pair<int, int>> others;
-  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    const int part = mesh.tet_part[t];
-    const int* dof = dofs.element_dofs(t);
-    for (int i = 0; i < n; ++i) {
-      int& p = first_part[dof[i]];
-      if (p == no_part)
-        p = part;
-      else if (p != part)
-        others.emplace_back(dof[i], part);
-    }
-  }
-  std::sort(others.begin(), others.end());
-  others.erase(std::unique(others.begin(), others.end()), others.end());
-  first_.assign(first_part.size() + 1, 0);
-  part_.clear();
-  std::size_t k = 0;
-  for (std::size_t d = 0; d < first_part.size(); ++d) {
-    if (first_part[d] != no_part)
-      part_.push_back(first_part[d]);
-    for (; k < others.size() && others[k].first == static_cast<int>(d); ++k)
-      part_.push_back(others[k].second);
-    first_[d + 1] = static_cast<int>(part_.size());
-  }
-}
-
-// A DOF inside one region has one slot: the asking tet's (which holds the DOF), without
-// reading the slot's region, a cache miss per DOF (3 % of benchmark32's run when every
-// lookup of the recovery read it).
-int PatchRecovery3D::own_slot(int dof, int part) const {
-  return first_[dof + 1] - first_[dof] == 1 ? first_[dof] : slot(dof, part);
-}
-
-int PatchRecovery3D::slot(int dof, int part) const {
-  for (int s = first_[dof]; s < first_[dof + 1]; ++s)
-    if (part_[s] == part)
-      return s;
-  return -1;
-}
 
 Eigen::Vector3d PatchRecovery3D::G_h(std::size_t t, const std::array<double, 4>& bary) const {
   return -ElementField3D(field_, t).at(bary).grad_phi;
@@ -79,7 +31,10 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
   const Mesh3D& mesh = *problem.mesh;
   const DofMap3D& dofs = field.dofs();
   const int n_vertices = dofs.n_vertices();
-  build_slots();
+  slots_ = RegionSlots(
+      dofs.n_dofs(), mesh.n_tets(), dofs.dofs_per_element(),
+      [&](std::size_t t) { return dofs.element_dofs(t); },
+      [&](std::size_t t) { return mesh.tet_part[t]; });
   if (threads <= 0)
     threads = element_loop_threads(mesh.n_tets());
 
@@ -139,14 +94,14 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
 
   // One fit per (vertex, region): vertex slots come first (DOFs 0 .. n_vertices - 1).
   const int degree = dofs.order();
-  std::vector<Fit> fits(first_[n_vertices]);
+  std::vector<Fit> fits(slots_.begin(n_vertices));
   std::atomic<std::size_t> degraded{0};
   parallel_blocks(n_vertices, 512, threads, [&](std::size_t, std::size_t lo, std::size_t hi) {
     std::vector<int> patch;
     std::vector<Sample> pts;
     for (std::size_t v = lo; v < hi; ++v) {
-      for (int s = first_[v]; s < first_[v + 1]; ++s) {
-        const int part = part_[s];
+      for (int s = slots_.begin(v); s < slots_.end(v); ++s) {
+        const int part = slots_.part(s);
         patch.clear();
         for (int n : around.of(v))
           if (mesh.tet_part[n] == part)
@@ -173,16 +128,16 @@ PatchRecovery3D::PatchRecovery3D(const Field3D& field, int threads) : field_(fie
   n_degraded_ = degraded;
 
   // Nodal values: a vertex its own fit, an edge node the mean of its two ends' fits there.
-  value_.assign(part_.size(), Eigen::Vector3d::Zero());
+  value_.assign(slots_.size(), Eigen::Vector3d::Zero());
   for (int v = 0; v < n_vertices; ++v)
-    for (int s = first_[v]; s < first_[v + 1]; ++s)
+    for (int s = slots_.begin(v); s < slots_.end(v); ++s)
       value_[s] = fits[s].at(mesh.nodes[v]);
   for (int d = n_vertices; d < dofs.n_dofs(); ++d) {
     const auto ends = dofs.edge_ends(d);
     const Eigen::Vector3d& x = dofs.dof_points()[d];
-    for (int s = first_[d]; s < first_[d + 1]; ++s)
-      value_[s] =
-          0.5 * (fits[own_slot(ends[0], part_[s])].at(x) + fits[own_slot(ends[1], part_[s])].at(x));
+    for (int s = slots_.begin(d); s < slots_.end(d); ++s)
+      value_[s] = 0.5 * (fits[slots_.own_slot(ends[0], slots_.part(s))].at(x) +
+                         fits[slots_.own_slot(ends[1], slots_.part(s))].at(x));
   }
   keep_radial_at_infinity();
 }
@@ -193,7 +148,7 @@ void PatchRecovery3D::keep_radial_at_infinity() {
   if (problem.boundary != OuterKind3D::open)
     return;
   for (int d : field_.dofs().dofs_on_faces(mesh.outer_faces)) {
-    const int s = slot(d, region_shell_3d);
+    const int s = slots_.slot(d, region_shell_3d);
     if (s < 0)
       continue;
     const Eigen::Vector3d e = field_.dofs().dof_points()[d].normalized();
@@ -207,7 +162,7 @@ int PatchRecovery3D::nodal_values(std::size_t t, std::array<Eigen::Vector3d, 10>
   const int part = field_.problem().mesh->tet_part[t];
   const int n = dofs.dofs_per_element();
   for (int i = 0; i < n; ++i)
-    out[i] = value_[own_slot(dof[i], part)];
+    out[i] = value_[slots_.own_slot(dof[i], part)];
   return n;
 }
 
@@ -219,7 +174,7 @@ Eigen::Vector3d PatchRecovery3D::G(std::size_t t, const std::array<double, 4>& b
   const int part = field_.problem().mesh->tet_part[t];
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)
-    g += n[i] * value_[own_slot(dof[i], part)];
+    g += n[i] * value_[slots_.own_slot(dof[i], part)];
   return g;
 }
 

@@ -48,6 +48,7 @@
 #include <Eigen/Core>
 
 #include "postproc/field3d.hpp"
+#include "postproc/region_slots.hpp"
 
 namespace magfem {
 
@@ -82,18 +83,13 @@ public:
   std::size_t n_degraded() const { return n_degraded_; }
 
 private:
-  void build_slots();
   // H* at bary of tet t, x the point (physical).
   Eigen::Vector3d H_at(std::size_t t, const std::array<double, 4>& bary,
                        const Eigen::Vector3d& x) const;
-  void keep_radial_at_infinity();    // n x G* = 0 on the open boundary's outer sphere
-  int slot(int dof, int part) const; // -1 if region part does not touch dof
-  // The slot of region `part` at `dof` for a tet of that region holding the DOF.
-  int own_slot(int dof, int part) const;
+  void keep_radial_at_infinity(); // n x G* = 0 on the open boundary's outer sphere
 
   const Field3D& field_;
-  std::vector<int> first_;             // per DOF: its slots first_[d] .. first_[d + 1] - 1
-  std::vector<int> part_;              // region of each slot
+  RegionSlots slots_;                  // per (DOF, region), the shell's too
   std::vector<Eigen::Vector3d> value_; // G* of each slot, A/m
   std::vector<std::array<Eigen::Vector3d, 4>> corner_; // G_h at the vertices, straight tets
   std::size_t n_degraded_ = 0;

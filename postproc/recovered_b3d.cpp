@@ -13,53 +13,16 @@
 
 namespace magfem {
 
-namespace {
-constexpr int no_part = std::numeric_limits<int>::min(); // tet_part values are >= -2
-} // namespace
-
-void RecoveredB3D::build_slots(const Problem3D& problem) {
-  const Mesh3D& mesh = *mesh_;
-  const int n = dofs_->dofs_per_element();
-  // The region of the first tet at each DOF, and (DOF, region) for every tet of another
-  // region: only region-boundary DOFs add pairs, so this stays small next to the mesh.
-  std::vector<int> first_part(dofs_->n_dofs(), no_part);
-  std::vector<std::pair<int, int>> others;
-  for (std::size_t t = 0; t < mesh.n_tets(); ++t) {
-    if (problem.is_shell(t))
-      continue;
-    const int part = mesh.tet_part[t];
-    const int* dof = dofs_->element_dofs(t);
-    for (int i = 0; i < n; ++i) {
-      int& p = first_part[dof[i]];
-      if (p == no_part)
-        p = part;
-      else if (p != part)
-        others.emplace_back(dof[i], part);
-    }
-  }
-  std::sort(others.begin(), others.end());
-  others.erase(std::unique(others.begin(), others.end()), others.end());
-  first_.assign(first_part.size() + 1, 0);
-  part_.clear();
-  part_.reserve(first_part.size() + others.size());
-  std::size_t k = 0;
-  for (std::size_t d = 0; d < first_part.size(); ++d) {
-    if (first_part[d] != no_part)
-      part_.push_back(first_part[d]);
-    for (; k < others.size() && others[k].first == static_cast<int>(d); ++k)
-      part_.push_back(others[k].second);
-    first_[d + 1] = static_cast<int>(part_.size());
-  }
-}
-
 RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
     : mesh_(field.problem().mesh), dofs_(&field.dofs()) {
   const Problem3D& problem = field.problem();
   const Mesh3D& mesh = *mesh_;
-  build_slots(problem);
   const int n = dofs_->dofs_per_element();
-  b_.assign(part_.size(), Eigen::Vector3d::Zero());
-  weight_.assign(part_.size(), 0.0);
+  slots_ = RegionSlots(
+      dofs_->n_dofs(), mesh.n_tets(), n, [&](std::size_t t) { return dofs_->element_dofs(t); },
+      [&](std::size_t t) { return problem.is_shell(t) ? RegionSlots::skip : mesh.tet_part[t]; });
+  b_.assign(slots_.size(), Eigen::Vector3d::Zero());
+  weight_.assign(slots_.size(), 0.0);
   element_peak_B_.assign(mesh.n_tets(), 0.0);
   if (threads <= 0)
     threads = element_loop_threads(mesh.n_tets());
@@ -83,7 +46,7 @@ RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
           const Eigen::Vector3d b = vol * b_node;
           double* o = out + 5 * i;
           o[0] = b.x(), o[1] = b.y(), o[2] = b.z(), o[3] = vol;
-          o[4] = own_slot(dof[i], mesh.tet_part[t]);
+          o[4] = slots_.own_slot(dof[i], mesh.tet_part[t]);
         }
         element_peak_B_[t] = peak;
       },
@@ -103,22 +66,8 @@ RecoveredB3D::RecoveredB3D(const Field3D& field, int threads)
     b_[s] /= weight_[s]; // every slot has a tet of positive volume
 }
 
-// A DOF inside one region has one slot: the asking tet's (which holds the DOF), without
-// reading the slot's region, a cache miss per DOF (3 % of benchmark32's run when every
-// lookup of the recovery read it).
-int RecoveredB3D::own_slot(int dof, int part) const {
-  return first_[dof + 1] - first_[dof] == 1 ? first_[dof] : slot(dof, part);
-}
-
-int RecoveredB3D::slot(int dof, int part) const {
-  for (int s = first_[dof]; s < first_[dof + 1]; ++s)
-    if (part_[s] == part)
-      return s;
-  return -1;
-}
-
 const Eigen::Vector3d& RecoveredB3D::value(int dof, int part) const {
-  const int s = slot(dof, part);
+  const int s = slots_.slot(dof, part);
   if (s < 0)
     throw std::out_of_range("recovered B: region " + std::to_string(part) + " does not touch DOF " +
                             std::to_string(dof));
@@ -132,16 +81,14 @@ Eigen::Vector3d RecoveredB3D::at(std::size_t t, const std::array<double, 4>& bar
   const int part = mesh_->tet_part[t];
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)
-    v += n[i] * b_[own_slot(dof[i], part)];
+    v += n[i] * b_[slots_.own_slot(dof[i], part)];
   return v;
 }
 
 std::vector<Eigen::Vector3d> RecoveredB3D::dof_average() const {
-  if (first_.empty())
-    return {};
-  std::vector<Eigen::Vector3d> out(first_.size() - 1, Eigen::Vector3d::Zero());
-  for (std::size_t d = 0; d < out.size(); ++d) {
-    const int lo = first_[d], hi = first_[d + 1];
+  std::vector<Eigen::Vector3d> out(slots_.n_dofs(), Eigen::Vector3d::Zero());
+  for (int d = 0; d < slots_.n_dofs(); ++d) {
+    const int lo = slots_.begin(d), hi = slots_.end(d);
     if (hi - lo == 1) {
       out[d] = b_[lo];
       continue;

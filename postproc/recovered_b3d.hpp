@@ -8,8 +8,8 @@
 // from t's region values alone, so the field is continuous inside a region and a point in
 // steel never sees air.
 //
-// Storage is CSR-like: DOF d owns the slots first_[d] .. first_[d+1]-1, one per region (mesh
-// tet_part) touching it. Most DOFs have one slot; only DOFs on region boundaries have more.
+// Storage: one slot per (DOF, region) (region_slots.hpp). Most DOFs have one slot; only DOFs
+// on region boundaries have more.
 #include <array>
 #include <vector>
 
@@ -17,6 +17,7 @@
 
 #include "mesh/mesh3d.hpp"
 #include "postproc/field3d.hpp"
+#include "postproc/region_slots.hpp"
 #include "solver/dof_map3d.hpp"
 
 namespace magfem {
@@ -35,7 +36,7 @@ public:
   // no tet of that region touches the DOF.
   const Eigen::Vector3d& value(int dof, int part) const;
   // How many regions hold a value at DOF `dof` (0: only the shell touches it).
-  int n_regions_at(int dof) const { return first_[dof + 1] - first_[dof]; }
+  int n_regions_at(int dof) const { return slots_.regions_at(dof); }
 
   // One value per DOF, the volume-weighted average over all its regions: what VTU point
   // data (one value a point) can show. It mixes materials at region boundaries: for plots,
@@ -50,15 +51,9 @@ public:
   std::size_t n_slots() const { return b_.size(); }
 
 private:
-  int slot(int dof, int part) const; // -1 if region `part` does not touch `dof`
-  // The slot of region `part` at `dof` for a tet of that region holding the DOF.
-  int own_slot(int dof, int part) const;
-  void build_slots(const Problem3D& problem);
-
   const Mesh3D* mesh_ = nullptr;
   const DofMap3D* dofs_ = nullptr;
-  std::vector<int> first_;             // n_dofs + 1
-  std::vector<int> part_;              // region (tet_part) of every slot
+  RegionSlots slots_;                  // per (DOF, region), the shell's tets left out
   std::vector<Eigen::Vector3d> b_;     // recovered B of every slot, T
   std::vector<double> weight_;         // volume of the slot's tets around its DOF, m^3
   std::vector<double> element_peak_B_; // per tet, T
