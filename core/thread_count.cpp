@@ -36,6 +36,17 @@ int cores_in_affinity() {
   return std::max(1, CPU_COUNT(&mask));
 }
 
+ThreadOnCores::ThreadOnCores(const cpu_set_t& cores) {
+  CPU_ZERO(&previous_);
+  changed_ = sched_getaffinity(0, sizeof previous_, &previous_) == 0 &&
+             sched_setaffinity(0, sizeof cores, &cores) == 0;
+}
+
+ThreadOnCores::~ThreadOnCores() {
+  if (changed_)
+    sched_setaffinity(0, sizeof previous_, &previous_);
+}
+
 namespace {
 
 using GetThreads = int (*)();

@@ -3,6 +3,8 @@
 // use: the environment variable MAGFEM_THREADS when it is a positive integer (a machine
 // shared with other work, or the determinism test comparing 1 and 2 threads), else the
 // number of hardware threads. BLAS threads are OpenBLAS's own (OPENBLAS_NUM_THREADS).
+#include <sched.h>
+
 #include <cstddef>
 
 namespace magfem {
@@ -23,6 +25,21 @@ int cores_in_affinity();
 // depends on it (1 and 2 threads differ in the 9th digit of a 2D sweep's force), while
 // magfem's own loops give the same bits on any count. A no-op when the BLAS in use is not
 // OpenBLAS (found at run time, so magfem does not link OpenBLAS itself).
+// The calling thread may run on `cores` for the life of this object, then on its own cores
+// again. Threads it starts meanwhile (OpenBLAS's, when BlasThreads raises their number)
+// inherit the mask and keep it.
+class ThreadOnCores {
+public:
+  explicit ThreadOnCores(const cpu_set_t& cores);
+  ~ThreadOnCores();
+  ThreadOnCores(const ThreadOnCores&) = delete;
+  ThreadOnCores& operator=(const ThreadOnCores&) = delete;
+
+private:
+  cpu_set_t previous_;
+  bool changed_ = false;
+};
+
 class BlasThreads {
 public:
   explicit BlasThreads(int n);

@@ -111,28 +111,36 @@ void idle_barrier() {
   wait_idly(request, std::chrono::milliseconds(20));
 }
 
-void lend_node_cores_to_root() {
-  const MpiWorld world = started_mpi_world();
-  if (!world.distributed())
-    return;
+cpu_set_t node_cores() {
   cpu_set_t mine, all;
   CPU_ZERO(&mine);
-  CPU_ZERO(&all);
   if (sched_getaffinity(0, sizeof mine, &mine) != 0)
     CPU_ZERO(&mine); // unknown: adds nothing
+  all = mine;
+  if (!started_mpi_world().distributed())
+    return all;
   // cpu_set_t is a bit mask in unsigned longs: OR-ed over the processes of the machine.
   constexpr int n_words = sizeof(cpu_set_t) / sizeof(unsigned long);
   static_assert(sizeof(cpu_set_t) % sizeof(unsigned long) == 0);
   unsigned long in[n_words], out[n_words];
   std::memcpy(in, &mine, sizeof mine);
   MPI_Comm node = MPI_COMM_NULL;
-  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, world.rank, MPI_INFO_NULL, &node);
-  // Keyed by the world rank: world rank 0 is rank 0 of its machine's communicator.
-  MPI_Reduce(in, out, n_words, MPI_UNSIGNED_LONG, MPI_BOR, 0, node);
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  MPI_Allreduce(in, out, n_words, MPI_UNSIGNED_LONG, MPI_BOR, node);
   MPI_Comm_free(&node);
-  if (!world.is_root())
-    return;
   std::memcpy(&all, out, sizeof all);
+  return all;
+}
+
+void lend_node_cores_to_root() {
+  const MpiWorld world = started_mpi_world();
+  if (!world.distributed())
+    return;
+  const cpu_set_t all = node_cores();
+  cpu_set_t mine;
+  CPU_ZERO(&mine);
+  if (!world.is_root() || sched_getaffinity(0, sizeof mine, &mine) != 0)
+    return;
   // Threads started from now on (magfem's loops start theirs per loop) inherit the mask.
   if (CPU_COUNT(&all) > CPU_COUNT(&mine))
     sched_setaffinity(0, sizeof all, &all);

@@ -1,6 +1,8 @@
 #pragma once
 // Inside the PETSc module (petsc_backend.hpp): the MPI side of mpi_context.hpp. The functions
 // are those of the same names there; join_mpi_world is called only under mpirun.
+#include <sched.h>
+
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -17,6 +19,9 @@ void sum_on_every_rank(double* values, std::size_t n);
 void union_to_root(float* values, std::size_t n);
 void idle_barrier();
 void lend_node_cores_to_root();
+// Collective: the union of the CPU affinities of the run's processes on this process's machine
+// (this process's own affinity in a serial run).
+cpu_set_t node_cores();
 int code_of_root(int code);
 void broadcast_bytes(int root, std::string& bytes);
 // MPI_Abort when distributed; returns otherwise (the caller exits).
