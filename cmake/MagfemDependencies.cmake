@@ -33,8 +33,14 @@ endif()
 magfem_require(PETSC_FOUND libpetsc-real-dev)
 find_package(MPI QUIET COMPONENTS CXX)
 magfem_require(MPI_CXX_FOUND libopenmpi-dev)
+# Scotch itself (PETSc's partitioner): its random seed is set directly (pmg_partition.cpp).
+# libscotch-dev comes with PETSc's development package.
+find_path(SCOTCH_INCLUDE_DIR scotch/scotch.h)
+find_library(SCOTCH_LIBRARY scotch)
+magfem_require(SCOTCH_INCLUDE_DIR libscotch-dev)
+magfem_require(SCOTCH_LIBRARY libscotch-dev)
 add_library(magfem_petsc_libs INTERFACE)
-target_link_libraries(magfem_petsc_libs INTERFACE PkgConfig::PETSC MPI::MPI_CXX)
+target_link_libraries(magfem_petsc_libs INTERFACE PkgConfig::PETSC MPI::MPI_CXX ${SCOTCH_LIBRARY})
 
 # SuiteSparse ships no CMake config in Debian 12: locate CHOLMOD directly.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)

@@ -7,14 +7,15 @@ set -euo pipefail
 # python3-jsonschema/python3-yaml check docs/case.schema.json against the examples; dpkg-dev
 # and file let CPack compute the Debian package's runtime dependencies; libnlopt-cxx-dev is
 # the bounded optimizer behind magfem optimize; libpetsc-real-dev (with hypre and Open MPI)
-# gives the 3D solver algebraic multigrid, and mpi-default-bin its mpirun; pybind11-dev and
+# gives the 3D solver algebraic multigrid, and mpi-default-bin its mpirun (libscotch-dev, which
+# it brings, is named for the partition's fixed random seed); pybind11-dev and
 # python3-numpy build the Python module (python/), python3-pytest runs its tests, python3-scipy
 # the optimizer of examples/python/compensator_design.py and its test (skipped without it).
 packages=(cmake g++ make ccache pkg-config
           libeigen3-dev libyaml-cpp-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libsuitesparse-dev libtet1.5-dev libvtk9-dev nlohmann-json3-dev libtbb-dev
           libgtest-dev gnuplot-nox libopenblas0-pthread libnlopt-cxx-dev
-          libpetsc-real-dev mpi-default-bin
+          libpetsc-real-dev libscotch-dev mpi-default-bin
           python3-jsonschema python3-yaml dpkg-dev file
           pybind11-dev python3-numpy python3-pytest python3-scipy)
 missing=()

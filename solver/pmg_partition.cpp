@@ -1,13 +1,122 @@
 #include "solver/pmg_partition.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <exception>
 #include <numeric>
+#include <string>
 #include <vector>
+
+#include <stdint.h> // scotch.h needs them first
+#include <stdio.h>
+
+#include <scotch/scotch.h>
 
 #include "core/input_error.hpp"
 #include "solver/petsc_check.hpp"
 
 namespace magfem::petsc_module {
+
+namespace {
+
+// The P1 graph of the vertices outside the shell (node[c] >= 0, numbered 0..n_nodes-1): two
+// are adjacent where a tetrahedron joins them. CSR, each row sorted.
+struct Graph {
+  std::vector<PetscInt> start, adjacent;
+};
+
+Graph p1_graph(const Eigen::SparseMatrix<double>& lower_pattern,
+               const std::vector<PetscInt>& vertex_coarse, const std::vector<PetscInt>& node,
+               PetscInt n_nodes) {
+  std::vector<std::vector<PetscInt>> neighbours(n_nodes);
+  for (Eigen::Index j = 0; j < lower_pattern.outerSize(); ++j) {
+    const PetscInt cj = vertex_coarse[j];
+    if (cj < 0 || node[cj] < 0)
+      continue;
+    const PetscInt gj = node[cj];
+    for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
+      const PetscInt ci = vertex_coarse[it.row()];
+      if (ci < 0 || node[ci] < 0 || ci == cj)
+        continue;
+      const PetscInt gi = node[ci];
+      neighbours[gi].push_back(gj);
+      neighbours[gj].push_back(gi);
+    }
+  }
+  Graph g;
+  g.start.assign(1, 0);
+  for (auto& row : neighbours) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    g.adjacent.insert(g.adjacent.end(), row.begin(), row.end());
+    g.start.push_back(static_cast<PetscInt>(g.adjacent.size()));
+    row = {};
+  }
+  return g;
+}
+
+// Each node's part (0 .. fraction.size()-1) by Scotch through PETSc's MatPartitioning on this
+// process alone, the parts' sizes in the given fractions of the weights. The same graph gives
+// the same parts in every run: Scotch on one thread (its threads' work sharing varies from run
+// to run) from a fixed seed (Debian's Scotch seeds from the clock). SCOTCH_PTHREAD_NUMBER is
+// read when Scotch starts its threads, per call.
+std::vector<PetscInt> scotch_parts(const Graph& g, const std::vector<PetscInt>& weight,
+                                   const std::vector<PetscReal>& fraction) {
+  const auto n_nodes = static_cast<PetscInt>(g.start.size()) - 1;
+  const auto size = static_cast<PetscInt>(fraction.size());
+  // MatCreateMPIAdj and both weights take PetscMalloc'ed arrays and free them.
+  PetscInt *ia = nullptr, *ja = nullptr, *w = nullptr;
+  PetscReal* fractions = nullptr;
+  check(PetscMalloc1(n_nodes + 1, &ia), "PetscMalloc1");
+  check(PetscMalloc1(std::max<std::size_t>(g.adjacent.size(), 1), &ja), "PetscMalloc1");
+  check(PetscMalloc1(std::max<PetscInt>(n_nodes, 1), &w), "PetscMalloc1");
+  check(PetscMalloc1(size, &fractions), "PetscMalloc1");
+  std::copy(g.start.begin(), g.start.end(), ia);
+  std::copy(g.adjacent.begin(), g.adjacent.end(), ja);
+  for (PetscInt k = 0; k < n_nodes; ++k)
+    w[k] = std::max<PetscInt>(weight[k], 1);
+  std::copy(fraction.begin(), fraction.end(), fractions);
+  Mat graph = nullptr;
+  MatPartitioning partitioning = nullptr;
+  IS part = nullptr;
+  const auto destroy = [&] {
+    ISDestroy(&part);
+    MatPartitioningDestroy(&partitioning);
+    MatDestroy(&graph);
+    PetscFree(w); // those not yet handed over
+    PetscFree(fractions);
+  };
+  std::vector<PetscInt> owner(n_nodes, 0);
+  try {
+    check(MatCreateMPIAdj(PETSC_COMM_SELF, n_nodes, n_nodes, ia, ja, nullptr, &graph),
+          "MatCreateMPIAdj");
+    check(MatPartitioningCreate(PETSC_COMM_SELF, &partitioning), "MatPartitioningCreate");
+    check(MatPartitioningSetAdjacency(partitioning, graph), "MatPartitioningSetAdjacency");
+    check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH),
+          "MatPartitioningSetType(ptscotch)");
+    check(MatPartitioningSetNParts(partitioning, size), "MatPartitioningSetNParts");
+    check(MatPartitioningSetVertexWeights(partitioning, w), "MatPartitioningSetVertexWeights");
+    w = nullptr;
+    check(MatPartitioningSetPartitionWeights(partitioning, fractions),
+          "MatPartitioningSetPartitionWeights");
+    fractions = nullptr;
+    setenv("SCOTCH_PTHREAD_NUMBER", "1", 1);
+    SCOTCH_randomSeed(1);
+    SCOTCH_randomReset();
+    check(MatPartitioningApply(partitioning, &part), "MatPartitioningApply");
+    const PetscInt* parts = nullptr;
+    check(ISGetIndices(part, &parts), "ISGetIndices");
+    std::copy(parts, parts + n_nodes, owner.begin());
+    check(ISRestoreIndices(part, &parts), "ISRestoreIndices");
+  } catch (...) {
+    destroy();
+    throw;
+  }
+  destroy();
+  return owner;
+}
+
+} // namespace
 
 PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
                                const Eigen::SparseMatrix<double, Eigen::RowMajor>& q,
@@ -55,45 +164,6 @@ PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
     else if (with[i] >= 0)
       ++weight[node[with[i]]];
   }
-  PetscInt local_nodes = PETSC_DECIDE, all_nodes = n_nodes, g_end = 0;
-  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_nodes, &all_nodes), "PetscSplitOwnership");
-  MPI_Scan(&local_nodes, &g_end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
-  const PetscInt g_begin = g_end - local_nodes;
-  std::vector<std::vector<PetscInt>> neighbours(local_nodes);
-  for (Eigen::Index j = 0; j < lower_pattern.outerSize(); ++j) {
-    const PetscInt cj = vertex_coarse[j];
-    if (cj < 0 || node[cj] < 0)
-      continue;
-    const PetscInt gj = node[cj];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(lower_pattern, j); it; ++it) {
-      const PetscInt ci = vertex_coarse[it.row()];
-      if (ci < 0 || node[ci] < 0 || ci == cj)
-        continue;
-      const PetscInt gi = node[ci];
-      if (gi >= g_begin && gi < g_end)
-        neighbours[gi - g_begin].push_back(gj);
-      if (gj >= g_begin && gj < g_end)
-        neighbours[gj - g_begin].push_back(gi);
-    }
-  }
-  // MatCreateMPIAdj and both weights take PetscMalloc'ed arrays and free them.
-  PetscInt *ia = nullptr, *ja = nullptr, *w = nullptr;
-  std::size_t n_adj = 0;
-  for (auto& row : neighbours) {
-    std::sort(row.begin(), row.end());
-    row.erase(std::unique(row.begin(), row.end()), row.end());
-    n_adj += row.size();
-  }
-  check(PetscMalloc1(local_nodes + 1, &ia), "PetscMalloc1");
-  check(PetscMalloc1(std::max<std::size_t>(n_adj, 1), &ja), "PetscMalloc1");
-  check(PetscMalloc1(std::max<PetscInt>(local_nodes, 1), &w), "PetscMalloc1");
-  ia[0] = 0;
-  for (PetscInt k = 0; k < local_nodes; ++k) {
-    std::copy(neighbours[k].begin(), neighbours[k].end(), ja + ia[k]);
-    ia[k + 1] = ia[k] + static_cast<PetscInt>(neighbours[k].size());
-    w[k] = std::max<PetscInt>(weight[g_begin + k], 1);
-  }
-  neighbours = {};
   // Fractions of the rest: each process n / size equations in all, process 0 its share less
   // what it has (at least a sliver, should the shell alone exceed a share).
   std::vector<PetscReal> fraction(size, 1.0);
@@ -106,45 +176,30 @@ PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
     for (auto& f : fraction)
       f /= sum;
   }
-  Mat graph = nullptr;
-  MatPartitioning partitioning = nullptr;
-  IS part = nullptr, all = nullptr;
+  // The whole graph partitioned by process 0 alone and its parts sent to the others: PT-Scotch
+  // over the processes gave different parts from run to run (its parallel matching follows
+  // the order messages arrive in; the magnetized sphere took 22 or 23 CG iterations and the
+  // field moved in the last digits), and so did Scotch alone on each process, by its threads
+  // and its clock-seeded random generator (scotch_parts).
   std::vector<PetscInt> coarse_part(m, 0);
-  const auto destroy = [&] {
-    ISDestroy(&all);
-    ISDestroy(&part);
-    MatPartitioningDestroy(&partitioning);
-    MatDestroy(&graph);
-  };
-  try {
-    check(MatCreateMPIAdj(PETSC_COMM_WORLD, local_nodes, n_nodes, ia, ja, nullptr, &graph),
-          "MatCreateMPIAdj");
-    check(MatPartitioningCreate(PETSC_COMM_WORLD, &partitioning), "MatPartitioningCreate");
-    check(MatPartitioningSetAdjacency(partitioning, graph), "MatPartitioningSetAdjacency");
-    check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH),
-          "MatPartitioningSetType(ptscotch)");
-    check(MatPartitioningSetNParts(partitioning, size), "MatPartitioningSetNParts");
-    check(MatPartitioningSetVertexWeights(partitioning, w), "MatPartitioningSetVertexWeights");
-    w = nullptr;
-    PetscReal* fractions = nullptr;
-    check(PetscMalloc1(size, &fractions), "PetscMalloc1");
-    std::copy(fraction.begin(), fraction.end(), fractions);
-    check(MatPartitioningSetPartitionWeights(partitioning, fractions),
-          "MatPartitioningSetPartitionWeights");
-    check(MatPartitioningApply(partitioning, &part), "MatPartitioningApply");
-    check(ISAllGather(part, &all), "ISAllGather");
-    const PetscInt* owner = nullptr;
-    check(ISGetIndices(all, &owner), "ISGetIndices");
-    for (PetscInt c = 0; c < m; ++c)
-      if (node[c] >= 0)
-        coarse_part[c] = owner[node[c]];
-    check(ISRestoreIndices(all, &owner), "ISRestoreIndices");
-    destroy();
-  } catch (...) {
-    PetscFree(w);
-    destroy();
-    throw;
+  std::string failure;
+  if (rank == 0) {
+    try {
+      const std::vector<PetscInt> owner =
+          scotch_parts(p1_graph(lower_pattern, vertex_coarse, node, n_nodes), weight, fraction);
+      for (PetscInt c = 0; c < m; ++c)
+        if (node[c] >= 0)
+          coarse_part[c] = owner[node[c]];
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
   }
+  // The outcome first, so that a failure on process 0 ends every process alike.
+  int failed = !failure.empty();
+  MPI_Bcast(&failed, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+  if (failed)
+    throw SolveError(rank == 0 ? failure : "the mesh's partition failed on process 0");
+  MPI_Bcast(coarse_part.data(), static_cast<int>(m), MPIU_INT, 0, PETSC_COMM_WORLD);
   // Rows: a process's equations after the previous processes'; an equation with no free
   // vertex (rare: a midpoint between two boundary vertices) by its place in the numbering.
   const auto number = [size](const std::vector<PetscInt>& part_of, std::vector<PetscInt>& out,
@@ -172,6 +227,12 @@ PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
   for (PetscInt i = 0; i < n; ++i)
     if (part_of[i] == rank)
       out.local_equations[out.order[i] - out.own_begin] = i;
+  {
+    unsigned long long h = 0;
+    for (auto v : part_of)
+      h = h * 1000003ULL + v;
+    fprintf(stderr, "PARTHASH %d %llu\n", rank, h);
+  }
   number(coarse_part, out.coarse_order, start);
   out.coarse_local = start[rank + 1] - start[rank];
   return out;

@@ -5,7 +5,8 @@
 // whole mesh, and block Jacobi across the processes then drops most couplings (magnetized
 // sphere at --mesh-scale 2.5, 2 processes: 81 CG iterations against 19 serially). Instead
 // the mesh is partitioned: the P1 graph (vertex equations, coupled where a tetrahedron joins
-// them) by PT-Scotch (PETSc's MatPartitioning), one part per process, each vertex weighted by
+// them) by Scotch (PETSc's MatPartitioning) on process 0, one part per process, the same in
+// every run (fixed seed, one thread), each vertex weighted by
 // the equations that go with it (itself and the edge midpoints whose first free end it is).
 // The open-boundary shell (the smoother block) goes whole to process 0, which solves it by
 // one Cholesky factor as the serial smoother does: cut between processes, block Jacobi drops
@@ -13,7 +14,7 @@
 // with the shell whole); process 0 takes correspondingly less of the rest (part weights).
 // Each process's rows follow the previous process's, in equation order within (the serial
 // Gauss-Seidel order); the P1 unknowns likewise by their vertex's part. The same on every
-// process (the partition is gathered to all).
+// process (process 0's parts are sent to all).
 #include <vector>
 
 #include <petscmat.h>
