@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "mesh/vertex_elements.hpp"
 #include "postproc/patch_fit.hpp"
 #include "solver/triangle_lagrange.hpp"
 
@@ -17,27 +18,6 @@ using Sample = Fit::Sample;
 const std::array<std::array<double, 3>, 3> rule_points = {
     {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}}};
 
-// Per mesh vertex, the triangles that have it (CSR).
-struct VertexTriangles {
-  std::vector<int> first, triangles;
-  explicit VertexTriangles(const Mesh2D& mesh) : first(mesh.n_nodes() + 1, 0) {
-    for (const auto& t : mesh.triangles)
-      for (int v : t)
-        ++first[v + 1];
-    for (std::size_t v = 0; v < mesh.n_nodes(); ++v)
-      first[v + 1] += first[v];
-    triangles.resize(first.back());
-    std::vector<int> next(first.begin(), first.end() - 1);
-    for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
-      for (int v : mesh.triangles[t])
-        triangles[next[v]++] = static_cast<int>(t);
-  }
-  template <class F> void each(int v, F&& f) const {
-    for (int k = first[v]; k < first[v + 1]; ++k)
-      f(triangles[k]);
-  }
-};
-
 } // namespace
 
 PatchRecovery2D::PatchRecovery2D(const Field2D& field) : field_(field) {
@@ -48,7 +28,7 @@ PatchRecovery2D::PatchRecovery2D(const Field2D& field) : field_(field) {
       dofs.n_dofs(), mesh.n_triangles(), dofs.dofs_per_element(),
       [&](std::size_t t) { return dofs.element_dofs(t); },
       [&](std::size_t t) { return mesh.triangle_part[t]; });
-  const VertexTriangles around(mesh);
+  const VertexElements<3> around(mesh.triangles, mesh.n_nodes());
 
   auto add_samples = [&](int t, std::vector<Sample>& out) {
     const auto& k = mesh.triangles[t];
@@ -69,18 +49,16 @@ PatchRecovery2D::PatchRecovery2D(const Field2D& field) : field_(field) {
     for (int s = slots_.begin(v); s < slots_.end(v); ++s) {
       const int part = slots_.part(s);
       patch.clear();
-      around.each(v, [&](int t) {
+      for (int t : around.of(v))
         if (mesh.triangle_part[t] == part)
           patch.push_back(t);
-      });
       if (static_cast<int>(patch.size()) < min_patch_triangles) {
         const std::vector<int> ring(patch);
         for (int t : ring)
           for (int w : mesh.triangles[t])
-            around.each(w, [&](int n) {
+            for (int n : around.of(w))
               if (mesh.triangle_part[n] == part)
                 patch.push_back(n);
-            });
         std::sort(patch.begin(), patch.end());
         patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
       }
