@@ -226,7 +226,8 @@ public:
   }
   static ErrorEstimateRecord error_record(const Run2D& run) {
     return {run.error_estimate.energy_error_pct, run.error_estimate.energy_norm_error_pct,
-            run.error_estimate.indicator, run.error_estimate.total_eta2 * length(run)};
+            run.error_estimate.indicator, run.error_estimate.total_eta2 * length(run),
+            run.error_estimate.degraded_patches};
   }
   static int threads(const Run2D&) { return 1; }
   static int ranks(const Run2D&) { return 1; }

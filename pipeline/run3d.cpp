@@ -384,7 +384,8 @@ public:
   }
   static ErrorEstimateRecord error_record(const Run3D& run) {
     const auto& e = run.error_estimate;
-    return {e.energy_error_pct, e.energy_norm_error_pct, e.indicator, e.error_norm2_J};
+    return {e.energy_error_pct, e.energy_norm_error_pct, e.indicator, e.error_norm2_J,
+            e.degraded_patches};
   }
   static int threads(const Run3D& run) { return run.threads; }
   static int ranks(const Run3D& run) { return run.ranks; }

@@ -28,6 +28,7 @@ void add_error_estimate(nlohmann::ordered_json& j, const ErrorEstimateRecord& e,
       {"energy_norm_error_pct", e.energy_norm_error_pct},
       {"indicator", e.indicator},
       {"error_norm2_J", e.error_norm2_J},
+      {"degraded_patches", e.degraded_patches},
       {"scope", "whole domain, the open-boundary shell (the mapped exterior) included"},
       {"seconds", seconds}};
 }

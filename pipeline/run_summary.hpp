@@ -35,10 +35,12 @@ struct ErrorEstimateRecord {
   double energy_norm_error_pct = 0; // the relative energy-norm error
   std::string indicator;            // the estimator's name
   double error_norm2_J = 0;         // eta^2, in the units of energy_J (J per energy_per)
+  std::size_t degraded_patches = 0; // recovery fits that fell back a degree (PatchRecovery*)
 };
 
-// error_estimate {energy_error_pct, energy_norm_error_pct, indicator, error_norm2_J, scope,
-// seconds}: the same meaning in every dimension (postproc/error_estimate2d, 3d).
+// error_estimate {energy_error_pct, energy_norm_error_pct, indicator, error_norm2_J,
+// degraded_patches, scope, seconds}: the same meaning in every dimension
+// (postproc/error_estimate2d, 3d).
 void add_error_estimate(nlohmann::ordered_json& j, const ErrorEstimateRecord& e, double seconds);
 
 // converged, iterations, residual_history, the solver block (solver_summary.hpp), timings_s

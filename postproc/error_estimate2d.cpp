@@ -60,6 +60,7 @@ ErrorEstimate2D estimate_error_2d(const PatchRecovery2D& rec, double energy) {
     out.energy_error_pct = 100 * 0.5 * out.total_eta2 / energy;
     out.energy_norm_error_pct = 100 * std::sqrt(0.5 * out.total_eta2 / energy);
   }
+  out.degraded_patches = rec.n_degraded();
   return out;
 }
 

@@ -35,6 +35,7 @@ struct ErrorEstimate2D {
   double total_eta2 = 0;            // sum of eta2
   double energy_error_pct = 0;      // 100 * (total_eta2 / 2) / W: estimated relative error of W
   double energy_norm_error_pct = 0; // 100 * sqrt(total_eta2 / (2 W)): relative energy-norm error
+  std::size_t degraded_patches = 0; // PatchRecovery2D::n_degraded
 };
 
 // recovery: of the solution's field, shell included; energy: the solution's stored energy W

@@ -18,6 +18,7 @@
 
 #include "../solver/structured_mesh.hpp"
 #include "materials/material.hpp"
+#include "postproc/error_estimate2d.hpp"
 #include "postproc/field2d.hpp"
 #include "postproc/patch_recovery2d.hpp"
 #include "solver/dof_map2d.hpp"
@@ -82,6 +83,30 @@ TEST(PatchRecovery2D, OrderAndGainOverTheElementFieldOnASmoothField) {
     EXPECT_GT(rate_rec, 1.7) << "order " << order;
     EXPECT_LT(fine.recovered, 0.2 * fine.element) << "order " << order;
   }
+}
+
+// A region of one triangle: its corners' patches in that region hold one triangle (3 samples)
+// however far they grow, too few for the degree-2 fit (6 coefficients), which falls back a
+// degree. The estimate carries the count to summary.json's error_estimate.degraded_patches
+// (a count left at 0 there would tell a user the recovery is sound where it is not).
+TEST(PatchRecovery2D, ARegionOfOneTriangleDegradesItsCornersFitsAndTheEstimateSaysSo) {
+  const Material air = Material::make_linear("air", 1.0, "test");
+  Mesh2D mesh = test::structured_rectangle(side, side, 8, 8, 0);
+  const std::size_t lone = mesh.n_triangles() / 2 + 3; // inside: no edge on the boundary
+  mesh.triangle_part[lone] = 1;
+  Problem2D problem;
+  problem.mesh = &mesh;
+  problem.order = 2;
+  problem.air.material = &air;
+  problem.parts = {{&air, {}, 0}, {&air, {}, 0}};
+  const DofMap2D dofs(mesh, 2);
+  Eigen::VectorXd a(dofs.n_dofs());
+  for (int d = 0; d < dofs.n_dofs(); ++d)
+    a[d] = a_exact(dofs.dof_points()[d]);
+  const Field2D field(problem, dofs, a);
+  const PatchRecovery2D recovery(field);
+  EXPECT_EQ(recovery.n_degraded(), 3u); // the lone triangle's three corners, in its region
+  EXPECT_EQ(estimate_error_2d(recovery, 1.0).degraded_patches, recovery.n_degraded());
 }
 
 } // namespace
