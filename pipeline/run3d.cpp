@@ -515,7 +515,7 @@ private:
     if (!distributed_runs_pmg(linear))
       return {};
     auto rows = std::make_shared<DistributedRows>(
-        partition_distributed_rows(vertex_coupling_pattern(run_.mesh, dof_to_eq),
+        partition_distributed_rows(vertex_coupling_pattern(run_.mesh, *run_.dofs, dof_to_eq),
                                    *linear.coarse_prolongation, linear.smoother_block.get()));
     rows->tets = tets_touching_own_rows(*run_.dofs, run_.mesh.n_tets(), dof_to_eq, *rows);
     std::vector<std::size_t> source_tets;

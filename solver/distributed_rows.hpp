@@ -37,9 +37,10 @@ struct DistributedRows {
 };
 
 // The lower triangle of the coupling pattern of the free vertex equations (two vertices of one
-// tetrahedron; values 1): the P1 graph the partition cuts, a few entries per vertex where the
-// P2 system's pattern has ~15 per equation.
-Eigen::SparseMatrix<double> vertex_coupling_pattern(const Mesh3D& mesh,
+// tetrahedron; values positive, otherwise meaningless): the P1 graph the partition cuts, a few
+// entries per vertex where the P2 system's pattern has ~15 per equation. P2 reads it from
+// the edge DOFs, P1 from the tetrahedra: the same pattern.
+Eigen::SparseMatrix<double> vertex_coupling_pattern(const Mesh3D& mesh, const DofMap3D& dofs,
                                                     const std::vector<int>& dof_to_eq);
 
 // The tetrahedra t < n_tets (ascending) with a DOF whose equation this process owns.

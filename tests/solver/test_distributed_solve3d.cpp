@@ -80,6 +80,29 @@ TEST(ElementShare, SharesResidualsAndTangentsSumToTheWholeMesh) {
   EXPECT_LE(off, 1e-12 * largest);
 }
 
+// The P1 graph the partition cuts: read from P2's edge DOFs it is the pattern read from the
+// tetrahedra (two vertices share a tetrahedron exactly where they share an edge), with the
+// constrained vertices left out alike. An edge skipped, or an entry put above the diagonal,
+// changes the structure.
+TEST(OwnRowAssembly, VertexPatternFromTheEdgesIsTheOneFromTheTetrahedra) {
+  magfem::test::BoxProblem3D box(4, 2, magfem::OuterKind3D::dirichlet);
+  const magfem::DofMap3D p2(box.mesh, 2), p1(box.mesh, 1);
+  const magfem::Assembler3D whole(box.problem, p2, {1, {}, nullptr});
+  const std::vector<int>& eq = whole.dof_to_equation();
+  ASSERT_TRUE(std::any_of(eq.begin(), eq.begin() + p2.n_vertices(), [](int e) { return e < 0; }));
+  const Eigen::SparseMatrix<double> from_edges = magfem::vertex_coupling_pattern(box.mesh, p2, eq);
+  const Eigen::SparseMatrix<double> from_tets = magfem::vertex_coupling_pattern(box.mesh, p1, eq);
+  ASSERT_GT(from_tets.nonZeros(), 0);
+  ASSERT_EQ(from_edges.nonZeros(), from_tets.nonZeros());
+  ASSERT_EQ(from_edges.outerSize(), from_tets.outerSize());
+  EXPECT_TRUE(std::equal(from_edges.outerIndexPtr(),
+                         from_edges.outerIndexPtr() + from_edges.outerSize() + 1,
+                         from_tets.outerIndexPtr()));
+  EXPECT_TRUE(std::equal(from_edges.innerIndexPtr(),
+                         from_edges.innerIndexPtr() + from_edges.nonZeros(),
+                         from_tets.innerIndexPtr()));
+}
+
 // Own-row assembly (solver/distributed_rows.hpp): three processes owning the equations in
 // slabs along x (a partition of the mesh, as PT-Scotch's), each assembling the tetrahedra that
 // touch its rows. Its own rows of the residual and the tangent are then the whole mesh's bit for
