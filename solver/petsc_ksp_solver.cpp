@@ -314,6 +314,7 @@ struct PetscKspSolver::Impl {
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
+  void make_block_smoother_slot(const std::vector<int>* block);
   PetscInt row_of(PetscInt equation) const {
     return partition().order.empty() ? equation : partition().order[equation];
   }
@@ -367,6 +368,18 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
 // local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
 // Each sweep takes the other processes' values from the start of the sweep, through the
 // residual b - A x that PETSc's Richardson computes over the whole matrix.
+// The smoother's slot for `block`; when the block's factorization is already under way
+// (block_factoring), the smoother is built from it on a thread beside the rest of the set-up
+// and joined by the shell's PCSetUp.
+void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* block) {
+  block_smoother = std::make_unique<BlockSmootherSlot>(
+      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}});
+  if (block_factoring.valid())
+    block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(), this] {
+      return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
+    });
+}
+
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
@@ -374,13 +387,7 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   // The global block decides (every process must set the same smoother type up).
   const bool has_block = options.smoother_block && !options.smoother_block->empty();
   if (has_block && !distributed) {
-    block_smoother = std::make_unique<BlockSmootherSlot>(
-        BlockSmootherSlot{fine_matrix(), options.smoother_block, &block_factor, nullptr, {}});
-    if (block_factoring.valid())
-      block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(),
-                                                                 this] {
-        return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
-      });
+    make_block_smoother_slot(options.smoother_block);
   }
   if (distributed)
     set_up_distributed_coarse_space(q);
@@ -394,15 +401,8 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   check(PCMGSetGalerkin(pc, PC_MG_GALERKIN_NONE), "PCMGSetGalerkin");
   KSP coarse_ksp = nullptr;
   if (has_block) {
-    if (distributed) { // the process's diagonal block is known once the coarse space is
-      block_smoother = std::make_unique<BlockSmootherSlot>(
-          BlockSmootherSlot{fine_matrix(), &local_block, &block_factor, nullptr, {}});
-      if (block_factoring.valid())
-        block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(),
-                                                                   this] {
-          return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
-        });
-    }
+    if (distributed) // the process's diagonal block is known once the coarse space is
+      make_block_smoother_slot(&local_block);
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");

@@ -64,18 +64,10 @@ std::vector<PetscInt> scotch_parts(const Graph& g, const std::vector<PetscInt>& 
                                    const std::vector<PetscReal>& fraction) {
   const auto n_nodes = static_cast<PetscInt>(g.start.size()) - 1;
   const auto size = static_cast<PetscInt>(fraction.size());
-  // MatCreateMPIAdj and both weights take PetscMalloc'ed arrays and free them.
+  // MatCreateMPIAdj and both weights take PetscMalloc'ed arrays and free them; until each is
+  // handed over, `destroy` frees it (a null pointer is freed as nothing).
   PetscInt *ia = nullptr, *ja = nullptr, *w = nullptr;
   PetscReal* fractions = nullptr;
-  check(PetscMalloc1(n_nodes + 1, &ia), "PetscMalloc1");
-  check(PetscMalloc1(std::max<std::size_t>(g.adjacent.size(), 1), &ja), "PetscMalloc1");
-  check(PetscMalloc1(std::max<PetscInt>(n_nodes, 1), &w), "PetscMalloc1");
-  check(PetscMalloc1(size, &fractions), "PetscMalloc1");
-  std::copy(g.start.begin(), g.start.end(), ia);
-  std::copy(g.adjacent.begin(), g.adjacent.end(), ja);
-  for (PetscInt k = 0; k < n_nodes; ++k)
-    w[k] = std::max<PetscInt>(weight[k], 1);
-  std::copy(fraction.begin(), fraction.end(), fractions);
   Mat graph = nullptr;
   MatPartitioning partitioning = nullptr;
   IS part = nullptr;
@@ -83,13 +75,25 @@ std::vector<PetscInt> scotch_parts(const Graph& g, const std::vector<PetscInt>& 
     ISDestroy(&part);
     MatPartitioningDestroy(&partitioning);
     MatDestroy(&graph);
-    PetscFree(w); // those not yet handed over
+    PetscFree(ia);
+    PetscFree(ja);
+    PetscFree(w);
     PetscFree(fractions);
   };
   std::vector<PetscInt> owner(n_nodes, 0);
   try {
+    check(PetscMalloc1(n_nodes + 1, &ia), "PetscMalloc1");
+    check(PetscMalloc1(std::max<std::size_t>(g.adjacent.size(), 1), &ja), "PetscMalloc1");
+    check(PetscMalloc1(std::max<PetscInt>(n_nodes, 1), &w), "PetscMalloc1");
+    check(PetscMalloc1(size, &fractions), "PetscMalloc1");
+    std::copy(g.start.begin(), g.start.end(), ia);
+    std::copy(g.adjacent.begin(), g.adjacent.end(), ja);
+    for (PetscInt k = 0; k < n_nodes; ++k)
+      w[k] = std::max<PetscInt>(weight[k], 1);
+    std::copy(fraction.begin(), fraction.end(), fractions);
     check(MatCreateMPIAdj(PETSC_COMM_SELF, n_nodes, n_nodes, ia, ja, nullptr, &graph),
           "MatCreateMPIAdj");
+    ia = ja = nullptr;
     check(MatPartitioningCreate(PETSC_COMM_SELF, &partitioning), "MatPartitioningCreate");
     check(MatPartitioningSetAdjacency(partitioning, graph), "MatPartitioningSetAdjacency");
     check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH),
