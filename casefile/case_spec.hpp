@@ -35,7 +35,8 @@ struct RegionSpec {
   bool carries_current() const { return current_density != 0 || ampere_turns != 0; }
 };
 
-struct CaseSpec {
+// The case's fields; CaseSpec below adds the copy that keeps its regions' materials its own.
+struct CaseFields {
   std::string file;
   int dimension = 2;
   std::string unit_name = "mm";
@@ -61,6 +62,31 @@ struct CaseSpec {
   // `dimension: axi`: a 2D case in the r-z half plane (geometry2d.symmetry says so).
   bool axisymmetric() const {
     return dimension == 2 && geometry2d.symmetry == Symmetry2D::axisymmetric;
+  }
+};
+
+// A region's `material` may point into its case's `materials`; a copy points into its own
+// copy of them, so that it outlives the case it was copied from (an adaptive pass's case
+// with new mesh sizes, a sweep position's). A move keeps the map's nodes, and so the pointers.
+struct CaseSpec : CaseFields {
+  CaseSpec() = default;
+  CaseSpec(const CaseSpec& other) : CaseFields(other) { own_materials_of(other); }
+  CaseSpec(CaseSpec&&) = default;
+  CaseSpec& operator=(const CaseSpec& other) {
+    if (this != &other) {
+      CaseFields::operator=(other);
+      own_materials_of(other);
+    }
+    return *this;
+  }
+  CaseSpec& operator=(CaseSpec&&) = default;
+
+private:
+  void own_materials_of(const CaseSpec& other) {
+    for (auto& region : regions)
+      for (const auto& [name, material] : other.materials)
+        if (region.material == &material)
+          region.material = &materials.at(name);
   }
 };
 
