@@ -5,8 +5,8 @@
 #   process, stage times, pointwise accuracy against the charge model);
 #   the magnetized sphere's r = 12 mm table (wall, pointwise accuracy against the exact field);
 #   the compensator's 8-position FE sweep, --jobs 1 against mpirun -n 2 (and whether sweep.csv
-#   is byte-identical).
-# About 9 min on a quiet 2-core machine (B32_PAIRS=3, SWEEP_PAIRS=3). Run it on a quiet machine: the figures are wall times.
+#   is byte-identical), and --jobs 1 on one thread (the ceiling of that ratio on 2 cores).
+# About 12 min on a quiet 2-core machine (B32_PAIRS=3, SWEEP_PAIRS=3). Run it on a quiet machine: the figures are wall times.
 #   bash scripts/target_timings.sh                 build/magfem, writes docs/target_timings.md
 #   MAGFEM=build2/magfem bash scripts/target_timings.sh   another build of the same commit
 set -euo pipefail
@@ -90,6 +90,10 @@ sweep=(sweep examples/3d/compensator_table42.yaml --rotate outer --axis y --angl
 pairs=${SWEEP_PAIRS:-3}
 for ((k = 1; k <= pairs; ++k)); do
   timed "$out/sweep_serial.$k.time" $magfem "${sweep[@]}" --jobs 1 --out "$out/sweep_serial.$k"
+  # The same on one thread: what each of the two processes does per position, so that
+  # 2 x (--jobs 1) / (one thread) is the ratio a perfect split of the positions would give.
+  MAGFEM_THREADS=1 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 timed "$out/sweep_one_thread.$k.time" \
+    $magfem "${sweep[@]}" --jobs 1 --out "$out/sweep_one_thread.$k"
   settle
   t0=$(date +%s.%N)
   "${mpirun_2[@]}" $magfem "${sweep[@]}" --out "$out/sweep_2ranks.$k" > /dev/null 2>&1
@@ -165,16 +169,18 @@ serial_mb=$(rss_mb "$out/serial.time")
   echo
   echo "## The compensator's FE sweep, 8 positions (issue 33: mpirun -n 2 >= 1.7x the --jobs 1 run)"
   echo
-  echo "| pair | --jobs 1 (s) | mpirun -n 2 (s) | ratio | sweep.csv |"
-  echo "|---|---|---|---|---|"
+  echo "| pair | --jobs 1 (s) | mpirun -n 2 (s) | ratio | one thread (s) | perfect split: 2 x --jobs 1 / one thread | sweep.csv |"
+  echo "|---|---|---|---|---|---|---|"
   for ((k = 1; k <= pairs; ++k)); do
     read -r w_wall _ < "$out/sweep_serial.$k.time"
     w_2=$(cat "$out/sweep_2ranks.$k.wall")
     same=$(cmp -s "$out/sweep_serial.1/sweep.csv" "$out/sweep_2ranks.$k/sweep.csv" &&
       cmp -s "$out/sweep_serial.1/sweep.csv" "$out/sweep_serial.$k/sweep.csv" && echo identical ||
       echo DIFFERENT)
-    printf "| %d | %s | %s | %.2f | %s |\n" "$k" "$w_wall" "$w_2" \
-      "$(awk -v a="$w_wall" -v b="$w_2" 'BEGIN { print a / b }')" "$same"
+    read -r w_one _ < "$out/sweep_one_thread.$k.time"
+    printf "| %d | %s | %s | %.2f | %s | %.2f | %s |\n" "$k" "$w_wall" "$w_2" \
+      "$(awk -v a="$w_wall" -v b="$w_2" 'BEGIN { print a / b }')" "$w_one" \
+      "$(awk -v a="$w_wall" -v b="$w_one" 'BEGIN { print 2 * a / b }')" "$same"
   done
   echo
   median=$(for ((k = 1; k <= pairs; ++k)); do
@@ -183,5 +189,10 @@ serial_mb=$(rss_mb "$out/serial.time")
   done | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
   printf "Median ratio over %d pairs: %.2fx (sweep.csv: every run against the first --jobs 1 run).\n" \
     "$pairs" "$median"
+  echo
+  echo "Two processes on two cores each solve positions on one thread; against a serial run whose"
+  echo "positions use both cores, the ratio cannot exceed 2 x (--jobs 1) / (one thread), the"
+  echo "serial run's own loss to its single-threaded parts. The 1.7x target needs that ceiling"
+  echo "above 1.7, i.e. the serial run's two threads at most 1.18x faster than one."
 } > "$doc"
 cat "$doc"
