@@ -191,8 +191,9 @@ serial_mb=$(rss_mb "$out/serial.time")
     "$pairs" "$median"
   echo
   echo "Two processes on two cores each solve positions on one thread; against a serial run whose"
-  echo "positions use both cores, the ratio cannot exceed 2 x (--jobs 1) / (one thread), the"
-  echo "serial run's own loss to its single-threaded parts. The 1.7x target needs that ceiling"
-  echo "above 1.7, i.e. the serial run's two threads at most 1.18x faster than one."
+  echo "positions use both cores, a perfect split of the one-thread work gives 2 x (--jobs 1) /"
+  echo "(one thread): the ceiling of the ratio, up to the timing noise, set by the serial run's"
+  echo "own single-threaded parts. The 1.7x target needs that ceiling above 1.7, i.e. the serial"
+  echo "run's two threads at most 1.18x faster than one."
 } > "$doc"
 cat "$doc"
