@@ -348,6 +348,18 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
   value = std::move(full.value);
 }
 
+// The smoother's slot for `block`; when the block's factorization is already under way
+// (block_factoring), the smoother is built from it on a thread beside the rest of the set-up
+// and joined by the shell's PCSetUp.
+void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* block) {
+  block_smoother = std::make_unique<BlockSmootherSlot>(
+      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}});
+  if (block_factoring.valid())
+    block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(), this] {
+      return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
+    });
+}
+
 // Two-level p-multigrid as PETSc's PCMG: the given interpolation, the Galerkin coarse operator
 // P^T A P (galerkin_product), one V-cycle per CG iteration, one fixed symmetric operator as CG
 // needs. Smoother, with a smoother block (the open-boundary shell): block Gauss-Seidel
@@ -368,18 +380,6 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
 // local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
 // Each sweep takes the other processes' values from the start of the sweep, through the
 // residual b - A x that PETSc's Richardson computes over the whole matrix.
-// The smoother's slot for `block`; when the block's factorization is already under way
-// (block_factoring), the smoother is built from it on a thread beside the rest of the set-up
-// and joined by the shell's PCSetUp.
-void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* block) {
-  block_smoother = std::make_unique<BlockSmootherSlot>(
-      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}});
-  if (block_factoring.valid())
-    block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(), this] {
-      return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
-    });
-}
-
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
