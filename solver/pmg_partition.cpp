@@ -231,12 +231,6 @@ PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
   for (PetscInt i = 0; i < n; ++i)
     if (part_of[i] == rank)
       out.local_equations[out.order[i] - out.own_begin] = i;
-  {
-    unsigned long long h = 0;
-    for (auto v : part_of)
-      h = h * 1000003ULL + v;
-    fprintf(stderr, "PARTHASH %d %llu\n", rank, h);
-  }
   number(coarse_part, out.coarse_order, start);
   out.coarse_local = start[rank + 1] - start[rank];
   return out;
