@@ -234,7 +234,7 @@ constexpr std::array<CommandHelp, 10> commands{{
      "  out/validate). Exit 0 when nothing fails, 4 when an entry fails, 2 on bad input.\n"
      "  --tier quick (default): every analytic figure and the 2D FE ones, a few minutes on\n"
      "  2 cores; --tier full: also the 3D FE figures on publication meshes (the 32-magnet\n"
-     "  benchmark, the compensator), about an hour on 2 cores and up to ~3 GB per job.\n"
+     "  benchmark, the compensator), about 25 min on 2 cores and up to ~7 GB per job.\n"
      "  FE entries that name an accuracy are solved adaptively to it (results.csv: passes,\n"
      "  unknowns, converged); one that stops at a limit before it fails, saying why.\n"
      "  Finished entries are kept in DIR/.magfem-checkpoint.jsonl as they finish: after\n"

@@ -33,8 +33,6 @@ COARSE_2D = "2"
 
 # --all: the 3D examples whose coarse variant cannot run, with the scale they get instead.
 SCALE_OF = {
-    # Its iron shell's fine mesh: 13 M tetrahedra at scale 3, refused by the memory guard.
-    "benchmark32_bounded": "8",
     # Coarse already (its own mesh.scale 3): at 3 x 3 the magnets' facets, chords ~0.8 mm deep,
     # reach the stress sphere 0.5 mm from them, which then lies in a magnet (a clear error).
     "compensator_adaptive": "1",
