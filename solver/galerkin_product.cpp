@@ -23,31 +23,40 @@ struct Accumulator {
   std::vector<int> owner;
   std::vector<int> touched;
   explicit Accumulator(int m) : sum(m, 0.0), owner(m, -1) {}
+
+  // Adds weight * A(r, :) P to coarse row i, A(r, :) being the CSR entries [first, last) and
+  // P's row for column c being p_row(c).
+  template <class PRowOf>
+  void add(int i, double weight, const int* column, const double* value, int first, int last,
+           const RowMajor& p, const PRowOf& p_row) {
+    const int* p_start = p.outerIndexPtr();
+    const int* p_col = p.innerIndexPtr();
+    const double* p_val = p.valuePtr();
+    for (int e = first; e < last; ++e) {
+      const double v = weight * value[e];
+      const int l = p_row(column[e]);
+      for (int q = p_start[l]; q < p_start[l + 1]; ++q) {
+        const int j = p_col[q];
+        if (owner[j] != i) {
+          owner[j] = i;
+          sum[j] = 0;
+          touched.push_back(j);
+        }
+        sum[j] += v * p_val[q];
+      }
+    }
+  }
 };
 
 void product_rows(const int* a_row_start, const int* a_column, const double* a_value,
                   const RowMajor& p, const RowMajor& pt, int lo, int hi, Accumulator& acc,
                   RowBlock& out) {
-  const int* p_start = p.outerIndexPtr();
-  const int* p_col = p.innerIndexPtr();
-  const double* p_val = p.valuePtr();
   for (int i = lo; i < hi; ++i) {
     acc.touched.clear();
     for (RowMajor::InnerIterator k(pt, i); k; ++k) {
       const int fine_row = static_cast<int>(k.col());
-      for (int e = a_row_start[fine_row]; e < a_row_start[fine_row + 1]; ++e) {
-        const double v = k.value() * a_value[e];
-        const int l = a_column[e];
-        for (int q = p_start[l]; q < p_start[l + 1]; ++q) {
-          const int j = p_col[q];
-          if (acc.owner[j] != i) {
-            acc.owner[j] = i;
-            acc.sum[j] = 0;
-            acc.touched.push_back(j);
-          }
-          acc.sum[j] += v * p_val[q];
-        }
-      }
+      acc.add(i, k.value(), a_column, a_value, a_row_start[fine_row], a_row_start[fine_row + 1], p,
+              [](int c) { return c; });
     }
     std::sort(acc.touched.begin(), acc.touched.end());
     out.length.push_back(static_cast<int>(acc.touched.size()));
@@ -86,6 +95,51 @@ CsrMatrix galerkin_product(const int* a_row_start, const int* a_column, const do
     c.column.insert(c.column.end(), b.column.begin(), b.column.end());
     c.value.insert(c.value.end(), b.value.begin(), b.value.end());
   }
+  return c;
+}
+
+CsrMatrix partial_galerkin_product(int n_rows, const std::vector<CsrRowBlock>& blocks,
+                                   const int* row_equation, const RowMajor& p,
+                                   std::vector<int>& coarse_rows) {
+  const int m = static_cast<int>(p.cols());
+  const int* p_start = p.outerIndexPtr();
+  const int* p_col = p.innerIndexPtr();
+  const double* p_val = p.valuePtr();
+  // P's entries on these rows, by coarse unknown (then row: a fixed order of the sums).
+  struct Entry {
+    int coarse, row;
+    double weight;
+  };
+  std::vector<Entry> entries;
+  for (int r = 0; r < n_rows; ++r)
+    for (int k = p_start[row_equation[r]]; k < p_start[row_equation[r] + 1]; ++k)
+      entries.push_back({p_col[k], r, p_val[k]});
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.coarse != b.coarse ? a.coarse < b.coarse : a.row < b.row;
+  });
+  Accumulator acc(m);
+  CsrMatrix c;
+  c.cols = m;
+  c.row_start.push_back(0);
+  coarse_rows.clear();
+  for (std::size_t first = 0; first < entries.size();) {
+    const int i = entries[first].coarse;
+    acc.touched.clear();
+    std::size_t k = first;
+    for (; k < entries.size() && entries[k].coarse == i; ++k)
+      for (const CsrRowBlock& b : blocks)
+        acc.add(i, entries[k].weight, b.column, b.value, b.row_start[entries[k].row],
+                b.row_start[entries[k].row + 1], p, [&b](int c) { return b.column_equation[c]; });
+    first = k;
+    std::sort(acc.touched.begin(), acc.touched.end());
+    for (int j : acc.touched) {
+      c.column.push_back(j);
+      c.value.push_back(acc.sum[j]);
+    }
+    c.row_start.push_back(static_cast<int>(c.column.size()));
+    coarse_rows.push_back(i);
+  }
+  c.rows = static_cast<int>(coarse_rows.size());
   return c;
 }
 

@@ -30,4 +30,24 @@ CsrMatrix galerkin_product(const int* a_row_start, const int* a_column, const do
                            const Eigen::SparseMatrix<double, Eigen::RowMajor>& p, int threads = 0,
                            std::size_t block_rows = galerkin_block_rows);
 
+// One block of the rows a process owns of a distributed A (PETSc keeps them as a diagonal and
+// an off-diagonal block): CSR over those rows, `column_equation[c]` the row of P that column c
+// stands for.
+struct CsrRowBlock {
+  const int* row_start = nullptr;
+  const int* column = nullptr;
+  const double* value = nullptr;
+  const int* column_equation = nullptr;
+};
+
+// A process's share of P^T A P: sum over its rows r of P(r, :)^T A(r, :) P, where
+// `row_equation[r]` is the row of P of its row r (r < n_rows) and A's row r is the sum of the
+// blocks' rows r. Rows are the coarse unknowns those rows of P touch (ascending, into
+// `coarse_rows`), columns P's (m), sorted. Summed over the processes' shares (in any fixed
+// order) it is P^T A P; each entry adds in a fixed order, so the same bits every run.
+CsrMatrix partial_galerkin_product(int n_rows, const std::vector<CsrRowBlock>& blocks,
+                                   const int* row_equation,
+                                   const Eigen::SparseMatrix<double, Eigen::RowMajor>& p,
+                                   std::vector<int>& coarse_rows);
+
 } // namespace magfem

@@ -22,6 +22,7 @@
 #include "core/thread_count.hpp"
 #include "solver/block_smoother.hpp"
 #include "solver/csr_product.hpp"
+#include "solver/distributed_galerkin_product.hpp"
 #include "solver/full_csr.hpp"
 #include "solver/galerkin_product.hpp"
 #include "solver/mpi_world_backend.hpp"
@@ -466,8 +467,8 @@ void PetscKspSolver::Impl::set_up_serial_coarse_space(
 // evenly over the processes rather than following the fine rows of their vertices: the DOF
 // numbering puts the vertices first, so with rows in contiguous blocks the first process
 // would own every P1 unknown and do the whole coarse level alone. The coarse operator
-// P^T A P by PETSc's distributed triple product. Then the smoother's diagonal block
-// (take_diagonal_block), unless start_distributed_block_factor took it already.
+// P^T A P by distributed_galerkin_product (each process its rows' share). Then the smoother's
+// diagonal block (take_diagonal_block), unless start_distributed_block_factor took it already.
 void PetscKspSolver::Impl::set_up_distributed_coarse_space(
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& q) {
   PetscInt n = 0, begin = 0, end = 0;
@@ -506,15 +507,11 @@ void PetscKspSolver::Impl::set_up_distributed_coarse_space(
   }
   check(MatAssemblyBegin(p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin (interpolation)");
   check(MatAssemblyEnd(p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd (interpolation)");
-  check(MatPtAP(a, p, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse), "MatPtAP (coarse operator)");
-  // The product's intermediates (A P and P's off-process rows), kept by PETSc for a numeric
-  // product again, are never reused (a new set-up builds all anew): freed before the smoother's
-  // factor and BoomerAMG are set up, where the process's memory peaks (a fifth of PETSc's
-  // share of it on process 0, benchmark32).
-  check(MatProductClear(coarse), "MatProductClear (coarse operator)");
-  // And their pages given back now: the shell's factor, running meanwhile on a thread of its
-  // own (start_distributed_block_factor), allocates in that thread's arena, not in the pages
-  // freed here (benchmark32, process 0: 2.35 GB at the peak without this, 1.87 GB with it).
+  coarse = distributed_galerkin_product(a, q, partition, c_begin, c_end);
+  // The product's scratch pages given back now: the shell's factor, running meanwhile on a
+  // thread of its own (start_distributed_block_factor), allocates in that thread's arena, not
+  // in the pages freed here (benchmark32, process 0, with PETSc's MatPtAP: 2.35 GB at the peak
+  // without this, 1.87 GB with it).
   malloc_trim(0);
 
   if (!diag_block.row_start)
