@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -175,6 +176,11 @@ public:
       : BlockSmoother(a, block_places(a.rows, block)) {
     if (!block_.empty() && !factor)
       throw SolveError("internal: a smoother block without its factor");
+    // A factor computed apart (another thread, another copy of the block) must be this one's.
+    if (factor && factor->rows() != static_cast<Eigen::Index>(block_.size()))
+      throw SolveError("internal: the smoother block's factor has " +
+                       std::to_string(factor->rows()) + " rows for a block of " +
+                       std::to_string(block_.size()) + " equations");
     factor_ = std::move(factor);
   }
 

@@ -280,6 +280,7 @@ struct PetscKspSolver::Impl {
   // smoother block's equations among its rows (local numbering).
   bool distributed = false;
   bool factor_on_node_cores = false; // start_distributed_block_factor
+  bool block_factor_started = false; // by assemble_own_rows, before the matrix is built
   CsrView diag_block;
   std::vector<int> local_block;
   // Distributed pmg: the rows each process owns (pmg_partition.hpp): options.rows when given
@@ -309,6 +310,7 @@ struct PetscKspSolver::Impl {
       VecDestroy(&rhs);
     block_smoother.reset();
     block_factoring = {}; // waits for a factorization still running
+    block_factor_started = false;
     diag_block = {};      // pointed into `a`
   }
   void to_full_csr(const Eigen::SparseMatrix<double>& lower);
@@ -335,7 +337,7 @@ struct PetscKspSolver::Impl {
   void set_up_serial_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
   void set_up_distributed_coarse_space(const Eigen::SparseMatrix<double, Eigen::RowMajor>& q);
   void take_diagonal_block();
-  void start_distributed_block_factor();
+  void start_distributed_block_factor(const Eigen::SparseMatrix<double>* own_rows);
   bool runs_block_vcycle() const;
   void multiply_many(const ColumnBlock& x, ColumnBlock& y) const;
   void vcycle_many(const ColumnBlock& r, ColumnBlock& z);
@@ -605,26 +607,40 @@ void PetscKspSolver::Impl::set_up_ksp(MPI_Comm comm) {
 }
 
 // Distributed pmg: process 0, which owns the open-boundary shell (pmg_partition.hpp), factors
-// it on a thread from the start of the set-up, beside the coarse space, the Galerkin product
-// and BoomerAMG's set-up, as the serial set-up does; and on every core of its machine, with
-// as many BLAS threads, since the other processes, their share of the set-up done, wait for
-// it in set_up_ksp's idle barrier. Collective.
-void PetscKspSolver::Impl::start_distributed_block_factor() {
+// it on a thread beside the rest of the set-up (the coarse space, the Galerkin product and
+// BoomerAMG's set-up), as the serial set-up does; and on every core of its machine, with as
+// many BLAS threads, since the other processes, their share of the set-up done, wait for it
+// in set_up_ksp's idle barrier. With own-row assembly (`own_rows`: this process's lower
+// triangle, its rows whole) the block is complete in it before the MPIAIJ matrix exists, and
+// in the diagonal block's order (a process's rows follow its equations' order), so the factor
+// starts before own_row_matrix; else from the assembled matrix's diagonal block. Collective.
+void PetscKspSolver::Impl::start_distributed_block_factor(
+    const Eigen::SparseMatrix<double>* own_rows) {
   factor_on_node_cores = false;
   if (options.preconditioner != "pmg" || !options.petsc_options.empty() ||
       !options.concurrent_block_factor || !options.smoother_block ||
       options.smoother_block->empty())
     return;
-  take_diagonal_block();
   const cpu_set_t cores = node_cores();
   factor_on_node_cores = true;
-  if (local_block.empty())
-    return;
-  block_factoring = std::async(
-      std::launch::async,
-      [&cache = block_factor,
-       lower = block_lower_triangle(diag_block, block_places(diag_block.rows, local_block)),
-       cores] {
+  Eigen::SparseMatrix<double> block;
+  if (own_rows) {
+    std::vector<int> own; // the block's equations among this process's rows, ascending
+    for (int e : *options.smoother_block)
+      if (partition().owns(e))
+        own.push_back(e);
+    std::sort(own.begin(), own.end());
+    if (own.empty())
+      return;
+    block = block_lower_triangle(*own_rows, own);
+  } else {
+    take_diagonal_block();
+    if (local_block.empty())
+      return;
+    block = block_lower_triangle(diag_block, block_places(diag_block.rows, local_block));
+  }
+  block_factoring =
+      std::async(std::launch::async, [&cache = block_factor, lower = std::move(block), cores] {
         const ThreadOnCores on(cores);
         const BlasThreads blas(std::max(1, CPU_COUNT(&cores)));
         return factorize_block(lower, cache);
@@ -869,6 +885,8 @@ void PetscKspSolver::assemble_own_rows(const Eigen::SparseMatrix<double>& lower)
   m.release();
   m.distributed = true;
   m.partition_in_use = m.options.rows;
+  m.start_distributed_block_factor(&lower);
+  m.block_factor_started = true;
   m.a = own_row_matrix(lower, m.partition());
   check(VecCreateMPI(PETSC_COMM_WORLD, m.partition().own_end - m.partition().own_begin,
                      static_cast<PetscInt>(lower.rows()), &m.rhs),
@@ -881,7 +899,9 @@ void PetscKspSolver::setup_distributed() {
   Impl& m = *impl_;
   check(MatAssemblyBegin(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(m.a, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-  m.start_distributed_block_factor();
+  if (!m.block_factor_started)
+    m.start_distributed_block_factor(nullptr);
+  m.block_factor_started = false;
   m.set_up_ksp(PETSC_COMM_WORLD);
 }
 
