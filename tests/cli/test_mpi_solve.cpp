@@ -198,6 +198,16 @@ void expect_serial_pmg(const fs::path& dir, const std::string& args, int n, doub
   EXPECT_EQ(note.find("tetrahedra of its own rows") != std::string::npos, own_rows) << note;
 }
 
+// Every line is one of the report's ("mesh     26729 tetrahedra, ...").
+bool only_report_lines(const std::string& text) {
+  static const std::regex report_line("[a-z][a-z ]{7} [^ ].*");
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (!std::regex_match(line, report_line))
+      return false;
+  return true;
+}
+
 } // namespace
 
 // The open-boundary shell: its block on process 0, by Cholesky.
@@ -209,18 +219,6 @@ TEST_F(MpiSolve, PmgOnTwoAndThreeProcessesKeepsTheSerialField) {
                       n == 2 ? pmg_iteration_ratio_two_processes : pmg_iteration_ratio);
   fs::remove_all(dir);
 }
-
-namespace {
-// Every line is one of the report's ("mesh     26729 tetrahedra, ...").
-bool only_report_lines(const std::string& text) {
-  static const std::regex report_line("[a-z][a-z ]{7} [^ ].*");
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);)
-    if (!std::regex_match(line, report_line))
-      return false;
-  return true;
-}
-} // namespace
 
 // The same case on the same processes twice gives the same bytes: the mesh's partition is
 // the same in every run (solver/pmg_partition.hpp). With PT-Scotch over the processes, or
