@@ -6,6 +6,7 @@
 #include "core/input_error.hpp"
 #include "solver/galerkin_product.hpp"
 #include "solver/petsc_check.hpp"
+#include "solver/sparse_row_accumulator.hpp"
 
 namespace magfem::petsc_module {
 
@@ -47,9 +48,9 @@ Share share_of_own_rows(Mat a, const Eigen::SparseMatrix<double, Eigen::RowMajor
   if (is_mpi)
     check(MatMPIAIJGetSeqAIJ(a, &diag, &off, &off_rows), "MatMPIAIJGetSeqAIJ");
   // The diagonal block's columns are the process's own rows, so one map serves both.
-  std::vector<int> own_equation(rows.local_equations.begin(), rows.local_equations.end());
+  const int* own_equation = rows.local_equations.data();
   const SeqCsr d = csr_of(diag);
-  std::vector<CsrRowBlock> blocks = {{d.row_start, d.column, d.value, own_equation.data()}};
+  std::vector<CsrRowBlock> blocks = {{d.row_start, d.column, d.value, own_equation}};
   std::vector<int> off_equation;
   if (off) {
     PetscInt n_off = 0;
@@ -64,8 +65,8 @@ Share share_of_own_rows(Mat a, const Eigen::SparseMatrix<double, Eigen::RowMajor
     blocks.push_back({o.row_start, o.column, o.value, off_equation.data()});
   }
   Share s;
-  s.rows = partial_galerkin_product(static_cast<int>(end - begin), blocks, own_equation.data(), q,
-                                    s.coarse);
+  s.rows =
+      partial_galerkin_product(static_cast<int>(end - begin), blocks, own_equation, q, s.coarse);
   for (int& c : s.coarse)
     c = rows.coarse_order[static_cast<std::size_t>(c)];
   for (int& c : s.rows.column)
@@ -144,26 +145,12 @@ CsrMatrix sum_received(const std::vector<int>& index, const std::vector<double>&
   c.rows = static_cast<int>(n_rows);
   c.cols = m;
   c.row_start.push_back(0);
-  std::vector<double> sum(static_cast<std::size_t>(m), 0.0);
-  std::vector<char> seen(static_cast<std::size_t>(m), 0);
-  std::vector<int> touched;
+  SparseRowAccumulator acc(m);
   for (std::size_t i = 0; i < n_rows; ++i) {
-    touched.clear();
-    for (int k = start[i]; k < start[i + 1]; ++k) {
-      const auto j = static_cast<std::size_t>(column[static_cast<std::size_t>(k)]);
-      if (!seen[j]) {
-        seen[j] = 1;
-        sum[j] = 0;
-        touched.push_back(static_cast<int>(j));
-      }
-      sum[j] += entry[static_cast<std::size_t>(k)];
-    }
-    std::sort(touched.begin(), touched.end());
-    for (int j : touched) {
-      c.column.push_back(j);
-      c.value.push_back(sum[static_cast<std::size_t>(j)]);
-      seen[static_cast<std::size_t>(j)] = 0;
-    }
+    acc.begin_row();
+    for (int k = start[i]; k < start[i + 1]; ++k)
+      acc.add(column[static_cast<std::size_t>(k)], entry[static_cast<std::size_t>(k)]);
+    acc.append_row(c.column, c.value);
     c.row_start.push_back(static_cast<int>(c.column.size()));
   }
   return c;

@@ -4,6 +4,7 @@
 
 #include "core/parallel_blocks.hpp"
 #include "core/thread_count.hpp"
+#include "solver/sparse_row_accumulator.hpp"
 
 namespace magfem {
 namespace {
@@ -16,54 +17,17 @@ struct RowBlock {
   std::vector<double> value;
 };
 
-// Scratch of one thread: a dense accumulator over the coarse unknowns and the row it last
-// touched (so it is cleared by the touched list, not by a sweep of all m entries).
-struct Accumulator {
-  std::vector<double> sum;
-  std::vector<int> owner;
-  std::vector<int> touched;
-  explicit Accumulator(int m) : sum(m, 0.0), owner(m, -1) {}
-
-  // Adds weight * A(r, :) P to coarse row i, A(r, :) being the CSR entries [first, last) and
-  // P's row for column c being p_row(c).
-  template <class PRowOf>
-  void add(int i, double weight, const int* column, const double* value, int first, int last,
-           const RowMajor& p, const PRowOf& p_row) {
-    const int* p_start = p.outerIndexPtr();
-    const int* p_col = p.innerIndexPtr();
-    const double* p_val = p.valuePtr();
-    for (int e = first; e < last; ++e) {
-      const double v = weight * value[e];
-      const int l = p_row(column[e]);
-      for (int q = p_start[l]; q < p_start[l + 1]; ++q) {
-        const int j = p_col[q];
-        if (owner[j] != i) {
-          owner[j] = i;
-          sum[j] = 0;
-          touched.push_back(j);
-        }
-        sum[j] += v * p_val[q];
-      }
-    }
-  }
-};
-
 void product_rows(const int* a_row_start, const int* a_column, const double* a_value,
-                  const RowMajor& p, const RowMajor& pt, int lo, int hi, Accumulator& acc,
+                  const RowMajor& p, const RowMajor& pt, int lo, int hi, SparseRowAccumulator& acc,
                   RowBlock& out) {
   for (int i = lo; i < hi; ++i) {
-    acc.touched.clear();
+    acc.begin_row();
     for (RowMajor::InnerIterator k(pt, i); k; ++k) {
       const int fine_row = static_cast<int>(k.col());
-      acc.add(i, k.value(), a_column, a_value, a_row_start[fine_row], a_row_start[fine_row + 1], p,
-              [](int c) { return c; });
+      acc.add_times_p(k.value(), a_column, a_value, a_row_start[fine_row],
+                      a_row_start[fine_row + 1], p, [](int c) { return c; });
     }
-    std::sort(acc.touched.begin(), acc.touched.end());
-    out.length.push_back(static_cast<int>(acc.touched.size()));
-    for (int j : acc.touched) {
-      out.column.push_back(j);
-      out.value.push_back(acc.sum[j]);
-    }
+    out.length.push_back(acc.append_row(out.column, out.value));
   }
 }
 
@@ -76,7 +40,7 @@ CsrMatrix galerkin_product(const int* a_row_start, const int* a_column, const do
   std::vector<RowBlock> blocks(block_count(static_cast<std::size_t>(m), block));
   if (threads <= 0)
     threads = available_threads();
-  std::vector<Accumulator> scratch;
+  std::vector<SparseRowAccumulator> scratch;
   for (int t = 0; t < threads; ++t)
     scratch.emplace_back(m);
   parallel_blocks_by_worker(static_cast<std::size_t>(m), block, threads,
@@ -117,25 +81,22 @@ CsrMatrix partial_galerkin_product(int n_rows, const std::vector<CsrRowBlock>& b
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     return a.coarse != b.coarse ? a.coarse < b.coarse : a.row < b.row;
   });
-  Accumulator acc(m);
+  SparseRowAccumulator acc(m);
   CsrMatrix c;
   c.cols = m;
   c.row_start.push_back(0);
   coarse_rows.clear();
   for (std::size_t first = 0; first < entries.size();) {
     const int i = entries[first].coarse;
-    acc.touched.clear();
+    acc.begin_row();
     std::size_t k = first;
     for (; k < entries.size() && entries[k].coarse == i; ++k)
       for (const CsrRowBlock& b : blocks)
-        acc.add(i, entries[k].weight, b.column, b.value, b.row_start[entries[k].row],
-                b.row_start[entries[k].row + 1], p, [&b](int c) { return b.column_equation[c]; });
+        acc.add_times_p(entries[k].weight, b.column, b.value, b.row_start[entries[k].row],
+                        b.row_start[entries[k].row + 1], p,
+                        [&b](int c) { return b.column_equation[c]; });
     first = k;
-    std::sort(acc.touched.begin(), acc.touched.end());
-    for (int j : acc.touched) {
-      c.column.push_back(j);
-      c.value.push_back(acc.sum[j]);
-    }
+    acc.append_row(c.column, c.value);
     c.row_start.push_back(static_cast<int>(c.column.size()));
     coarse_rows.push_back(i);
   }
