@@ -35,6 +35,7 @@
 #include "mesh/surface_part_rays3d.hpp"
 #include "mesh/tetgen_shared_state.hpp"
 #include "mesh/tetgen_termination.hpp"
+#include "mesh/unresolved_gaps3d.hpp"
 
 namespace magfem {
 // mesh/tetgen_termination.cpp: TetGen errors reach our catch instead of aborting.
@@ -194,14 +195,6 @@ bool is_air_part(const Geometry3D& geo, const GridFace3D& face) {
   const int part = is_air(face.label_low) ? face.label_high : face.label_low;
   return part >= 0 && geo.parts[static_cast<std::size_t>(part)].air;
 }
-
-// Air gaps the mesh cannot resolve: per pair of parts (lower index first), the narrowest such
-// gap (m), the element size across it (m), and the middle of the gap where it is narrowest.
-struct UnresolvedGap {
-  double width = 0, across = 0;
-  Vec3 middle = Vec3::Zero();
-};
-using UnresolvedGaps = std::map<std::pair<int, int>, UnresolvedGap>;
 
 // Adds point sources for every face sample (its intrinsic size) and for narrow air gaps.
 // Gaps across which the element size stays above order x the gap width (the element nodes
@@ -660,35 +653,6 @@ std::vector<double> requested_sizes(const Mesh3D& m, const SizeRules& rules,
   return h;
 }
 
-// One warning per pair of parts with an unresolved gap: elements across it whose nodes (an
-// element of size h has them h / order apart) are farther apart than the gap is wide. A mesh
-// always has one layer of elements across a gap (the parts' faces are element faces); what a
-// coarse one lacks is nodes inside it. A warning, not a refusal: the mesh is valid and the
-// answer usable (a coarse --mesh-scale run is often a deliberate first look or a convergence
-// study's coarsest step), but the field in the gap, and a force across it, are not resolved.
-std::vector<std::string> unresolved_gap_warnings(const Geometry3D& geo, double scale,
-                                                 const UnresolvedGaps& unresolved) {
-  std::vector<std::string> out;
-  const int layers = std::max(1, geo.options.gap_layers);
-  const int order = std::max(1, geo.options.element_order);
-  for (const auto& [pair, gap] : unresolved) {
-    if (gap.across <= order * gap.width)
-      continue;
-    char text[480];
-    std::snprintf(text, sizeof text,
-                  "the %.3g mm air gap between parts '%s' and '%s' has elements of about %.3g "
-                  "mm across it, their nodes (order %d) farther apart than the gap is wide "
-                  "(gap_layers %d, sizes scaled by %.3g in all: the case's mesh scale times "
-                  "--mesh-scale): the field in the gap is not resolved; scale the sizes by at "
-                  "most %d in all, or make the mesh size near the gap smaller",
-                  gap.width * 1e3, geo.parts[static_cast<std::size_t>(pair.first)].name.c_str(),
-                  geo.parts[static_cast<std::size_t>(pair.second)].name.c_str(), gap.across * 1e3,
-                  order, layers, scale, order * layers);
-    out.emplace_back(text);
-  }
-  return out;
-}
-
 // Points on the triangle abc at most about `step` apart (a barycentric grid).
 std::vector<Vec3> triangle_samples(const Vec3& a, const Vec3& b, const Vec3& c, double step) {
   const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
@@ -855,7 +819,11 @@ Mesh3D build_mesh_3d(const Geometry3D& geo, const std::vector<ProbeSurface>& ref
   }
   Mesh3D m = collect_mesh(geo, dec, surf, out);
   m.split_radius = split ? split->radius : 0.0;
-  m.warnings = unresolved_gap_warnings(geo, rules.scale, unresolved);
+  std::vector<std::string> part_names;
+  for (const auto& part : geo.parts)
+    part_names.push_back(part.name);
+  m.warnings = unresolved_gap_warnings(part_names, geo.options.element_order,
+                                       geo.options.gap_layers, rules.scale, unresolved);
   m.tet_size = requested_sizes(m, rules, field);
   return m;
 }
