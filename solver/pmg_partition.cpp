@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <exception>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -13,6 +12,7 @@
 #include <scotch/scotch.h>
 
 #include "core/input_error.hpp"
+#include "solver/on_root_for_all.hpp"
 #include "solver/petsc_check.hpp"
 
 namespace magfem::petsc_module {
@@ -186,23 +186,13 @@ PmgPartition partition_for_pmg(const Eigen::SparseMatrix<double>& lower_pattern,
   // field moved in the last digits), and so did Scotch alone on each process, by its threads
   // and its clock-seeded random generator (scotch_parts).
   std::vector<PetscInt> coarse_part(m, 0);
-  std::string failure;
-  if (rank == 0) {
-    try {
-      const std::vector<PetscInt> owner =
-          scotch_parts(p1_graph(lower_pattern, vertex_coarse, node, n_nodes), weight, fraction);
-      for (PetscInt c = 0; c < m; ++c)
-        if (node[c] >= 0)
-          coarse_part[c] = owner[node[c]];
-    } catch (const std::exception& e) {
-      failure = e.what();
-    }
-  }
-  // The outcome first, so that a failure on process 0 ends every process alike.
-  int failed = !failure.empty();
-  MPI_Bcast(&failed, 1, MPI_INT, 0, PETSC_COMM_WORLD);
-  if (failed)
-    throw SolveError(rank == 0 ? failure : "the mesh's partition failed on process 0");
+  on_root_for_all(PETSC_COMM_WORLD, "the mesh's partition", [&] {
+    const std::vector<PetscInt> owner =
+        scotch_parts(p1_graph(lower_pattern, vertex_coarse, node, n_nodes), weight, fraction);
+    for (PetscInt c = 0; c < m; ++c)
+      if (node[c] >= 0)
+        coarse_part[c] = owner[node[c]];
+  });
   MPI_Bcast(coarse_part.data(), static_cast<int>(m), MPIU_INT, 0, PETSC_COMM_WORLD);
   // Rows: a process's equations after the previous processes'; an equation with no free
   // vertex (rare: a midpoint between two boundary vertices) by its place in the numbering.
