@@ -1,9 +1,10 @@
 #pragma once
 // Inside the PETSc module: the distributed MPIAIJ matrix of own-row assembly
 // (distributed_rows.hpp). Each process gives the lower triangle it assembled from the
-// tetrahedra touching its rows; the full rows it owns are complete in it, and only those are
-// set, with their exact preallocation: no entry goes to another process (no stash, no
-// message at assembly), and the entries of its ghost tetrahedra outside its rows are left out.
+// tetrahedra touching its rows; the full rows it owns are complete in it, and only those go
+// into the matrix, as PETSc's two blocks of them read in place (no copy, no entry inserted one
+// by one): no entry goes to another process (no stash, no message at assembly), and the
+// entries of its ghost tetrahedra outside its rows are left out.
 #include <petscmat.h>
 
 #include <Eigen/SparseCore>
