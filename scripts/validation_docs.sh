@@ -19,6 +19,9 @@ fi
 page="docs/validation_$tier.md"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+# The checkout as the run starts (a long run outlives edits made beside it).
+commit=$(git rev-parse --short=12 HEAD)
+dirty=$(git diff --quiet HEAD -- . ':!docs' && echo "" || echo " (with uncommitted changes)")
 rc=0
 start=$(date +%s)
 build/magfem validate --tier "$tier" --out "$out" > "$out/console.txt" 2>&1 || rc=$?
@@ -28,8 +31,6 @@ if [[ ! -s "$out/report.md" ]]; then
   echo "validation_docs: magfem validate wrote no report (exit $rc)" >&2
   exit $((rc == 0 ? 1 : rc))
 fi
-commit=$(git rev-parse --short=12 HEAD)
-dirty=$(git diff --quiet HEAD -- . ':!docs' && echo "" || echo " (with uncommitted changes)")
 {
   echo "# Validation, $tier tier"
   echo
