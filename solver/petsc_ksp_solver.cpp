@@ -26,6 +26,7 @@
 #include "solver/full_csr.hpp"
 #include "solver/galerkin_product.hpp"
 #include "solver/mpi_world_backend.hpp"
+#include "solver/off_process_rows.hpp"
 #include "solver/own_row_matrix.hpp"
 #include "solver/petsc_check.hpp"
 #include "solver/pmg_partition.hpp"
@@ -184,6 +185,7 @@ struct BlockSmootherSlot {
   BlockFactorCache* cache = nullptr;
   std::unique_ptr<BlockSmoother> smoother;
   std::future<std::unique_ptr<BlockSmoother>> building; // joined after KSPSetUp
+  std::unique_ptr<OffProcessRows> off_process;          // distributed only
 };
 
 BlockSmoother& block_smoother_of(PC pc) {
@@ -218,6 +220,40 @@ PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
   block_smoother_of(pc).smooth(vb, vx, Down, zero_guess, its, available_threads());
   PetscCall(VecRestoreArray(x, &vx));
   PetscCall(VecRestoreArrayRead(b, &vb));
+  *done = its;
+  *reason = PCRICHARDSON_CONVERGED_ITS;
+  return 0;
+}
+
+// Distributed: the same sweeps over the process's diagonal block, in place, the other
+// processes' unknowns held at their values from the start of each sweep (block Jacobi across
+// the processes): b - A_off x is the block's right-hand side. The same step as Richardson's
+// x + M^-1 (b - A x) with M the block's splitting, without forming b - A x over the whole
+// matrix first (a product of the whole matrix per V-cycle).
+template <bool Down>
+PetscErrorCode smooth_richardson_distributed(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
+                                             PetscReal, PetscInt its, PetscBool zero_guess,
+                                             PetscInt* done, PCRichardsonConvergedReason* reason) {
+  void* context = nullptr;
+  PetscCall(PCShellGetContext(pc, &context));
+  auto& slot = *static_cast<BlockSmootherSlot*>(context);
+  try {
+    for (PetscInt it = 0; it < its; ++it) {
+      const bool from_zero = zero_guess && it == 0;
+      const PetscScalar* vb = nullptr;
+      PetscCall(VecGetArrayRead(b, &vb));
+      // From zero the other processes' values are zero too.
+      const double* rhs = from_zero ? vb : slot.off_process->subtract_from(vb, x);
+      PetscScalar* vx = nullptr;
+      PetscCall(VecGetArray(x, &vx));
+      slot.smoother->smooth(rhs, vx, Down, from_zero, 1, available_threads());
+      PetscCall(VecRestoreArray(x, &vx));
+      PetscCall(VecRestoreArrayRead(b, &vb));
+    }
+  } catch (const std::exception& e) { // no exception through PETSc's C frames
+    return PetscError(PETSC_COMM_SELF, __LINE__, "smooth_richardson_distributed", __FILE__,
+                      PETSC_ERR_LIB, PETSC_ERROR_INITIAL, "%s", e.what());
+  }
   *done = its;
   *reason = PCRICHARDSON_CONVERGED_ITS;
   return 0;
@@ -311,7 +347,7 @@ struct PetscKspSolver::Impl {
     block_smoother.reset();
     block_factoring = {}; // waits for a factorization still running
     block_factor_started = false;
-    diag_block = {};      // pointed into `a`
+    diag_block = {}; // pointed into `a`
   }
   void to_full_csr(const Eigen::SparseMatrix<double>& lower);
   void set_up_ksp(MPI_Comm comm);
@@ -356,7 +392,7 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
 // and joined by the shell's PCSetUp.
 void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* block) {
   block_smoother = std::make_unique<BlockSmootherSlot>(
-      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}});
+      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}, nullptr});
   if (block_factoring.valid())
     block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(), this] {
       return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
@@ -381,8 +417,8 @@ void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* bloc
 // coarse level, and as smoother block Jacobi across the processes whose local part is the
 // serial smoother on the process's diagonal block: Gauss-Seidel (PETSc's SOR on MPIAIJ is
 // local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
-// Each sweep takes the other processes' values from the start of the sweep, through the
-// residual b - A x that PETSc's Richardson computes over the whole matrix.
+// Each sweep takes the other processes' values from the start of the sweep
+// (smooth_richardson_distributed: b - A_off x, OffProcessRows).
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
@@ -404,8 +440,10 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   check(PCMGSetGalerkin(pc, PC_MG_GALERKIN_NONE), "PCMGSetGalerkin");
   KSP coarse_ksp = nullptr;
   if (has_block) {
-    if (distributed) // the process's diagonal block is known once the coarse space is
+    if (distributed) { // the process's diagonal block is known once the coarse space is
       make_block_smoother_slot(&local_block);
+      block_smoother->off_process = std::make_unique<OffProcessRows>(a);
+    }
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
@@ -417,9 +455,11 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
       check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
       check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
       const bool is_down = smoother == down;
-      // Distributed, the smoother sees only its diagonal block: Richardson forms the residual
-      // over the whole matrix and applies the local sweep to it from zero.
-      if (!distributed)
+      if (distributed)
+        check(PCShellSetApplyRichardson(shell, is_down ? smooth_richardson_distributed<true>
+                                                       : smooth_richardson_distributed<false>),
+              "PCShellSetApplyRichardson");
+      else
         check(PCShellSetApplyRichardson(shell, is_down ? smooth_richardson<true>
                                                        : smooth_richardson<false>),
               "PCShellSetApplyRichardson");
