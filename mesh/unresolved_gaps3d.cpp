@@ -22,48 +22,37 @@ std::string some_names(const std::vector<std::string>& names) {
   return out;
 }
 
-std::string advice(int order, int layers, double scale) {
-  char text[300];
-  std::snprintf(text, sizeof text,
-                "their nodes (order %d) farther apart than %s wide (gap_layers %d, sizes "
-                "scaled by %.3g in all: the case's mesh scale times --mesh-scale): the field in "
-                "%s not resolved; scale the sizes by at most %d in all, or make the mesh size "
-                "near %s smaller",
-                order, "%GAP_IS%", layers, scale, "%FIELD%", order * layers, "%NEAR%");
+// A length in mm or a factor, to 3 significant digits.
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
   return text;
 }
 
-std::string replaced(std::string s, const std::string& what, const std::string& by) {
-  s.replace(s.find(what), what.size(), by);
-  return s;
+// What the warning says after its gaps and their elements, for one gap or several.
+std::string consequence(int order, int layers, double scale, bool several) {
+  const std::string gap = several ? "the gaps" : "the gap";
+  return "their nodes (order " + std::to_string(order) + ") farther apart than " + gap +
+         (several ? " are" : " is") + " wide (gap_layers " + std::to_string(layers) +
+         ", sizes scaled by " + number(scale) +
+         " in all: the case's mesh scale times --mesh-scale): the field in " +
+         (several ? "these gaps" : "the gap") + " is not resolved; scale the sizes by at most " +
+         std::to_string(order * layers) + " in all, or make the mesh size near " + gap + " smaller";
 }
 
-std::string one_gap(const std::string& a, const std::string& b, const UnresolvedGap& gap,
-                    const std::string& tail) {
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "the %.3g mm air gap between parts %s and %s has elements of about %.3g mm "
-                "across it, ",
-                gap.width * 1e3, quoted(a).c_str(), quoted(b).c_str(), gap.across * 1e3);
-  return text +
-         replaced(replaced(replaced(tail, "%GAP_IS%", "the gap is"), "%FIELD%", "the gap is"),
-                  "%NEAR%", "the gap");
+std::string one_gap(const std::string& a, const std::string& b, const UnresolvedGap& gap) {
+  return "the " + number(gap.width * 1e3) + " mm air gap between parts " + quoted(a) + " and " +
+         quoted(b) + " has elements of about " + number(gap.across * 1e3) + " mm across it, ";
 }
 
 std::string gaps_of_one_part(const std::string& part, const std::vector<std::string>& others,
-                             double narrowest, double widest, double across,
-                             const std::string& tail) {
-  char widths[80], size[40];
-  if (narrowest == widest)
-    std::snprintf(widths, sizeof widths, "%.3g mm", narrowest * 1e3);
-  else
-    std::snprintf(widths, sizeof widths, "%.3g to %.3g mm", narrowest * 1e3, widest * 1e3);
-  std::snprintf(size, sizeof size, "%.3g", across * 1e3);
+                             double narrowest, double widest, double across) {
+  const std::string widths = narrowest == widest
+                                 ? number(narrowest * 1e3)
+                                 : number(narrowest * 1e3) + " to " + number(widest * 1e3);
   return "the air gaps between part " + quoted(part) + " and " + std::to_string(others.size()) +
          " other parts (" + some_names(others) + "), " + widths +
-         " wide, have elements of up to about " + size + " mm across them, " +
-         replaced(replaced(replaced(tail, "%GAP_IS%", "the gaps are"), "%FIELD%", "these gaps is"),
-                  "%NEAR%", "the gaps");
+         " mm wide, have elements of up to about " + number(across * 1e3) + " mm across them, ";
 }
 
 } // namespace
@@ -71,10 +60,11 @@ std::string gaps_of_one_part(const std::string& part, const std::vector<std::str
 std::vector<std::string> unresolved_gap_warnings(const std::vector<std::string>& part_names,
                                                  int order, int gap_layers, double scale,
                                                  const UnresolvedGaps& unresolved) {
-  const std::string tail = advice(std::max(1, order), std::max(1, gap_layers), scale);
+  order = std::max(1, order);
+  gap_layers = std::max(1, gap_layers);
   std::set<std::pair<int, int>> left;
   for (const auto& [pair, gap] : unresolved)
-    if (gap.across > std::max(1, order) * gap.width)
+    if (gap.across > order * gap.width)
       left.insert(pair);
   std::vector<std::string> out;
   const auto name = [&](int part) { return part_names[static_cast<std::size_t>(part)]; };
@@ -104,10 +94,12 @@ std::vector<std::string> unresolved_gap_warnings(const std::vector<std::string>&
       across = std::max(across, gap.across);
       it = left.erase(it);
     }
-    out.push_back(gaps_of_one_part(name(part), others, narrowest, widest, across, tail));
+    out.push_back(gaps_of_one_part(name(part), others, narrowest, widest, across) +
+                  consequence(order, gap_layers, scale, true));
   }
   for (const auto& pair : left)
-    out.push_back(one_gap(name(pair.first), name(pair.second), unresolved.at(pair), tail));
+    out.push_back(one_gap(name(pair.first), name(pair.second), unresolved.at(pair)) +
+                  consequence(order, gap_layers, scale, false));
   return out;
 }
 

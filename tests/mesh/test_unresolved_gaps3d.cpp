@@ -60,6 +60,15 @@ TEST(UnresolvedGaps3D, ManyOthersAreNamedInPart) {
       << w[0];
 }
 
+// The warning was once printed into a fixed buffer: a long part name must come out whole.
+TEST(UnresolvedGaps3D, LongPartNamesAreSaidWhole) {
+  const std::string long_name(300, 'x');
+  const auto w = unresolved_gap_warnings({long_name, "y"}, 2, 2, 4, {{{0, 1}, gap(1, 3)}});
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("'" + long_name + "' and 'y'"), std::string::npos);
+  EXPECT_NE(w[0].find("near the gap smaller"), std::string::npos) << w[0];
+}
+
 TEST(UnresolvedGaps3D, ResolvedGapsSayNothing) {
   EXPECT_TRUE(unresolved_gap_warnings(names, 2, 2, 1, {{{0, 1}, gap(1, 2)}}).empty());
   // Left alone by its resolved neighbour, iron's one unresolved gap is a pair's warning.
