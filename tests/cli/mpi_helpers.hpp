@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
@@ -57,6 +59,35 @@ inline CliOutcome run_mpi_program(int n, const std::string& program, int timeout
   }
   return run_command(cmd + program);
 }
+// Tests that run a child test of their own executable under mpirun (a unit of the PETSc
+// module or the pipeline on several processes, without magfem around it): the child reads its
+// output folder from the environment variable `folder_variable` and skips without it.
+// Why the parent test cannot run here, or "" when it can.
+inline std::string why_no_mpi_children(const char* folder_variable) {
+  if (mpirun_path().empty())
+    return "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
+  if (std::getenv(folder_variable))
+    return "the child runs only its own test";
+  return "";
+}
+
+// `mpirun -n <n>` of this executable's tests `filter`, `folder` (created) named to them in
+// `folder_variable` and `variables` set for them; all unset again afterwards.
+inline CliOutcome run_mpi_children(
+    int n, const std::string& filter, const char* folder_variable, const fs::path& folder,
+    const std::vector<std::pair<std::string, std::string>>& variables = {}, int timeout_s = 120) {
+  fs::create_directories(folder);
+  setenv(folder_variable, folder.c_str(), 1);
+  for (const auto& [name, value] : variables)
+    setenv(name.c_str(), value.c_str(), 1);
+  const std::string self = fs::read_symlink("/proc/self/exe").string();
+  CliOutcome o = run_mpi_program(n, self + " --gtest_filter=" + filter, timeout_s);
+  unsetenv(folder_variable);
+  for (const auto& [name, value] : variables)
+    unsetenv(name.c_str());
+  return o;
+}
+
 inline CliOutcome run_mpi(int n, const std::string& args, int timeout_s = 400,
                           const std::string& mpirun_options = "") {
   return run_mpi_program(n, std::string(magfem_binary()) + " " + args, timeout_s, mpirun_options);

@@ -71,23 +71,15 @@ TEST(PiecesOnProcessesChild, WritesWhatThisProcessMeshedAndReceived) {
 class PiecesOnProcesses : public ::testing::Test {
 protected:
   void SetUp() override {
-    if (test::mpirun_path().empty())
-      GTEST_SKIP() << "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
-    if (std::getenv("MAGFEM_PIECES_CHILD"))
-      GTEST_SKIP() << "the child runs only its own test";
+    if (const std::string why = test::why_no_mpi_children("MAGFEM_PIECES_CHILD"); !why.empty())
+      GTEST_SKIP() << why;
   }
 
   // Each process's report of `mpirun -n <n>` of the child.
   std::vector<std::string> run(int n, const std::string& fail = "") {
     const fs::path dir = test::fresh_dir("pieces_" + std::to_string(n) + fail);
-    fs::create_directories(dir);
-    const std::string self = fs::read_symlink("/proc/self/exe").string();
-    setenv("MAGFEM_PIECES_CHILD", dir.c_str(), 1);
-    setenv("MAGFEM_PIECES_FAIL", fail.c_str(), 1);
-    const test::CliOutcome o =
-        test::run_mpi_program(n, self + " --gtest_filter=PiecesOnProcessesChild.*", 120);
-    unsetenv("MAGFEM_PIECES_CHILD");
-    unsetenv("MAGFEM_PIECES_FAIL");
+    const test::CliOutcome o = test::run_mpi_children(
+        n, "PiecesOnProcessesChild.*", "MAGFEM_PIECES_CHILD", dir, {{"MAGFEM_PIECES_FAIL", fail}});
     EXPECT_EQ(o.status, 0) << o.out;
     std::vector<std::string> reports;
     for (int r = 0; r < n; ++r)

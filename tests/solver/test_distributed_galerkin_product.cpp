@@ -189,22 +189,16 @@ TEST(DistributedGalerkinChild, ReportsTheDifferenceToTheSerialProduct) {
 class DistributedGalerkin : public ::testing::Test {
 protected:
   void SetUp() override {
-    if (test::mpirun_path().empty())
-      GTEST_SKIP() << "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
-    if (std::getenv("MAGFEM_GALERKIN_CHILD"))
-      GTEST_SKIP() << "the child runs only its own test";
+    if (const std::string why = test::why_no_mpi_children("MAGFEM_GALERKIN_CHILD"); !why.empty())
+      GTEST_SKIP() << why;
   }
 
   // The child's report under `mpirun -n <size>`: the coarse rows it assembled and the largest
   // difference relative to the largest entry.
   std::pair<int, double> run(int size) {
     const fs::path dir = test::fresh_dir("galerkin_" + std::to_string(size));
-    fs::create_directories(dir);
-    const std::string self = fs::read_symlink("/proc/self/exe").string();
-    setenv("MAGFEM_GALERKIN_CHILD", dir.c_str(), 1);
     const test::CliOutcome o =
-        test::run_mpi_program(size, self + " --gtest_filter=DistributedGalerkinChild.*", 120);
-    unsetenv("MAGFEM_GALERKIN_CHILD");
+        test::run_mpi_children(size, "DistributedGalerkinChild.*", "MAGFEM_GALERKIN_CHILD", dir);
     EXPECT_EQ(o.status, 0) << o.out;
     std::ifstream in(dir / "report");
     std::string word;

@@ -57,22 +57,14 @@ TEST(OnRootForAllChild, WritesThisProcesssOutcome) {
 class OnRootForAll : public ::testing::Test {
 protected:
   void SetUp() override {
-    if (test::mpirun_path().empty())
-      GTEST_SKIP() << "mpirun not found (Debian: mpi-default-bin, scripts/install_deps.sh)";
-    if (std::getenv("MAGFEM_ROOT_CHILD"))
-      GTEST_SKIP() << "the child runs only its own test";
+    if (const std::string why = test::why_no_mpi_children("MAGFEM_ROOT_CHILD"); !why.empty())
+      GTEST_SKIP() << why;
   }
 
   std::vector<std::string> run(int n, const std::string& kind) {
     const fs::path dir = test::fresh_dir("root_" + std::to_string(n) + kind);
-    fs::create_directories(dir);
-    const std::string self = fs::read_symlink("/proc/self/exe").string();
-    setenv("MAGFEM_ROOT_CHILD", dir.c_str(), 1);
-    setenv("MAGFEM_ROOT_THROW", kind.c_str(), 1);
-    const test::CliOutcome o =
-        test::run_mpi_program(n, self + " --gtest_filter=OnRootForAllChild.*", 60);
-    unsetenv("MAGFEM_ROOT_CHILD");
-    unsetenv("MAGFEM_ROOT_THROW");
+    const test::CliOutcome o = test::run_mpi_children(n, "OnRootForAllChild.*", "MAGFEM_ROOT_CHILD",
+                                                      dir, {{"MAGFEM_ROOT_THROW", kind}}, 60);
     EXPECT_EQ(o.status, 0) << o.out; // 124: mpirun's timeout, a process left waiting
     std::vector<std::string> reports;
     for (int r = 0; r < n; ++r)
