@@ -111,20 +111,28 @@ Mat own_row_matrix(const Eigen::SparseMatrix<double>& lower, const PmgPartition&
   sort_rows(off);
   // PETSc reads the parts in place (the copy and row-by-row insertion of
   // MatCreateMPIAIJWithArrays took 1.7 s of benchmark32's set-up on 2 processes); the
-  // container frees them with the matrix.
+  // container frees them with the matrix. Should a step fail, the matrix goes first (it reads
+  // the parts), then the container with the parts once it has them, else `split` does.
   Mat a = nullptr;
-  check(MatCreateMPIAIJWithSplitArrays(PETSC_COMM_WORLD, local, local, n, n, diagonal.start.data(),
-                                       diagonal.column.data(), diagonal.value.data(),
-                                       off.start.data(), off.column.data(), off.value.data(), &a),
-        "MatCreateMPIAIJWithSplitArrays");
   PetscContainer keeper = nullptr;
-  check(PetscContainerCreate(PETSC_COMM_SELF, &keeper), "PetscContainerCreate");
-  check(PetscContainerSetPointer(keeper, split.release()), "PetscContainerSetPointer");
-  check(PetscContainerSetUserDestroy(keeper, destroy_split_rows), "PetscContainerSetUserDestroy");
-  check(PetscObjectCompose(reinterpret_cast<PetscObject>(a), "magfem_own_rows",
-                           reinterpret_cast<PetscObject>(keeper)),
-        "PetscObjectCompose");
-  check(PetscContainerDestroy(&keeper), "PetscContainerDestroy");
+  try {
+    check(MatCreateMPIAIJWithSplitArrays(
+              PETSC_COMM_WORLD, local, local, n, n, diagonal.start.data(), diagonal.column.data(),
+              diagonal.value.data(), off.start.data(), off.column.data(), off.value.data(), &a),
+          "MatCreateMPIAIJWithSplitArrays");
+    check(PetscContainerCreate(PETSC_COMM_SELF, &keeper), "PetscContainerCreate");
+    check(PetscContainerSetUserDestroy(keeper, destroy_split_rows), "PetscContainerSetUserDestroy");
+    check(PetscContainerSetPointer(keeper, split.get()), "PetscContainerSetPointer");
+    split.release(); // the container's now
+    check(PetscObjectCompose(reinterpret_cast<PetscObject>(a), "magfem_own_rows",
+                             reinterpret_cast<PetscObject>(keeper)),
+          "PetscObjectCompose");
+  } catch (...) {
+    MatDestroy(&a);
+    PetscContainerDestroy(&keeper);
+    throw;
+  }
+  PetscContainerDestroy(&keeper); // the matrix holds it
   return a;
 }
 

@@ -20,6 +20,7 @@
 #include "core/input_error.hpp"
 #include "core/progress.hpp"
 #include "core/thread_count.hpp"
+#include "solver/block_jacobi_sweeps.hpp"
 #include "solver/block_smoother.hpp"
 #include "solver/csr_product.hpp"
 #include "solver/distributed_galerkin_product.hpp"
@@ -188,12 +189,6 @@ struct BlockSmootherSlot {
   std::unique_ptr<OffProcessRows> off_process;          // distributed only
 };
 
-BlockSmoother& block_smoother_of(PC pc) {
-  void* context = nullptr;
-  PCShellGetContext(pc, &context);
-  return *static_cast<BlockSmootherSlot*>(context)->smoother;
-}
-
 PetscErrorCode set_up_block_smoother(PC pc) {
   void* context = nullptr;
   PetscCall(PCShellGetContext(pc, &context));
@@ -209,50 +204,21 @@ PetscErrorCode set_up_block_smoother(PC pc) {
   return 0;
 }
 
+// Richardson's smoothing steps (block_jacobi_sweeps.hpp): serially over the whole system,
+// distributed over the process's diagonal block (the slot's off_process).
 template <bool Down>
 PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal, PetscReal,
                                  PetscInt its, PetscBool zero_guess, PetscInt* done,
                                  PCRichardsonConvergedReason* reason) {
-  const PetscScalar* vb = nullptr;
-  PetscScalar* vx = nullptr;
-  PetscCall(VecGetArrayRead(b, &vb));
-  PetscCall(VecGetArray(x, &vx));
-  block_smoother_of(pc).smooth(vb, vx, Down, zero_guess, its, available_threads());
-  PetscCall(VecRestoreArray(x, &vx));
-  PetscCall(VecRestoreArrayRead(b, &vb));
-  *done = its;
-  *reason = PCRICHARDSON_CONVERGED_ITS;
-  return 0;
-}
-
-// Distributed: the same sweeps over the process's diagonal block, in place, the other
-// processes' unknowns held at their values from the start of each sweep (block Jacobi across
-// the processes): b - A_off x is the block's right-hand side. The same step as Richardson's
-// x + M^-1 (b - A x) with M the block's splitting, without forming b - A x over the whole
-// matrix first (a product of the whole matrix per V-cycle).
-template <bool Down>
-PetscErrorCode smooth_richardson_distributed(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
-                                             PetscReal, PetscInt its, PetscBool zero_guess,
-                                             PetscInt* done, PCRichardsonConvergedReason* reason) {
   void* context = nullptr;
   PetscCall(PCShellGetContext(pc, &context));
   auto& slot = *static_cast<BlockSmootherSlot*>(context);
   try {
-    for (PetscInt it = 0; it < its; ++it) {
-      const bool from_zero = zero_guess && it == 0;
-      const PetscScalar* vb = nullptr;
-      PetscCall(VecGetArrayRead(b, &vb));
-      // From zero the other processes' values are zero too.
-      const double* rhs = from_zero ? vb : slot.off_process->subtract_from(vb, x);
-      PetscScalar* vx = nullptr;
-      PetscCall(VecGetArray(x, &vx));
-      slot.smoother->smooth(rhs, vx, Down, from_zero, 1, available_threads());
-      PetscCall(VecRestoreArray(x, &vx));
-      PetscCall(VecRestoreArrayRead(b, &vb));
-    }
+    smooth_block_jacobi(*slot.smoother, slot.off_process.get(), b, x, Down, zero_guess, its,
+                        available_threads());
   } catch (const std::exception& e) { // no exception through PETSc's C frames
-    return PetscError(PETSC_COMM_SELF, __LINE__, "smooth_richardson_distributed", __FILE__,
-                      PETSC_ERR_LIB, PETSC_ERROR_INITIAL, "%s", e.what());
+    return PetscError(PETSC_COMM_SELF, __LINE__, "smooth_richardson", __FILE__, PETSC_ERR_LIB,
+                      PETSC_ERROR_INITIAL, "%s", e.what());
   }
   *done = its;
   *reason = PCRICHARDSON_CONVERGED_ITS;
@@ -418,7 +384,7 @@ void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* bloc
 // serial smoother on the process's diagonal block: Gauss-Seidel (PETSc's SOR on MPIAIJ is
 // local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
 // Each sweep takes the other processes' values from the start of the sweep
-// (smooth_richardson_distributed: b - A_off x, OffProcessRows).
+// (smooth_block_jacobi: b - A_off x, OffProcessRows).
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
@@ -455,14 +421,9 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
       check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
       check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
       const bool is_down = smoother == down;
-      if (distributed)
-        check(PCShellSetApplyRichardson(shell, is_down ? smooth_richardson_distributed<true>
-                                                       : smooth_richardson_distributed<false>),
-              "PCShellSetApplyRichardson");
-      else
-        check(PCShellSetApplyRichardson(shell, is_down ? smooth_richardson<true>
-                                                       : smooth_richardson<false>),
-              "PCShellSetApplyRichardson");
+      check(PCShellSetApplyRichardson(shell,
+                                      is_down ? smooth_richardson<true> : smooth_richardson<false>),
+            "PCShellSetApplyRichardson");
       check(PCShellSetApply(shell, is_down ? smooth_apply<true> : smooth_apply<false>),
             "PCShellSetApply");
     }

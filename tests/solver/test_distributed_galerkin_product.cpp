@@ -25,17 +25,11 @@
 #include "solver/distributed_galerkin_product.hpp"
 #include "solver/galerkin_product.hpp"
 #include "tests/cli/mpi_helpers.hpp"
+#include "tests/solver/petsc_module_test.hpp"
 
 namespace fs = std::filesystem;
 
 namespace magfem::petsc_module {
-
-// The module defines this beside its PETSc error handler (petsc_ksp_solver.cpp); here a
-// failing call only needs to fail the test.
-void check(PetscErrorCode code, const char* what) {
-  if (code != 0)
-    throw std::runtime_error(std::string("PETSc: ") + what + " failed");
-}
 
 namespace {
 
@@ -77,12 +71,6 @@ RowMajor interpolation() {
   return p;
 }
 
-// Item k's process: uneven parts, interleaved (process 0 gets the most).
-int process_of(int k, int size) {
-  const int h = (k * 37 + 5) % 11;
-  return h < 5 ? 0 : h % size;
-}
-
 // Rows numbered process by process, in item order within: order[k] is item k's row; the
 // range [begin, end) this process owns; its items in row order.
 struct Numbering {
@@ -98,7 +86,7 @@ Numbering numbering(int items, int size, int rank) {
     if (p == rank)
       r.begin = next;
     for (int k = 0; k < items; ++k)
-      if (process_of(k, size) == p) {
+      if (interleaved_process(k, size) == p) {
         r.order[static_cast<std::size_t>(k)] = next++;
         if (p == rank)
           r.mine.push_back(k);
