@@ -31,6 +31,10 @@ namespace magfem::petsc_module {
 // two threads (benchmark32: a 2.9 s block solve beside a 4.0 s sweep in CG's 12 s) and give
 // the same bits on one. Still a Gauss-Seidel ordering, so up stays the transpose of down.
 //
+// Distributed, the rows that read other processes' unknowns form a fourth group, `last`
+// (put_last): swept after near going down and before it going up, process after process
+// (smoother_sweeps.hpp). Serially it is empty.
+//
 // The block's factorization outlives the smoother (BlockFactorCache): Newton sets the
 // preconditioner up again at every step, but the shell holds air only, so its block is the
 // same matrix every time, and its Cholesky factor (most of the set-up: 99 M entries, 9 s at
@@ -184,33 +188,56 @@ public:
     factor_ = std::move(factor);
   }
 
+  // The point equations `rows` (sorted; block equations among them stay in the block) swept
+  // after all others going down and before them going up (distributed: the rows that read
+  // other processes' unknowns, which smooth_sweeps.hpp sweeps process after process). Up stays
+  // the transpose of down.
+  void put_last(const std::vector<PetscInt>& rows) {
+    std::vector<char> is_last(inv_diag_.size(), 0);
+    for (PetscInt i : rows)
+      if (place_[i] < 0)
+        is_last[i] = 1;
+    const auto keep = [&](std::vector<PetscInt>& group) {
+      std::erase_if(group, [&](PetscInt i) { return is_last[i] != 0; });
+    };
+    keep(far_);
+    keep(near_);
+    last_.clear();
+    for (PetscInt i = 0; i < static_cast<PetscInt>(is_last.size()); ++i)
+      if (is_last[i])
+        last_.push_back(i);
+  }
+
   // x <- x + M^-1 (b - A x), `its` times; M = down's or up's splitting. `threads` >= 2: the
   // block's solve beside the far sweep.
   void smooth(const double* b, double* x, bool down, bool zero_guess, PetscInt its, int threads) {
     const auto n = static_cast<PetscInt>(inv_diag_.size());
     if (zero_guess)
       std::fill(x, x + n, 0.0);
-    const auto sweep = [&](const std::vector<PetscInt>& rows) {
-      if (down)
-        for (PetscInt i : rows)
-          relax(b, x, i);
-      else
-        for (auto i = rows.rbegin(); i != rows.rend(); ++i)
-          relax(b, x, *i);
-    };
     for (PetscInt it = 0; it < its; ++it) {
       if (!down)
-        sweep(near_);
-      block_residual(b, x, down && zero_guess && it == 0);
-      Eigen::VectorXd dx;
-      side_by_side(
-          threads, [&] { dx = solve_block(r_); }, [&] { sweep(far_); });
-      for (std::size_t k = 0; k < block_.size(); ++k)
-        x[block_[k]] += dx[static_cast<Eigen::Index>(k)];
+        sweep_last(b, x, false);
+      sweep_all_but_last(b, x, down, zero_guess && it == 0, threads);
       if (down)
-        sweep(near_);
+        sweep_last(b, x, true);
     }
   }
+
+  // The parts of one sweep of smooth(): down, all_but_last then last; up, last then
+  // all_but_last. `x_is_zero`: x is 0 (down: the block's residual is then b).
+  void sweep_all_but_last(const double* b, double* x, bool down, bool x_is_zero, int threads) {
+    if (!down)
+      sweep(b, x, near_, false);
+    block_residual(b, x, down && x_is_zero);
+    Eigen::VectorXd dx;
+    side_by_side(
+        threads, [&] { dx = solve_block(r_); }, [&] { sweep(b, x, far_, down); });
+    for (std::size_t k = 0; k < block_.size(); ++k)
+      x[block_[k]] += dx[static_cast<Eigen::Index>(k)];
+    if (down)
+      sweep(b, x, near_, true);
+  }
+  void sweep_last(const double* b, double* x, bool down) const { sweep(b, x, last_, down); }
 
   // The same sweeps on a block of columns (row-major: a row's columns side by side), all
   // columns in one pass over the matrix; the block's solves in one CHOLMOD call.
@@ -226,8 +253,10 @@ public:
         for (auto i = rows.rbegin(); i != rows.rend(); ++i)
           relax_many(b, x, *i, s);
     };
-    if (!down)
+    if (!down) {
+      sweep(last_);
       sweep(near_);
+    }
     Eigen::MatrixXd rb(static_cast<Eigen::Index>(block_.size()), b.cols());
     for (std::size_t k = 0; k < block_.size(); ++k) {
       auto row = rb.row(static_cast<Eigen::Index>(k));
@@ -246,8 +275,10 @@ public:
         [&] { sweep(far_); });
     for (std::size_t k = 0; k < block_.size(); ++k)
       x.row(block_[k]) += dx.row(static_cast<Eigen::Index>(k));
-    if (down)
+    if (down) {
       sweep(near_);
+      sweep(last_);
+    }
   }
 
 private:
@@ -306,6 +337,15 @@ private:
   void relax(const double* b, double* x, PetscInt i) const {
     x[i] += residual(b, x, i) * inv_diag_[i];
   }
+  // Gauss-Seidel over `rows`, forward (down) or backward.
+  void sweep(const double* b, double* x, const std::vector<PetscInt>& rows, bool down) const {
+    if (down)
+      for (PetscInt i : rows)
+        relax(b, x, i);
+    else
+      for (auto i = rows.rbegin(); i != rows.rend(); ++i)
+        relax(b, x, *i);
+  }
   // r_ = (b - A x)_B; with x = 0 it is b.
   void block_residual(const double* b, const double* x, bool x_is_zero) {
     for (std::size_t k = 0; k < block_.size(); ++k)
@@ -323,6 +363,7 @@ private:
   const PetscScalar* value_;
   std::vector<PetscInt> place_;              // block_places
   std::vector<PetscInt> block_, far_, near_; // near_: the point equations coupled to the block
+  std::vector<PetscInt> last_;               // put_last
   std::vector<double> inv_diag_;
   std::shared_ptr<const BlockFactor> factor_;
   Eigen::VectorXd r_;

@@ -34,13 +34,12 @@ std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
     if (o.progress)
       o.progress->note(notes.back());
   };
+  const bool shell = o.smoother_block && !o.smoother_block->empty();
   const std::string pmg =
-      "CG + p-multigrid on a partition of the mesh, smoothed by block Jacobi across the "
-      "processes (Gauss-Seidel within each" +
-      std::string(o.smoother_block && !o.smoother_block->empty()
-                      ? "; the open-boundary shell whole on process 0, by Cholesky"
-                      : "") +
-      ")" +
+      "CG + p-multigrid on a partition of the mesh, smoothed by " +
+      std::string(shell ? "Gauss-Seidel over all processes' rows, process after process where "
+                          "they meet (the open-boundary shell whole on process 0, by Cholesky)"
+                        : "block Jacobi across the processes (Gauss-Seidel within each)") +
       std::string(o.distributed_rows ? "; each process assembled the tetrahedra of its own rows"
                                      : "");
   const bool automatic_pmg = cg && o.preconditioner == PreconditionerKind::automatic &&

@@ -10,6 +10,10 @@ OffProcessRows::OffProcessRows(Mat a) {
         "PetscObjectTypeCompare");
   if (!is_mpi)
     return;
+  MPI_Comm comm = MPI_COMM_NULL;
+  check(PetscObjectGetComm(reinterpret_cast<PetscObject>(a), &comm), "PetscObjectGetComm");
+  MPI_Comm_size(comm, &size_);
+  MPI_Comm_rank(comm, &rank_);
   Mat diag = nullptr;
   const PetscInt* columns = nullptr; // the global column of each off-diagonal one
   check(MatMPIAIJGetSeqAIJ(a, &diag, &off_, &columns), "MatMPIAIJGetSeqAIJ");
@@ -57,6 +61,20 @@ const double* OffProcessRows::subtract_from(const double* b, Vec x) {
     rhs_[i] = b[i] - p[i];
   check(VecRestoreArrayRead(product_, &p), "VecRestoreArrayRead");
   return rhs_.data();
+}
+
+std::vector<PetscInt> OffProcessRows::reading_rows() const {
+  std::vector<PetscInt> rows;
+  if (!off_)
+    return rows;
+  const PetscInt *ia = nullptr, *ja = nullptr;
+  PetscScalar* v = nullptr;
+  PetscMemType memory = PETSC_MEMTYPE_HOST;
+  check(MatSeqAIJGetCSRAndMemType(off_, &ia, &ja, &v, &memory), "MatSeqAIJGetCSRAndMemType");
+  for (PetscInt i = 0; i < static_cast<PetscInt>(rhs_.size()); ++i)
+    if (ia[i + 1] > ia[i])
+      rows.push_back(i);
+  return rows;
 }
 
 } // namespace magfem::petsc_module

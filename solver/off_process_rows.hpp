@@ -24,6 +24,12 @@ public:
   // other processes. Collective. Returns `b` itself when the process reads none.
   const double* subtract_from(const double* b, Vec x);
 
+  // This process's rows that read other processes' unknowns (local numbers, ascending).
+  std::vector<PetscInt> reading_rows() const;
+  // The matrix's processes, and this one's place among them (1 and 0 for SeqAIJ).
+  int size() const { return size_; }
+  int rank() const { return rank_; }
+
 private:
   void destroy();
 
@@ -32,6 +38,7 @@ private:
   Vec values_ = nullptr;        // ... sequential, one per off-diagonal column
   Vec product_ = nullptr;       // A_off values, one per local row
   std::vector<double> rhs_;
+  int size_ = 1, rank_ = 0;
 };
 
 } // namespace magfem::petsc_module

@@ -20,7 +20,6 @@
 #include "core/input_error.hpp"
 #include "core/progress.hpp"
 #include "core/thread_count.hpp"
-#include "solver/block_jacobi_sweeps.hpp"
 #include "solver/block_smoother.hpp"
 #include "solver/csr_product.hpp"
 #include "solver/distributed_galerkin_product.hpp"
@@ -33,6 +32,7 @@
 #include "solver/pmg_partition.hpp"
 #include "solver/simultaneous_pcg.hpp"
 #include "solver/singleton_session_dir.hpp"
+#include "solver/smoother_sweeps.hpp"
 
 namespace magfem::petsc_module {
 namespace {
@@ -187,7 +187,16 @@ struct BlockSmootherSlot {
   std::unique_ptr<BlockSmoother> smoother;
   std::future<std::unique_ptr<BlockSmoother>> building; // joined after KSPSetUp
   std::unique_ptr<OffProcessRows> off_process;          // distributed only
+  std::vector<PetscInt> last;                           // off_process's reading_rows()
 };
+
+std::unique_ptr<BlockSmoother> make_block_smoother(const BlockSmootherSlot& slot,
+                                                   std::shared_ptr<const BlockFactor> factor) {
+  auto smoother = factor ? std::make_unique<BlockSmoother>(slot.matrix, *slot.block, factor)
+                         : std::make_unique<BlockSmoother>(slot.matrix, *slot.block, *slot.cache);
+  smoother->put_last(slot.last);
+  return smoother;
+}
 
 PetscErrorCode set_up_block_smoother(PC pc) {
   void* context = nullptr;
@@ -196,7 +205,7 @@ PetscErrorCode set_up_block_smoother(PC pc) {
   if (slot.smoother || slot.building.valid())
     return 0;
   try {
-    slot.smoother = std::make_unique<BlockSmoother>(slot.matrix, *slot.block, *slot.cache);
+    slot.smoother = make_block_smoother(slot, nullptr);
   } catch (const std::exception& e) { // no exception through PETSc's C frames
     return PetscError(PETSC_COMM_SELF, __LINE__, "set_up_block_smoother", __FILE__, PETSC_ERR_LIB,
                       PETSC_ERROR_INITIAL, "%s", e.what());
@@ -204,8 +213,8 @@ PetscErrorCode set_up_block_smoother(PC pc) {
   return 0;
 }
 
-// Richardson's smoothing steps (block_jacobi_sweeps.hpp): serially over the whole system,
-// distributed over the process's diagonal block (the slot's off_process).
+// Richardson's smoothing steps (smoother_sweeps.hpp): serially over the whole system,
+// distributed over the process's rows, process after process (the slot's off_process).
 template <bool Down>
 PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal, PetscReal,
                                  PetscInt its, PetscBool zero_guess, PetscInt* done,
@@ -214,8 +223,8 @@ PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
   PetscCall(PCShellGetContext(pc, &context));
   auto& slot = *static_cast<BlockSmootherSlot*>(context);
   try {
-    smooth_block_jacobi(*slot.smoother, slot.off_process.get(), b, x, Down, zero_guess, its,
-                        available_threads());
+    smooth_sweeps(*slot.smoother, slot.off_process.get(), b, x, Down, zero_guess, its,
+                  available_threads());
   } catch (const std::exception& e) { // no exception through PETSc's C frames
     return PetscError(PETSC_COMM_SELF, __LINE__, "smooth_richardson", __FILE__, PETSC_ERR_LIB,
                       PETSC_ERROR_INITIAL, "%s", e.what());
@@ -319,7 +328,8 @@ struct PetscKspSolver::Impl {
   void set_up_ksp(MPI_Comm comm);
   KrylovOutcome outcome(double rhs_norm) const;
   void set_up_pmg(PC pc);
-  void make_block_smoother_slot(const std::vector<int>* block);
+  void make_block_smoother_slot(const std::vector<int>* block,
+                                std::unique_ptr<OffProcessRows> off_process = nullptr);
   PetscInt row_of(PetscInt equation) const {
     return partition().order.empty() ? equation : partition().order[equation];
   }
@@ -355,13 +365,19 @@ void PetscKspSolver::Impl::to_full_csr(const Eigen::SparseMatrix<double>& lower)
 
 // The smoother's slot for `block`; when the block's factorization is already under way
 // (block_factoring), the smoother is built from it on a thread beside the rest of the set-up
-// and joined by the shell's PCSetUp.
-void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* block) {
+// and joined by the shell's PCSetUp. Distributed, `off_process` and its rows are in the slot
+// before that thread starts.
+void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* block,
+                                                    std::unique_ptr<OffProcessRows> off_process) {
   block_smoother = std::make_unique<BlockSmootherSlot>(
-      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}, nullptr});
+      BlockSmootherSlot{fine_matrix(), block, &block_factor, nullptr, {}, nullptr, {}});
+  if (off_process) {
+    block_smoother->last = off_process->reading_rows();
+    block_smoother->off_process = std::move(off_process);
+  }
   if (block_factoring.valid())
     block_smoother->building = std::async(std::launch::async, [slot = block_smoother.get(), this] {
-      return std::make_unique<BlockSmoother>(slot->matrix, *slot->block, block_factoring.get());
+      return make_block_smoother(*slot, block_factoring.get());
     });
 }
 
@@ -380,11 +396,11 @@ void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* bloc
 //
 // Distributed (issue 33), the same two levels over MPI_COMM_WORLD: the interpolation and
 // the coarse operator as MPIAIJ matrices (set_up_distributed_coarse_space), BoomerAMG on the
-// coarse level, and as smoother block Jacobi across the processes whose local part is the
-// serial smoother on the process's diagonal block: Gauss-Seidel (PETSc's SOR on MPIAIJ is
-// local SSOR), with the shell's equations that the process owns solved together by CHOLMOD.
-// Each sweep takes the other processes' values from the start of the sweep
-// (smooth_block_jacobi: b - A_off x, OffProcessRows).
+// coarse level, and as smoother the serial one over all processes' rows: Gauss-Seidel, each
+// process over its diagonal block, the rows that read other processes' unknowns last and
+// process after process (smoother_sweeps.hpp), the shell's equations (all on process 0)
+// solved together by CHOLMOD. Without a shell, PETSc's SOR on MPIAIJ: local SSOR, block
+// Jacobi across the processes.
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
@@ -407,8 +423,7 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   KSP coarse_ksp = nullptr;
   if (has_block) {
     if (distributed) { // the process's diagonal block is known once the coarse space is
-      make_block_smoother_slot(&local_block);
-      block_smoother->off_process = std::make_unique<OffProcessRows>(a);
+      make_block_smoother_slot(&local_block, std::make_unique<OffProcessRows>(a));
     }
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");

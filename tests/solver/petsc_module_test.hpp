@@ -1,6 +1,6 @@
 #pragma once
 // What the tests of the PETSc module's distributed parts share (test_distributed_galerkin_product,
-// test_block_jacobi_sweeps). Included by one source of a test executable only: it defines the
+// test_smoother_sweeps). Included by one source of a test executable only: it defines the
 // module's check().
 #include <stdexcept>
 #include <string>
