@@ -142,9 +142,11 @@ std::string steel_case(const fs::path& dir) {
 // processes (each from the others' old values) took 23-24 / 24-27, which it catches on 3
 // processes; a coarse operator off by a factor 2 (not P^T A P) took 30. Without a shell the
 // smoother is PETSc's local SSOR, block Jacobi across the processes: within 1.21x (16-17
-// against 14), so 1.3x; the coarse operator off by 2 took 20 there (1.43x). 1.5x is the
-// issue's bound, kept for the cases with iron, where Newton's steps add their counts.
-constexpr double pmg_iteration_ratio = 1.5;
+// against 14), so 1.3x; the coarse operator off by 2 took 20 there (1.43x). The coil and
+// iron cases (Newton's steps add their counts) measured 23 / 23 and 32 / 30 at --mesh-scale 6
+// on 2 processes, and 22 / 22-23 and 27 / 28 at 4 on 2 and 3: within 1.07x, so 1.1x (the
+// issue's bound was 1.5x).
+constexpr double pmg_iteration_ratio = 1.1;
 constexpr double pmg_iteration_ratio_with_shell = 1.05;
 constexpr double pmg_iteration_ratio_without_shell = 1.3;
 
