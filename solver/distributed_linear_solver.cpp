@@ -39,7 +39,8 @@ std::string distributed_preconditioner(const LinearSolverOptions& o, int size,
       "CG + p-multigrid on a partition of the mesh, smoothed by " +
       std::string(shell ? "Gauss-Seidel over all processes' rows, process after process where "
                           "they meet (the open-boundary shell whole on process 0, by Cholesky)"
-                        : "block Jacobi across the processes (Gauss-Seidel within each)") +
+                        : "symmetric Gauss-Seidel over all processes' rows, process after "
+                          "process where they meet") +
       std::string(o.distributed_rows ? "; each process assembled the tetrahedra of its own rows"
                                      : "");
   const bool automatic_pmg = cg && o.preconditioner == PreconditionerKind::automatic &&

@@ -7,8 +7,7 @@
 // on every process. All methods but the accessors are collective.
 //
 // p-multigrid (P2 tetrahedra: options.coarse_prolongation given, the same on every process)
-// runs distributed, with the serial smoother over all processes' rows (open boundary) or block
-// Jacobi across the processes (bounded) (a note says which).
+// runs distributed, with the serial smoother's sweeps over all processes' rows (a note says so).
 // Incomplete Cholesky and CHOLMOD, which factor the whole matrix on one process, become
 // p-multigrid where there is a coarse space and BoomerAMG where not, with a note.
 #include <memory>

@@ -234,7 +234,39 @@ PetscErrorCode smooth_richardson(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
   return 0;
 }
 
+// Distributed without a block: one symmetric Gauss-Seidel sweep (down, then up) before and
+// after the coarse correction, as PETSc's SSOR does serially, over all processes' rows
+// (smoother_sweeps.hpp); PETSc's SOR on MPIAIJ would be local SSOR, block Jacobi across the
+// processes.
+PetscErrorCode smooth_richardson_symmetric(PC pc, Vec b, Vec x, Vec, PetscReal, PetscReal,
+                                           PetscReal, PetscInt its, PetscBool zero_guess,
+                                           PetscInt* done, PCRichardsonConvergedReason* reason) {
+  void* context = nullptr;
+  PetscCall(PCShellGetContext(pc, &context));
+  auto& slot = *static_cast<BlockSmootherSlot*>(context);
+  try {
+    for (PetscInt it = 0; it < its; ++it) {
+      smooth_sweeps(*slot.smoother, slot.off_process.get(), b, x, true, zero_guess && it == 0, 1,
+                    available_threads());
+      smooth_sweeps(*slot.smoother, slot.off_process.get(), b, x, false, false, 1,
+                    available_threads());
+    }
+  } catch (const std::exception& e) { // no exception through PETSc's C frames
+    return PetscError(PETSC_COMM_SELF, __LINE__, "smooth_richardson_symmetric", __FILE__,
+                      PETSC_ERR_LIB, PETSC_ERROR_INITIAL, "%s", e.what());
+  }
+  *done = its;
+  *reason = PCRICHARDSON_CONVERGED_ITS;
+  return 0;
+}
+
 // M^-1 b from x = 0 (the smoother as a preconditioner of another Krylov method).
+PetscErrorCode smooth_apply_symmetric(PC pc, Vec b, Vec x) {
+  PetscInt done = 0;
+  PCRichardsonConvergedReason reason;
+  return smooth_richardson_symmetric(pc, b, x, nullptr, 0, 0, 0, 1, PETSC_TRUE, &done, &reason);
+}
+
 template <bool Down> PetscErrorCode smooth_apply(PC pc, Vec b, Vec x) {
   PetscInt done = 0;
   PCRichardsonConvergedReason reason;
@@ -399,8 +431,8 @@ void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* bloc
 // coarse level, and as smoother the serial one over all processes' rows: Gauss-Seidel, each
 // process over its diagonal block, the rows that read other processes' unknowns last and
 // process after process (smoother_sweeps.hpp), the shell's equations (all on process 0)
-// solved together by CHOLMOD. Without a shell, PETSc's SOR on MPIAIJ: local SSOR, block
-// Jacobi across the processes.
+// solved together by CHOLMOD. Without a shell, one symmetric Gauss-Seidel sweep over all
+// processes' rows in the same order (smooth_richardson_symmetric), as the serial SSOR.
 void PetscKspSolver::Impl::set_up_pmg(PC pc) {
   if (!options.prolongation)
     throw SolveError("internal: p-multigrid without a coarse space");
@@ -442,6 +474,19 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
       check(PCShellSetApply(shell, is_down ? smooth_apply<true> : smooth_apply<false>),
             "PCShellSetApply");
     }
+  } else if (distributed) {
+    make_block_smoother_slot(&local_block, std::make_unique<OffProcessRows>(a));
+    KSP smoother = nullptr;
+    check(PCMGGetSmoother(pc, 1, &smoother), "PCMGGetSmoother");
+    PC shell = one_sweep_smoother(smoother, db);
+    check(KSPSetNormType(smoother, KSP_NORM_NONE), "KSPSetNormType (smoother)");
+    check(PCSetType(shell, PCSHELL), "PCSetType(shell)");
+    check(PCShellSetContext(shell, block_smoother.get()), "PCShellSetContext");
+    check(PCShellSetName(shell, "symmetric Gauss-Seidel"), "PCShellSetName");
+    check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
+    check(PCShellSetApplyRichardson(shell, smooth_richardson_symmetric),
+          "PCShellSetApplyRichardson");
+    check(PCShellSetApply(shell, smooth_apply_symmetric), "PCShellSetApply");
   } else {
     KSP smoother = nullptr;
     check(PCMGGetSmoother(pc, 1, &smoother), "PCMGGetSmoother");
