@@ -213,6 +213,11 @@ PetscErrorCode set_up_block_smoother(PC pc) {
   return 0;
 }
 
+// PCShellSetApplyRichardson's callback.
+using RichardsonStep = PetscErrorCode (*)(PC, Vec, Vec, Vec, PetscReal, PetscReal, PetscReal,
+                                          PetscInt, PetscBool, PetscInt*,
+                                          PCRichardsonConvergedReason*);
+
 // Richardson's smoothing steps (smoother_sweeps.hpp): serially over the whole system,
 // distributed over the process's rows, process after process (the slot's off_process).
 template <bool Down>
@@ -362,6 +367,8 @@ struct PetscKspSolver::Impl {
   void set_up_pmg(PC pc);
   void make_block_smoother_slot(const std::vector<int>* block,
                                 std::unique_ptr<OffProcessRows> off_process = nullptr);
+  void use_shell_smoother(KSP smoother, const char* name, RichardsonStep richardson,
+                          PetscErrorCode (*apply)(PC, Vec, Vec)) const;
   PetscInt row_of(PetscInt equation) const {
     return partition().order.empty() ? equation : partition().order[equation];
   }
@@ -413,6 +420,21 @@ void PetscKspSolver::Impl::make_block_smoother_slot(const std::vector<int>* bloc
     });
 }
 
+// `smoother` (one of PCMG's finest level) as one Richardson step of a PCSHELL over the block
+// smoother's slot: `richardson` the step, `apply` the same from zero (PCApply).
+void PetscKspSolver::Impl::use_shell_smoother(KSP smoother, const char* name,
+                                              RichardsonStep richardson,
+                                              PetscErrorCode (*apply)(PC, Vec, Vec)) const {
+  PC shell = one_sweep_smoother(smoother, db);
+  check(KSPSetNormType(smoother, KSP_NORM_NONE), "KSPSetNormType (smoother)");
+  check(PCSetType(shell, PCSHELL), "PCSetType(shell)");
+  check(PCShellSetContext(shell, block_smoother.get()), "PCShellSetContext");
+  check(PCShellSetName(shell, name), "PCShellSetName");
+  check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
+  check(PCShellSetApplyRichardson(shell, richardson), "PCShellSetApplyRichardson");
+  check(PCShellSetApply(shell, apply), "PCShellSetApply");
+}
+
 // Two-level p-multigrid as PETSc's PCMG: the given interpolation, the Galerkin coarse operator
 // P^T A P (galerkin_product), one V-cycle per CG iteration, one fixed symmetric operator as CG
 // needs. Smoother, with a smoother block (the open-boundary shell): block Gauss-Seidel
@@ -460,33 +482,14 @@ void PetscKspSolver::Impl::set_up_pmg(PC pc) {
     KSP down = nullptr, up = nullptr;
     check(PCMGGetSmootherDown(pc, 1, &down), "PCMGGetSmootherDown");
     check(PCMGGetSmootherUp(pc, 1, &up), "PCMGGetSmootherUp");
-    for (KSP smoother : {down, up}) {
-      PC shell = one_sweep_smoother(smoother, db);
-      check(KSPSetNormType(smoother, KSP_NORM_NONE), "KSPSetNormType (smoother)");
-      check(PCSetType(shell, PCSHELL), "PCSetType(shell)");
-      check(PCShellSetContext(shell, block_smoother.get()), "PCShellSetContext");
-      check(PCShellSetName(shell, "block Gauss-Seidel"), "PCShellSetName");
-      check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
-      const bool is_down = smoother == down;
-      check(PCShellSetApplyRichardson(shell,
-                                      is_down ? smooth_richardson<true> : smooth_richardson<false>),
-            "PCShellSetApplyRichardson");
-      check(PCShellSetApply(shell, is_down ? smooth_apply<true> : smooth_apply<false>),
-            "PCShellSetApply");
-    }
+    use_shell_smoother(down, "block Gauss-Seidel", smooth_richardson<true>, smooth_apply<true>);
+    use_shell_smoother(up, "block Gauss-Seidel", smooth_richardson<false>, smooth_apply<false>);
   } else if (distributed) {
     make_block_smoother_slot(&local_block, std::make_unique<OffProcessRows>(a));
-    KSP smoother = nullptr;
+    KSP smoother = nullptr; // down and up alike
     check(PCMGGetSmoother(pc, 1, &smoother), "PCMGGetSmoother");
-    PC shell = one_sweep_smoother(smoother, db);
-    check(KSPSetNormType(smoother, KSP_NORM_NONE), "KSPSetNormType (smoother)");
-    check(PCSetType(shell, PCSHELL), "PCSetType(shell)");
-    check(PCShellSetContext(shell, block_smoother.get()), "PCShellSetContext");
-    check(PCShellSetName(shell, "symmetric Gauss-Seidel"), "PCShellSetName");
-    check(PCShellSetSetUp(shell, set_up_block_smoother), "PCShellSetSetUp");
-    check(PCShellSetApplyRichardson(shell, smooth_richardson_symmetric),
-          "PCShellSetApplyRichardson");
-    check(PCShellSetApply(shell, smooth_apply_symmetric), "PCShellSetApply");
+    use_shell_smoother(smoother, "symmetric Gauss-Seidel", smooth_richardson_symmetric,
+                       smooth_apply_symmetric);
   } else {
     KSP smoother = nullptr;
     check(PCMGGetSmoother(pc, 1, &smoother), "PCMGGetSmoother");

@@ -59,8 +59,7 @@ TEST(Assembler2D, NeumannStiffnessHasConstantsInTheNullSpace) {
     const Eigen::VectorXd rows = kd * Eigen::VectorXd::Ones(kd.rows());
     int nonzero_rows = 0;
     for (int i = 0; i < rows.size(); ++i)
-      if (std::abs(rows[i]) > 1e-9 * kd.norm())
-        ++nonzero_rows;
+      if (std::abs(rows[i]) > 1e-9 * kd.norm()) ++nonzero_rows;
     EXPECT_LE(nonzero_rows, order == 1 ? 3 : 8) << "order " << order;
   }
 }
