@@ -16,6 +16,20 @@ void check(PetscErrorCode code, const char* what) {
     throw std::runtime_error(std::string("PETSc: ") + what + " failed");
 }
 
+// A child test's start under mpirun: PETSc (and MPI) started, this process's place.
+struct ChildWorld {
+  int size = 1, rank = 0;
+};
+
+inline ChildWorld start_petsc_child() {
+  if (PetscInitializeNoArguments() != 0)
+    throw std::runtime_error("PetscInitialize failed");
+  ChildWorld w;
+  MPI_Comm_size(PETSC_COMM_WORLD, &w.size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &w.rank);
+  return w;
+}
+
 // Item k's process: uneven parts, interleaved (process 0 gets the most), as a mesh partition
 // gives a process rows all over the numbering.
 inline int interleaved_process(int k, int size) {

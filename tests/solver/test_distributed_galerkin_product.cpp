@@ -104,10 +104,7 @@ TEST(DistributedGalerkinChild, ReportsTheDifferenceToTheSerialProduct) {
   const char* out = std::getenv("MAGFEM_GALERKIN_CHILD");
   if (!out)
     GTEST_SKIP() << "run by the test below under mpirun";
-  ASSERT_EQ(PetscInitializeNoArguments(), 0);
-  int size = 1, rank = 0;
-  MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  const auto [size, rank] = start_petsc_child();
   const RowMajor a = fine_matrix();
   const RowMajor p = interpolation();
   const Numbering fine = numbering(n, size, rank);
